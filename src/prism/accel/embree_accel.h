@@ -1,0 +1,36 @@
+#pragma once
+// Ray queries against the scene's triangles through an Embree 3 BVH. Embree types stay
+// inside the .cpp: the rest of Prism sees only Ray and Hit.
+#include <cstdint>
+#include <memory>
+
+#include "prism/core/ray.h"
+#include "prism/scene/scene.h"
+
+namespace prism {
+
+struct Hit {
+  float t = 0.0f;
+  std::uint32_t mesh = 0;      // index into Scene::meshes
+  std::uint32_t triangle = 0;  // triangle index within the mesh
+  float u = 0.0f, v = 0.0f;    // barycentrics of vertices 1 and 2
+};
+
+class EmbreeAccel {
+ public:
+  explicit EmbreeAccel(const Scene& scene);
+  ~EmbreeAccel();
+  EmbreeAccel(const EmbreeAccel&) = delete;
+  EmbreeAccel& operator=(const EmbreeAccel&) = delete;
+
+  // Closest hit in (ray.t_min, ray.t_max); false when the ray escapes.
+  bool intersect(const Ray& ray, Hit& hit) const;
+  // True when anything blocks the segment (ray.t_min, ray.t_max).
+  bool occluded(const Ray& ray) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace prism

@@ -1,0 +1,26 @@
+#pragma once
+// Orthonormal frame around a unit normal. Construction follows Duff et al. 2017,
+// "Building an Orthonormal Basis, Revisited" (JCGT 6(1)): branchless and continuous
+// except on the sign change of n.z.
+#include <cmath>
+
+#include "prism/core/vec.h"
+
+namespace prism {
+
+struct Frame {
+  Vec3f s, t, n;
+
+  static Frame from_normal(const Vec3f& n) {
+    const float sign = std::copysign(1.0f, n.z);
+    const float a = -1.0f / (sign + n.z);
+    const float b = n.x * n.y * a;
+    return {Vec3f(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x),
+            Vec3f(b, sign + n.y * n.y * a, -n.y), n};
+  }
+
+  Vec3f to_local(const Vec3f& v) const { return {dot(v, s), dot(v, t), dot(v, n)}; }
+  Vec3f to_world(const Vec3f& v) const { return s * v.x + t * v.y + n * v.z; }
+};
+
+}  // namespace prism

@@ -1,0 +1,94 @@
+#include "prism/io/exr.h"
+
+#include <ImfChannelList.h>
+#include <ImfDoubleAttribute.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <ImfIntAttribute.h>
+#include <ImfOutputFile.h>
+#include <ImfStandardAttributes.h>
+#include <ImfStringAttribute.h>
+#include <fmt/format.h>
+
+#include <exception>
+
+#include "prism/core/error.h"
+#include "prism/io/atomic_file.h"
+
+namespace prism {
+namespace {
+
+Imf::FrameBuffer rgb_frame_buffer(float* base, int width, int min_x, int min_y) {
+  // OpenEXR addresses pixels by absolute data-window coordinates: shift the base pointer.
+  const std::size_t x_stride = 3 * sizeof(float), y_stride = x_stride * static_cast<std::size_t>(width);
+  char* origin = reinterpret_cast<char*>(base) - static_cast<std::ptrdiff_t>(min_x) * static_cast<std::ptrdiff_t>(x_stride) -
+                 static_cast<std::ptrdiff_t>(min_y) * static_cast<std::ptrdiff_t>(y_stride);
+  Imf::FrameBuffer fb;
+  const char* names[3] = {"R", "G", "B"};
+  for (int c = 0; c < 3; ++c)
+    fb.insert(names[c], Imf::Slice(Imf::FLOAT, origin + c * sizeof(float), x_stride, y_stride, 1, 1, 0.0));
+  return fb;
+}
+
+}  // namespace
+
+void write_exr(const std::filesystem::path& path, const ImageRgbF& image, const ExrChromaticities& c,
+               const ExrMetadata& metadata) {
+  if (image.width <= 0 || image.height <= 0 || image.rgb.size() != 3u * image.width * image.height)
+    throw IoError(fmt::format("cannot write '{}': image has inconsistent size", path.string()));
+  AtomicFile file(path);
+  try {
+    Imf::Header header(image.width, image.height);
+    header.compression() = Imf::ZIP_COMPRESSION;
+    for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+    Imf::addChromaticities(header, Imf::Chromaticities(Imath::V2f(c.red_x, c.red_y), Imath::V2f(c.green_x, c.green_y),
+                                                       Imath::V2f(c.blue_x, c.blue_y), Imath::V2f(c.white_x, c.white_y)));
+    for (const auto& [k, v] : metadata.strings) header.insert(k, Imf::StringAttribute(v));
+    for (const auto& [k, v] : metadata.ints) header.insert(k, Imf::IntAttribute(v));
+    for (const auto& [k, v] : metadata.doubles) header.insert(k, Imf::DoubleAttribute(v));
+    std::vector<float> pixels = image.rgb;
+    Imf::OutputFile out(file.temporary_path().c_str(), header);
+    out.setFrameBuffer(rgb_frame_buffer(pixels.data(), image.width, 0, 0));
+    out.writePixels(image.height);
+  } catch (const std::exception& e) {
+    throw IoError(fmt::format("cannot write '{}': {}", path.string(), e.what()));
+  }
+  file.commit();
+}
+
+ExrFile read_exr(const std::filesystem::path& path) {
+  ExrFile result;
+  try {
+    Imf::InputFile in(path.c_str());
+    const Imf::Header& header = in.header();
+    const Imath::Box2i dw = header.dataWindow();
+    const long width = static_cast<long>(dw.max.x) - dw.min.x + 1, height = static_cast<long>(dw.max.y) - dw.min.y + 1;
+    // Refuse absurd sizes before allocating (the same limit as textures).
+    constexpr long kMaxSide = 32768;
+    if (width <= 0 || height <= 0 || width > kMaxSide || height > kMaxSide)
+      throw IoError(fmt::format("image size {}x{} is out of range", width, height));
+    result.image.width = static_cast<int>(width);
+    result.image.height = static_cast<int>(height);
+    result.image.rgb.assign(3u * width * height, 0.0f);
+    in.setFrameBuffer(rgb_frame_buffer(result.image.rgb.data(), result.image.width, dw.min.x, dw.min.y));
+    in.readPixels(dw.min.y, dw.max.y);
+    if (Imf::hasChromaticities(header)) {
+      const Imf::Chromaticities& ch = Imf::chromaticities(header);
+      result.has_chromaticities = true;
+      result.chromaticities = {ch.red.x, ch.red.y, ch.green.x, ch.green.y, ch.blue.x, ch.blue.y, ch.white.x, ch.white.y};
+    }
+    for (auto it = header.begin(); it != header.end(); ++it) {
+      if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&it.attribute())) result.metadata.strings[it.name()] = s->value();
+      if (const auto* i = dynamic_cast<const Imf::IntAttribute*>(&it.attribute())) result.metadata.ints[it.name()] = i->value();
+      if (const auto* d = dynamic_cast<const Imf::DoubleAttribute*>(&it.attribute())) result.metadata.doubles[it.name()] = d->value();
+    }
+  } catch (const IoError& e) {
+    throw IoError(fmt::format("cannot read '{}': {}", path.string(), e.what()));
+  } catch (const std::exception& e) {
+    throw IoError(fmt::format("cannot read '{}': {}", path.string(), e.what()));
+  }
+  return result;
+}
+
+}  // namespace prism

@@ -1,0 +1,37 @@
+#pragma once
+// OpenEXR read/write of 32-bit float RGB with the `chromaticities` attribute and
+// Prism's own metadata.
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "prism/io/image.h"
+
+namespace prism {
+
+// CIE xy of the image's RGB primaries and white (the EXR `chromaticities` attribute).
+struct ExrChromaticities {
+  float red_x, red_y, green_x, green_y, blue_x, blue_y, white_x, white_y;
+};
+
+struct ExrMetadata {
+  std::map<std::string, std::string> strings;
+  std::map<std::string, int> ints;
+  std::map<std::string, double> doubles;
+};
+
+// Writes atomically (temporary file + rename). Throws IoError.
+void write_exr(const std::filesystem::path& path, const ImageRgbF& image,
+               const ExrChromaticities& chromaticities, const ExrMetadata& metadata = {});
+
+struct ExrFile {
+  ImageRgbF image;
+  bool has_chromaticities = false;
+  ExrChromaticities chromaticities{};
+  ExrMetadata metadata;  // string, int and double attributes other than the standard ones
+};
+
+// Reads R, G, B channels (missing channels read as 0). Throws IoError on any failure.
+ExrFile read_exr(const std::filesystem::path& path);
+
+}  // namespace prism

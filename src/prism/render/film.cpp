@@ -1,0 +1,36 @@
+#include "prism/render/film.h"
+
+#include <algorithm>
+
+namespace prism {
+
+Film::Film(int width, int height)
+    : width_(width), height_(height), sum_(pixel_count()), sum_squares_(pixel_count()),
+      count_(pixel_count(), 0u) {}
+
+Vec3d Film::mean(std::size_t pixel) const {
+  const std::uint32_t n = count_[pixel];
+  return n > 0 ? sum_[pixel] / static_cast<double>(n) : Vec3d(0.0);
+}
+
+Vec3d Film::variance_of_mean(std::size_t pixel) const {
+  const double n = count_[pixel];
+  if (n < 2.0) return Vec3d(0.0);
+  const Vec3d m = sum_[pixel] / n;
+  Vec3d s2 = (sum_squares_[pixel] - m * m * n) / (n - 1.0);
+  s2 = max(s2, Vec3d(0.0));
+  return s2 / n;
+}
+
+std::vector<float> Film::mean_rgb() const {
+  std::vector<float> rgb(3 * pixel_count());
+  for (std::size_t i = 0; i < pixel_count(); ++i) {
+    const Vec3d m = mean(i);
+    rgb[3 * i + 0] = static_cast<float>(m.x);
+    rgb[3 * i + 1] = static_cast<float>(m.y);
+    rgb[3 * i + 2] = static_cast<float>(m.z);
+  }
+  return rgb;
+}
+
+}  // namespace prism

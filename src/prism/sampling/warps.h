@@ -1,0 +1,54 @@
+#pragma once
+// Warps from the unit square to common domains, each with its density. Every warp has a
+// chi-square test in tests/sampling/.
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "prism/core/vec.h"
+
+namespace prism {
+
+// Concentric map of the square to the unit disk (Shirley & Chiu 1997): area preserving,
+// low distortion, so stratification of u survives.
+inline Vec2f sample_concentric_disk(Vec2f u) {
+  const float a = 2.0f * u.x - 1.0f, b = 2.0f * u.y - 1.0f;
+  if (a == 0.0f && b == 0.0f) return {0.0f, 0.0f};
+  constexpr float kPiOver4 = std::numbers::pi_v<float> / 4.0f;
+  float r, phi;
+  if (std::abs(a) > std::abs(b)) {
+    r = a;
+    phi = kPiOver4 * (b / a);
+  } else {
+    r = b;
+    phi = 2.0f * kPiOver4 - kPiOver4 * (a / b);
+  }
+  return {r * std::cos(phi), r * std::sin(phi)};
+}
+
+// Cosine-weighted hemisphere around +z by Malley's method (project the disk up).
+inline Vec3f sample_cosine_hemisphere(Vec2f u) {
+  const Vec2f d = sample_concentric_disk(u);
+  const float z = std::sqrt(std::max(0.0f, 1.0f - d.x * d.x - d.y * d.y));
+  return {d.x, d.y, z};
+}
+
+// Solid-angle density of sample_cosine_hemisphere: cos θ / π above the surface, 0 below.
+inline float cosine_hemisphere_pdf(float cos_theta) {
+  return cos_theta > 0.0f ? cos_theta * std::numbers::inv_pi_v<float> : 0.0f;
+}
+
+// Uniform barycentrics on a triangle (Osada et al. 2002, square-root parameterisation).
+// Returns (b1, b2); b0 = 1 - b1 - b2. Area density is 1 / area.
+inline Vec2f sample_uniform_triangle(Vec2f u) {
+  const float su = std::sqrt(u.x);
+  return {u.y * su, 1.0f - su};
+}
+
+// Power heuristic with β = 2 (Veach 1997, eq. 9.13) for one sample from each technique.
+inline float power_heuristic(float pdf_a, float pdf_b) {
+  const float a2 = pdf_a * pdf_a, b2 = pdf_b * pdf_b;
+  return a2 + b2 > 0.0f ? a2 / (a2 + b2) : 0.0f;
+}
+
+}  // namespace prism

@@ -1,0 +1,27 @@
+#include "prism/scene/camera_rays.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace prism {
+
+PinholeCamera::PinholeCamera(const Camera& camera, int width, int height)
+    : camera_to_world_(Transform::look_at(camera.eye, camera.target, camera.up)),
+      inv_width_(1.0f / static_cast<float>(width)),
+      inv_height_(1.0f / static_cast<float>(height)) {
+  const float tan_half = std::tan(0.5f * camera.fov_degrees * std::numbers::pi_v<float> / 180.0f);
+  // The field of view spans the smaller axis; the other axis extends by the aspect ratio.
+  const float aspect = static_cast<float>(width) / static_cast<float>(height);
+  scale_x_ = aspect >= 1.0f ? tan_half * aspect : tan_half;
+  scale_y_ = aspect >= 1.0f ? tan_half : tan_half / aspect;
+}
+
+Ray PinholeCamera::generate_ray(float film_x, float film_y) const {
+  const float ndc_x = 2.0f * film_x * inv_width_ - 1.0f;   // -1 left, +1 right
+  const float ndc_y = 1.0f - 2.0f * film_y * inv_height_;  // +1 top, -1 bottom
+  // Camera space: +z forward, +y up, +x to the image's left (see Transform::look_at).
+  const Vec3f local(-ndc_x * scale_x_, ndc_y * scale_y_, 1.0f);
+  return Ray{camera_to_world_.translation, normalize(camera_to_world_.apply_vector(local))};
+}
+
+}  // namespace prism

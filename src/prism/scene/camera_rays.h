@@ -1,0 +1,21 @@
+#pragma once
+// Primary rays of the pinhole camera for a film of a given size.
+#include "prism/core/ray.h"
+#include "prism/core/transform.h"
+#include "prism/scene/scene.h"
+
+namespace prism {
+
+class PinholeCamera {
+ public:
+  PinholeCamera(const Camera& camera, int width, int height);
+  // Ray through film position (x, y) in pixels, (0, 0) the top-left corner of the image.
+  Ray generate_ray(float film_x, float film_y) const;
+
+ private:
+  Transform camera_to_world_;
+  float scale_x_ = 1.0f, scale_y_ = 1.0f;  // tangent of the half-angles
+  float inv_width_ = 1.0f, inv_height_ = 1.0f;
+};
+
+}  // namespace prism

@@ -1,0 +1,79 @@
+#include <array>
+
+#include "prism/scene/builtin_scenes.h"
+
+namespace prism {
+namespace {
+
+// Appends a planar quad (a, b, c, d in order around its boundary) as two triangles.
+void add_quad(TriangleMesh& mesh, const Vec3f& a, const Vec3f& b, const Vec3f& c, const Vec3f& d) {
+  const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+  mesh.positions.insert(mesh.positions.end(), {a, b, c, d});
+  mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+}
+
+// A block standing on the floor: its top face's four corners and its height.
+TriangleMesh make_block(std::string name, const std::array<Vec3f, 4>& top, std::uint32_t material) {
+  TriangleMesh mesh{std::move(name), {}, {}, material};
+  add_quad(mesh, top[0], top[1], top[2], top[3]);
+  for (int i = 0; i < 4; ++i) {
+    const Vec3f& a = top[i];
+    const Vec3f& b = top[(i + 1) % 4];
+    add_quad(mesh, Vec3f(a.x, 0.0f, a.z), a, b, Vec3f(b.x, 0.0f, b.z));
+  }
+  return mesh;
+}
+
+TriangleMesh make_wall(std::string name, const Vec3f& a, const Vec3f& b, const Vec3f& c,
+                       const Vec3f& d, std::uint32_t material) {
+  TriangleMesh mesh{std::move(name), {}, {}, material};
+  add_quad(mesh, a, b, c, d);
+  return mesh;
+}
+
+}  // namespace
+
+Scene make_cornell_box() {
+  Scene scene;
+  scene.name = "cornell-box";
+  // Linear Rec.709 reflectances and light radiance of the pbrt-v4 Cornell box, so Prism
+  // and pbrt-v4 can render the same scene (see the performance issue).
+  enum : std::uint32_t { kWhite, kRed, kGreen, kLight };
+  scene.materials = {
+      {"white", Vec3f(0.725f, 0.71f, 0.68f), Vec3f(0.0f)},
+      {"red", Vec3f(0.63f, 0.065f, 0.05f), Vec3f(0.0f)},
+      {"green", Vec3f(0.14f, 0.45f, 0.091f), Vec3f(0.0f)},
+      {"light", Vec3f(0.78f), Vec3f(17.0f, 12.0f, 4.0f)},
+  };
+
+  scene.meshes.push_back(make_wall("floor", {552.8f, 0, 0}, {0, 0, 0}, {0, 0, 559.2f},
+                                   {549.6f, 0, 559.2f}, kWhite));
+  scene.meshes.push_back(make_wall("ceiling", {556, 548.8f, 0}, {556, 548.8f, 559.2f},
+                                   {0, 548.8f, 559.2f}, {0, 548.8f, 0}, kWhite));
+  scene.meshes.push_back(make_wall("back", {549.6f, 0, 559.2f}, {0, 0, 559.2f},
+                                   {0, 548.8f, 559.2f}, {556, 548.8f, 559.2f}, kWhite));
+  scene.meshes.push_back(make_wall("green-wall", {0, 0, 559.2f}, {0, 0, 0}, {0, 548.8f, 0},
+                                   {0, 548.8f, 559.2f}, kGreen));
+  scene.meshes.push_back(make_wall("red-wall", {552.8f, 0, 0}, {549.6f, 0, 559.2f},
+                                   {556, 548.8f, 559.2f}, {556, 548.8f, 0}, kRed));
+  scene.meshes.push_back(make_block("short-block",
+                                    {Vec3f(130, 165, 65), Vec3f(82, 165, 225),
+                                     Vec3f(240, 165, 272), Vec3f(290, 165, 114)},
+                                    kWhite));
+  scene.meshes.push_back(make_block("tall-block",
+                                    {Vec3f(423, 330, 247), Vec3f(265, 330, 296),
+                                     Vec3f(314, 330, 456), Vec3f(472, 330, 406)},
+                                    kWhite));
+  // The light hangs 0.5 mm below the ceiling (as in the Mitsuba scene) so it does not
+  // coincide with it. Winding chosen so the front face (emitting side) points down.
+  constexpr float kLightY = 548.8f - 0.5f;
+  scene.meshes.push_back(make_wall("light", {343, kLightY, 227}, {343, kLightY, 332},
+                                   {213, kLightY, 332}, {213, kLightY, 227}, kLight));
+
+  scene.camera = Camera{Vec3f(278, 273, -800), Vec3f(278, 273, -799), Vec3f(0, 1, 0), 39.3077f};
+  scene.default_width = 512;
+  scene.default_height = 512;
+  return scene;
+}
+
+}  // namespace prism

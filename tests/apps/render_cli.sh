@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# Command-line behaviour of `prism render` and `prism info`: exit codes, one-line errors,
+# no partial outputs, help text. Usage: render_cli.sh PATH_TO_PRISM
+set -u
+prism="$1"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+# expect_error CODE PATTERN ARGS...: exit status CODE, exactly one stderr line starting
+# with "prism: error:" and matching PATTERN, and no files left in $work/out.
+expect_error() {
+  local code="$1" pattern="$2"; shift 2
+  rm -rf "$work/out"; mkdir -p "$work/out"
+  "$prism" "$@" >"$work/stdout" 2>"$work/stderr"
+  local rc=$?
+  [ "$rc" -eq "$code" ] || fail "'$*': exit $rc, expected $code (stderr: $(cat "$work/stderr"))"
+  [ "$(wc -l <"$work/stderr")" -eq 1 ] || fail "'$*': stderr is not one line: $(cat "$work/stderr")"
+  grep -q "^prism: error: .*$pattern" "$work/stderr" || fail "'$*': stderr '$(cat "$work/stderr")' lacks '$pattern'"
+  [ -z "$(ls -A "$work/out")" ] || fail "'$*': left files behind: $(ls -A "$work/out")"
+}
+
+o=(-o "$work/out/x.exr" -o "$work/out/x.png")
+expect_error 1 "does-not-exist.json" render "$work/does-not-exist.json" "${o[@]}"
+expect_error 2 "unknown scene 'nosuchscene'" render nosuchscene "${o[@]}"
+expect_error 2 "spp" render cornell-box --spp 0 "${o[@]}"
+expect_error 2 "spp" render cornell-box --spp -3 "${o[@]}"
+expect_error 2 "spp" render cornell-box --spp abc "${o[@]}"
+expect_error 2 "threads" render cornell-box --threads 0 "${o[@]}"
+expect_error 2 "max-depth" render cornell-box --max-depth 0 "${o[@]}"
+expect_error 2 "unknown output extension '.jpg'" render cornell-box -o "$work/out/x.jpg"
+expect_error 1 "does not exist" render cornell-box -o "$work/out/missing-dir/x.exr"
+expect_error 1 "cannot write" render cornell-box -o /proc/prism-cannot-write-here.exr
+expect_error 2 "estimator" render cornell-box --estimator nope "${o[@]}"
+expect_error 2 "" render cornell-box --no-such-option
+expect_error 2 "" frobnicate
+
+# A real render writes both files and nothing else, and reports what it wrote.
+rm -rf "$work/out"; mkdir -p "$work/out"
+if "$prism" render cornell-box --width 32 --height 24 --spp 2 "${o[@]}" >"$work/stdout" 2>"$work/stderr"; then
+  [ -s "$work/out/x.exr" ] || fail "render wrote no EXR"
+  [ -s "$work/out/x.png" ] || fail "render wrote no PNG"
+  [ "$(ls -A "$work/out" | wc -l)" -eq 2 ] || fail "render left extra files: $(ls -A "$work/out")"
+  grep -q "2 spp" "$work/stdout" || fail "summary lacks spp: $(cat "$work/stdout")"
+  [ ! -s "$work/stderr" ] || fail "non-TTY render printed progress: $(cat "$work/stderr")"
+else
+  fail "small render failed: $(cat "$work/stderr")"
+fi
+
+# --help documents every option of render.
+"$prism" render --help >"$work/help" 2>&1 || fail "render --help exited non-zero"
+for opt in --output --spp --max-depth --seed --threads --time-limit --width --height --estimator; do
+  grep -q -- "$opt" "$work/help" || fail "render --help does not document $opt"
+done
+"$prism" info >"$work/info" || fail "info failed"
+for word in prism embree onetbb cornell-box; do
+  grep -q "$word" "$work/info" || fail "info lacks $word"
+done
+"$prism" --help >/dev/null || fail "--help failed"
+"$prism" info --help >/dev/null || fail "info --help failed"
+
+if [ "$failures" -ne 0 ]; then
+  echo "$failures failure(s)"
+  exit 1
+fi
+echo "render_cli: all checks passed"

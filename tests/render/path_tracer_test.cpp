@@ -1,0 +1,183 @@
+// Physically meaningful checks of the foundation's path tracer on the Cornell box and on
+// a scene with a closed-form answer. No checksums: every bound comes from the estimated
+// variance of the quantities compared.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "prism/core/error.h"
+#include "prism/render/renderer.h"
+#include "prism/scene/builtin_scenes.h"
+#include "support/test_scenes.h"
+
+namespace prism {
+namespace {
+
+// Mean radiance and variance of that mean over a rectangular block of pixels.
+struct BlockEstimate {
+  Vec3d mean;
+  Vec3d variance;
+};
+
+BlockEstimate block_estimate(const Film& film, int x0, int y0, int x1, int y1) {
+  BlockEstimate e;
+  double n = 0.0;
+  for (int y = y0; y < y1; ++y)
+    for (int x = x0; x < x1; ++x) {
+      const std::size_t p = static_cast<std::size_t>(y) * film.width() + x;
+      e.mean += film.mean(p);
+      e.variance += film.variance_of_mean(p);
+      n += 1.0;
+    }
+  e.mean /= n;
+  e.variance /= n * n;  // pixels are independent
+  return e;
+}
+
+// Compares two independent renders block by block (4×4 blocks, 3 channels). With a 5σ
+// bound a single comparison raises a false alarm with probability 5.7e-7, so the 48
+// comparisons of one call together do so with probability below 3e-5.
+void expect_renders_agree(const Film& a, const Film& b, const char* what) {
+  constexpr int kBlocks = 4;
+  constexpr double kSigmas = 5.0;
+  const int bw = a.width() / kBlocks, bh = a.height() / kBlocks;
+  for (int by = 0; by < kBlocks; ++by)
+    for (int bx = 0; bx < kBlocks; ++bx) {
+      const BlockEstimate ea = block_estimate(a, bx * bw, by * bh, (bx + 1) * bw, (by + 1) * bh);
+      const BlockEstimate eb = block_estimate(b, bx * bw, by * bh, (bx + 1) * bw, (by + 1) * bh);
+      for (int c = 0; c < 3; ++c) {
+        const double sigma = std::sqrt(ea.variance[c] + eb.variance[c]);
+        EXPECT_LE(std::abs(ea.mean[c] - eb.mean[c]), kSigmas * sigma + 1e-9)
+            << what << ": block (" << bx << ", " << by << ") channel " << c << ": " << ea.mean[c] << " vs "
+            << eb.mean[c] << ", sigma " << sigma;
+      }
+    }
+}
+
+RenderSettings small_settings(std::uint64_t seed, int spp, LightEstimator estimator = LightEstimator::mis) {
+  RenderSettings s;
+  s.width = 64;
+  s.height = 64;
+  s.samples_per_pixel = spp;
+  s.seed = seed;
+  s.path.estimator = estimator;
+  return s;
+}
+
+TEST(PathTracer, IndependentSeedsConvergeToTheSameImage) {
+  const Scene scene = make_cornell_box();
+  const RenderResult a = render(scene, small_settings(1, 256));
+  const RenderResult b = render(scene, small_settings(2, 256));
+  ASSERT_EQ(a.passes_done, 256);
+  expect_renders_agree(a.film, b.film, "seed 1 vs seed 2");
+}
+
+TEST(PathTracer, NeeBsdfAndMisEstimatorsAgree) {
+  const Scene scene = make_cornell_box();
+  const RenderResult mis = render(scene, small_settings(3, 256, LightEstimator::mis));
+  const RenderResult nee = render(scene, small_settings(4, 256, LightEstimator::nee_only));
+  const RenderResult bsdf = render(scene, small_settings(5, 256, LightEstimator::bsdf_only));
+  expect_renders_agree(mis.film, nee.film, "MIS vs NEE only");
+  expect_renders_agree(mis.film, bsdf.film, "MIS vs BSDF only");
+  expect_renders_agree(nee.film, bsdf.film, "NEE only vs BSDF only");
+}
+
+TEST(PathTracer, MisReducesVarianceOfDirectLighting) {
+  // BSDF sampling finds the small light rarely; MIS must beat it on the floor below it.
+  const Scene scene = make_cornell_box();
+  const RenderResult mis = render(scene, small_settings(6, 64, LightEstimator::mis));
+  const RenderResult bsdf = render(scene, small_settings(6, 64, LightEstimator::bsdf_only));
+  const BlockEstimate floor_mis = block_estimate(mis.film, 24, 52, 40, 60);
+  const BlockEstimate floor_bsdf = block_estimate(bsdf.film, 24, 52, 40, 60);
+  EXPECT_LT(floor_mis.variance.x, floor_bsdf.variance.x);
+}
+
+// L = Le / (1 - a) inside a closed emitting enclosure, for every estimator. The bound is
+// 5σ of the image mean: Russian roulette is unbiased, and max depth 200 truncates the
+// series after a^200 < 1e-60 of the answer.
+TEST(PathTracer, EmittingEnclosureHasAnalyticRadiance) {
+  constexpr float kAlbedo = 0.5f, kEmitted = 1.0f;
+  const Scene scene = test::make_emitting_enclosure(kAlbedo, kEmitted);
+  for (LightEstimator estimator : {LightEstimator::mis, LightEstimator::nee_only, LightEstimator::bsdf_only}) {
+    RenderSettings s = small_settings(7, 64, estimator);
+    s.width = s.height = 32;
+    s.path.max_depth = 200;
+    const RenderResult r = render(scene, s);
+    const BlockEstimate e = block_estimate(r.film, 0, 0, 32, 32);
+    const double expected = kEmitted / (1.0 - kAlbedo);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(e.mean[c], expected, 5.0 * std::sqrt(e.variance[c]) + 1e-6)
+          << "estimator " << static_cast<int>(estimator);
+  }
+}
+
+TEST(PathTracer, MaxDepthOneIsDirectLightOnly) {
+  // With depth 1 the enclosure shows emission plus one bounce of direct light:
+  // Le + a·Le (the cosine-weighted integral of a uniform Le over the hemisphere is π·Le).
+  const Scene scene = test::make_emitting_enclosure(0.5f, 1.0f);
+  RenderSettings s = small_settings(8, 32);
+  s.width = s.height = 16;
+  s.path.max_depth = 1;
+  const RenderResult r = render(scene, s);
+  const BlockEstimate e = block_estimate(r.film, 0, 0, 16, 16);
+  EXPECT_NEAR(e.mean.x, 1.5, 5.0 * std::sqrt(e.variance.x) + 1e-6);
+}
+
+TEST(Renderer, ImageDoesNotDependOnThreadCount) {
+  const Scene scene = make_cornell_box();
+  RenderSettings s = small_settings(9, 8);
+  s.width = 48;
+  s.height = 40;
+  s.threads = 1;
+  const std::vector<float> one = render(scene, s).film.mean_rgb();
+  s.threads = 2;
+  const std::vector<float> two = render(scene, s).film.mean_rgb();
+  ASSERT_EQ(one.size(), two.size());
+  EXPECT_TRUE(one == two) << "films differ between 1 and 2 threads";
+}
+
+TEST(Renderer, TimeLimitStopsWithCompletePasses) {
+  const Scene scene = make_cornell_box();
+  RenderSettings s = small_settings(10, 1'000'000);
+  s.time_limit_seconds = 0.2;
+  const RenderResult r = render(scene, s);
+  EXPECT_EQ(r.stop_reason, StopReason::time_limit);
+  EXPECT_GE(r.passes_done, 1);
+  EXPECT_LT(r.passes_done, 1'000'000);
+  for (std::size_t p = 0; p < r.film.pixel_count(); ++p) ASSERT_EQ(r.film.sample_count(p), static_cast<unsigned>(r.passes_done));
+}
+
+TEST(Renderer, CancellationStopsTheRender) {
+  const Scene scene = make_cornell_box();
+  std::atomic<bool> cancel{true};
+  const RenderResult r = render(scene, small_settings(11, 100), {}, &cancel);
+  EXPECT_EQ(r.stop_reason, StopReason::cancelled);
+  EXPECT_EQ(r.passes_done, 0);
+}
+
+TEST(Renderer, ProgressIsReportedEveryPass) {
+  const Scene scene = make_cornell_box();
+  int calls = 0, last = 0;
+  render(scene, small_settings(12, 5), [&](const RenderProgress& p) {
+    ++calls;
+    EXPECT_EQ(p.passes_done, last + 1);
+    EXPECT_EQ(p.passes_target, 5);
+    last = p.passes_done;
+  });
+  EXPECT_EQ(calls, 5);
+}
+
+TEST(Renderer, RejectsInvalidSettings) {
+  const Scene scene = make_cornell_box();
+  RenderSettings s = small_settings(0, 0);
+  EXPECT_THROW(render(scene, s), UsageError);
+  s = small_settings(0, 1);
+  s.width = 0;
+  EXPECT_THROW(render(scene, s), UsageError);
+  s = small_settings(0, 1);
+  s.path.max_depth = 0;
+  EXPECT_THROW(render(scene, s), UsageError);
+}
+
+}  // namespace
+}  // namespace prism

@@ -1,0 +1,98 @@
+#include <gtest/gtest.h>
+
+#include "prism/core/error.h"
+#include "prism/core/pcg32.h"
+#include "prism/scene/builtin_scenes.h"
+#include "prism/scene/light_sampler.h"
+#include "prism/scene/load_scene.h"
+#include "support/chi_square.h"
+
+namespace prism {
+namespace {
+
+const TriangleMesh& mesh_named(const Scene& scene, const std::string& name) {
+  for (const auto& m : scene.meshes)
+    if (m.name == name) return m;
+  throw std::runtime_error("no mesh " + name);
+}
+
+TEST(CornellBox, HasTheClassicContents) {
+  const Scene scene = make_cornell_box();
+  EXPECT_NO_THROW(validate_scene(scene));
+  // Five walls and the light are quads (2 triangles); each block has a top and four sides.
+  EXPECT_EQ(scene.triangle_count(), 5u * 2 + 2u * 10 + 2);
+  EXPECT_EQ(scene.default_width, 512);
+  EXPECT_EQ(scene.default_height, 512);
+  EXPECT_GT(scene.materials[scene.meshes[3].material].albedo.y, 0.3f);  // green wall
+}
+
+TEST(CornellBox, LightFacesDownIntoTheRoom) {
+  const Scene scene = make_cornell_box();
+  const TriangleMesh& light = mesh_named(scene, "light");
+  EXPECT_TRUE(scene.materials[light.material].is_emissive());
+  for (std::size_t t = 0; t < light.triangle_count(); ++t) {
+    const Vec3f& p0 = light.positions[light.indices[3 * t]];
+    const Vec3f& p1 = light.positions[light.indices[3 * t + 1]];
+    const Vec3f& p2 = light.positions[light.indices[3 * t + 2]];
+    EXPECT_LT(cross(p1 - p0, p2 - p0).y, 0.0f);
+  }
+}
+
+TEST(CornellBox, RedWallOnTheLeftOfTheView) {
+  // The camera looks along +z with +y up, so the image's left is world +x (x = 556).
+  const Scene scene = make_cornell_box();
+  EXPECT_GT(mesh_named(scene, "red-wall").positions[0].x, 500.0f);
+  EXPECT_LT(mesh_named(scene, "green-wall").positions[0].x, 1.0f);
+}
+
+TEST(LoadScene, ResolvesBuiltinsAndReportsErrors) {
+  EXPECT_EQ(load_scene("cornell-box").name, "cornell-box");
+  EXPECT_THROW(load_scene("no-such-scene"), UsageError);
+  EXPECT_THROW(load_scene("/nonexistent/dir/scene.json"), IoError);
+}
+
+TEST(LightSampler, PointsAreUniformOverTheLight) {
+  // Cornell light: a 130 × 105 mm rectangle at constant y. Histogram sampled (x, z) on a
+  // grid over it; uniform area sampling puts equal mass in every cell.
+  const Scene scene = make_cornell_box();
+  const LightSampler lights(scene);
+  ASSERT_EQ(lights.light_count(), 2u);
+  constexpr int kGrid = 16;
+  constexpr long kSamples = 400'000;
+  std::vector<double> observed(kGrid * kGrid, 0.0), expected(kGrid * kGrid, double(kSamples) / (kGrid * kGrid));
+  Pcg32 rng(5, 6);
+  for (long i = 0; i < kSamples; ++i) {
+    const LightSample s = lights.sample(rng.next_float(), Vec2f(rng.next_float(), rng.next_float()));
+    ASSERT_NEAR(s.pdf_area, 1.0f / (130.0f * 105.0f), 1e-9f);
+    ASSERT_LT(s.normal.y, -0.999f);
+    const int ix = std::clamp(static_cast<int>((s.position.x - 213.0f) / 130.0f * kGrid), 0, kGrid - 1);
+    const int iz = std::clamp(static_cast<int>((s.position.z - 227.0f) / 105.0f * kGrid), 0, kGrid - 1);
+    observed[static_cast<std::size_t>(iz * kGrid + ix)] += 1.0;
+  }
+  const auto r = test::chi_square_test(observed, expected);
+  EXPECT_GT(r.p_value, 1e-3) << r.message;
+}
+
+TEST(LightSampler, PdfOfNonEmitterIsZero) {
+  const Scene scene = make_cornell_box();
+  const LightSampler lights(scene);
+  EXPECT_EQ(lights.pdf_area(0, 0), 0.0f);  // floor
+  const auto light_mesh = static_cast<std::uint32_t>(scene.meshes.size() - 1);
+  EXPECT_NEAR(lights.pdf_area(light_mesh, 1), 1.0f / (130.0f * 105.0f), 1e-9f);
+}
+
+TEST(Scene, ValidationCatchesBadData) {
+  Scene scene = make_cornell_box();
+  scene.meshes[0].indices[2] = 999;
+  EXPECT_THROW(validate_scene(scene), SceneError);
+  scene = make_cornell_box();
+  scene.meshes[0].positions[0].x = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_THROW(validate_scene(scene), SceneError);
+  scene = make_cornell_box();
+  scene.meshes[0].material = 42;
+  EXPECT_THROW(validate_scene(scene), SceneError);
+  EXPECT_THROW(validate_scene(Scene{}), SceneError);
+}
+
+}  // namespace
+}  // namespace prism

@@ -1,0 +1,24 @@
+#include "support/test_scenes.h"
+
+namespace prism::test {
+
+Scene make_emitting_enclosure(float albedo, float emitted) {
+  Scene scene;
+  scene.name = "emitting-enclosure";
+  scene.materials = {{"wall", Vec3f(albedo), Vec3f(emitted)}};
+  TriangleMesh mesh{"cube", {}, {}, 0};
+  // Corners of [-1, 1]^3; each face listed so its counter-clockwise normal points inwards.
+  const Vec3f c[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
+                      {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
+  const int faces[6][4] = {{0, 1, 2, 3}, {5, 4, 7, 6}, {4, 0, 3, 7}, {1, 5, 6, 2}, {4, 5, 1, 0}, {3, 2, 6, 7}};
+  for (const auto& f : faces) {
+    const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    for (int k = 0; k < 4; ++k) mesh.positions.push_back(c[f[k]]);
+    mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+  }
+  scene.meshes.push_back(mesh);
+  scene.camera = Camera{Vec3f(0, 0, 0), Vec3f(0.3f, 0.2f, 1), Vec3f(0, 1, 0), 90.0f};
+  return scene;
+}
+
+}  // namespace prism::test

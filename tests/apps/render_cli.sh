@@ -49,6 +49,21 @@ else
   fail "small render failed: $(cat "$work/stderr")"
 fi
 
+# SIGINT/SIGTERM mid-render: exit 128+signal with both images holding the passes so far.
+for sig in INT TERM; do
+  rm -rf "$work/out"; mkdir -p "$work/out"
+  "$prism" render cornell-box --width 64 --height 64 --spp 100000000 "${o[@]}" >"$work/stdout" 2>"$work/stderr" &
+  pid=$!
+  sleep 1
+  kill -"$sig" "$pid"
+  wait "$pid"
+  rc=$?
+  expected=$([ "$sig" = INT ] && echo 130 || echo 143)
+  [ "$rc" -eq "$expected" ] || fail "SIG$sig: exit $rc, expected $expected ($(cat "$work/stderr"))"
+  [ -s "$work/out/x.exr" ] && [ -s "$work/out/x.png" ] || fail "SIG$sig: images not written"
+  grep -q "interrupted" "$work/stdout" || fail "SIG$sig: no interruption notice: $(cat "$work/stdout")"
+done
+
 # --help documents every option of render.
 "$prism" render --help >"$work/help" 2>&1 || fail "render --help exited non-zero"
 for opt in --output --spp --max-depth --seed --threads --time-limit --width --height --estimator; do

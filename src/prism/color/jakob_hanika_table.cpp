@@ -1,0 +1,76 @@
+// Lookup and trilinear interpolation in the embedded Jakob–Hanika coefficient tables.
+#include "prism/color/jakob_hanika_table.h"
+
+#include <algorithm>
+#include <cstring>
+#include <map>
+#include <memory>
+#include <mutex>
+
+#include "prism/color/color_space.h"
+#include "prism/core/error.h"
+
+namespace prism::color {
+
+std::vector<std::string> JakobHanikaTable::space_names() { return {"srgb", "acescg", "rec2020"}; }
+
+const JakobHanikaTable& JakobHanikaTable::get(std::string_view space_name) {
+  const std::string canonical = color_space(space_name).name;
+  static std::mutex mutex;
+  static std::map<std::string, std::unique_ptr<JakobHanikaTable>> tables;
+  std::lock_guard lock(mutex);
+  auto found = tables.find(canonical);
+  if (found != tables.end()) return *found->second;
+  const std::span<const unsigned char> bytes = detail::jakob_hanika_embedded_table(canonical);
+  if (bytes.empty())
+    throw UsageError("no Jakob-Hanika table for colour space '" + canonical +
+                     "' (available: srgb, acescg, rec2020)");
+  auto table = std::unique_ptr<JakobHanikaTable>(
+      new JakobHanikaTable(canonical, bytes, detail::jakob_hanika_embedded_resolution()));
+  return *tables.emplace(canonical, std::move(table)).first->second;
+}
+
+JakobHanikaTable::JakobHanikaTable(std::string space, std::span<const unsigned char> bytes, int resolution)
+    : space_(std::move(space)), resolution_(resolution) {
+  const std::size_t res = static_cast<std::size_t>(resolution);
+  scale_.resize(res);
+  coefficients_.resize(3 * res * res * res * 3);
+  if (bytes.size() != (scale_.size() + coefficients_.size()) * sizeof(float))
+    throw Error("embedded Jakob-Hanika table for '" + space_ + "' has the wrong size");
+  std::memcpy(scale_.data(), bytes.data(), scale_.size() * sizeof(float));
+  std::memcpy(coefficients_.data(), bytes.data() + scale_.size() * sizeof(float),
+              coefficients_.size() * sizeof(float));
+}
+
+float JakobHanikaTable::coefficient(int l, int k, int j, int i, int c) const {
+  const std::size_t res = static_cast<std::size_t>(resolution_);
+  return coefficients_[((((static_cast<std::size_t>(l) * res + k) * res + j) * res + i) * 3) + c];
+}
+
+SigmoidPolynomial JakobHanikaTable::lookup(Vec3d rgb) const {
+  for (int c = 0; c < 3; ++c) rgb[c] = std::clamp(std::isnan(rgb[c]) ? 0.0 : rgb[c], 0.0, 1.0);
+  // Greys are exactly representable (c₀ = c₁ = 0): skip the table and its interpolation error.
+  if (rgb.x == rgb.y && rgb.y == rgb.z) return SigmoidPolynomial::constant(rgb.x);
+
+  const int l = rgb.x >= rgb.y ? (rgb.x >= rgb.z ? 0 : 2) : (rgb.y >= rgb.z ? 1 : 2);
+  const double z = rgb[l];
+  const int res = resolution_;
+  const double x = rgb[(l + 1) % 3] / z * (res - 1), y = rgb[(l + 2) % 3] / z * (res - 1);
+  const int xi = std::min(static_cast<int>(x), res - 2), yi = std::min(static_cast<int>(y), res - 2);
+  const int zi = std::clamp(static_cast<int>(std::upper_bound(scale_.begin(), scale_.end(), float(z)) -
+                                             scale_.begin()) - 1, 0, res - 2);
+  const double dx = x - xi, dy = y - yi;
+  const double dz = (z - scale_[zi]) / (scale_[zi + 1] - scale_[zi]);
+
+  double c[3];
+  for (int n = 0; n < 3; ++n) {
+    auto at = [&](int dk, int dj, int di) { return double(coefficient(l, zi + dk, yi + dj, xi + di, n)); };
+    auto lerp = [](double t, double a, double b) { return a + t * (b - a); };
+    c[n] = lerp(dz,
+                lerp(dy, lerp(dx, at(0, 0, 0), at(0, 0, 1)), lerp(dx, at(0, 1, 0), at(0, 1, 1))),
+                lerp(dy, lerp(dx, at(1, 0, 0), at(1, 0, 1)), lerp(dx, at(1, 1, 0), at(1, 1, 1))));
+  }
+  return {c[0], c[1], c[2]};
+}
+
+}  // namespace prism::color

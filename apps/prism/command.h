@@ -11,6 +11,7 @@ using Action = std::function<int()>;
 
 void add_render_command(CLI::App& root, Action& action);
 void add_info_command(CLI::App& root, Action& action);
+void add_merge_command(CLI::App& root, Action& action);
 void add_color_command(CLI::App& root, Action& action);
 
 }  // namespace prism::cli

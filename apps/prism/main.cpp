@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   prism::cli::Action action;
   prism::cli::add_render_command(app, action);
   prism::cli::add_info_command(app, action);
+  prism::cli::add_merge_command(app, action);
   prism::cli::add_color_command(app, action);
 
   try {

@@ -2,11 +2,22 @@
 
 #include <algorithm>
 
+#include "prism/core/error.h"
+
 namespace prism {
 
 Film::Film(int width, int height)
     : width_(width), height_(height), sum_(pixel_count()), sum_squares_(pixel_count()),
       count_(pixel_count(), 0u) {}
+
+Film::Film(int width, int height, std::vector<Vec3d> sums, std::vector<Vec3d> sum_squares,
+           std::vector<std::uint32_t> counts)
+    : width_(width), height_(height), sum_(std::move(sums)), sum_squares_(std::move(sum_squares)),
+      count_(std::move(counts)) {
+  if (width < 0 || height < 0 || sum_.size() != pixel_count() || sum_squares_.size() != pixel_count() ||
+      count_.size() != pixel_count())
+    throw Error("film state does not match its size");
+}
 
 Vec3d Film::mean(std::size_t pixel) const {
   const std::uint32_t n = count_[pixel];

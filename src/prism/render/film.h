@@ -13,6 +13,9 @@ class Film {
  public:
   Film() = default;
   Film(int width, int height);
+  // Restores a film from its raw state (checkpoints, merging). Sizes must match.
+  Film(int width, int height, std::vector<Vec3d> sums, std::vector<Vec3d> sum_squares,
+       std::vector<std::uint32_t> counts);
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -31,6 +34,10 @@ class Film {
   // Unbiased estimate of the variance of the pixel mean, per channel:
   // s² / n with s² the sample variance (needs n ≥ 2; zero otherwise).
   Vec3d variance_of_mean(std::size_t pixel) const;
+
+  const std::vector<Vec3d>& sums() const { return sum_; }
+  const std::vector<Vec3d>& sum_squares() const { return sum_squares_; }
+  const std::vector<std::uint32_t>& counts() const { return count_; }
 
   // Interleaved RGB means in single precision, row-major from the top-left pixel.
   std::vector<float> mean_rgb() const;

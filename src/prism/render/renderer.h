@@ -14,7 +14,10 @@ namespace prism {
 struct RenderSettings {
   int width = 512;
   int height = 512;
+  // Sample indices first_sample .. samples_per_pixel - 1 are rendered, one pass each.
+  // A plain render starts at 0; farms split the range (--sample-range) and merge.
   int samples_per_pixel = 64;
+  int first_sample = 0;
   double time_limit_seconds = 0.0;  // 0: no limit
   std::uint64_t seed = 0;
   int threads = 0;                  // 0: all hardware threads
@@ -23,6 +26,11 @@ struct RenderSettings {
 
 // Validates ranges (sizes, spp, depth, threads); throws UsageError naming the option.
 void validate_render_settings(const RenderSettings& settings);
+
+// A fingerprint of everything that determines the pixel values of sample i: the scene,
+// image size, seed and path settings (not spp, threads or time limits). Checkpoints and
+// partial renders carry it so that only compatible states are resumed or merged.
+std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settings);
 
 struct RenderProgress {
   int passes_done = 0;
@@ -35,18 +43,43 @@ enum class StopReason { completed, time_limit, cancelled };
 
 struct RenderResult {
   Film film;
-  int passes_done = 0;  // complete passes; a cancelled pass may have left some pixels one sample ahead
+  int passes_done = 0;   // passes (samples per pixel) in the film, including resumed ones
+  int next_sample = 0;   // the sample index the next pass would render
   double elapsed_seconds = 0.0;
   std::uint64_t invalid_samples = 0;  // NaN/Inf radiance discarded, never written to the film
   StopReason stop_reason = StopReason::completed;
 };
 
 using ProgressCallback = std::function<void(const RenderProgress&)>;
+// Receives the film after a complete pass and the next sample index to render.
+using CheckpointCallback = std::function<void(const Film& film, int next_sample)>;
 
-// Renders `scene`. The film depends only on the scene, the settings' sizes, spp, seed
-// and path settings, never on `threads` or timing (for complete passes). `cancel` may be
-// set from another thread or a signal handler; the render then stops within one row.
-RenderResult render(const Scene& scene, const RenderSettings& settings,
-                    const ProgressCallback& on_pass = {}, const std::atomic<bool>* cancel = nullptr);
+struct RenderHooks {
+  ProgressCallback on_pass;
+  // May be set from another thread or a signal handler; the render stops after the
+  // current pass, so the film always holds whole passes.
+  const std::atomic<bool>* cancel = nullptr;
+  // Called after a pass once checkpoint_interval_seconds have passed since the last call
+  // (0: never during the render), and once more when the render ends for any reason.
+  CheckpointCallback on_checkpoint;
+  double checkpoint_interval_seconds = 0.0;
+};
+
+// Continues from a checkpointed film whose passes cover sample indices
+// settings.first_sample .. next_sample - 1.
+struct ResumeState {
+  Film film;
+  int next_sample = 0;
+};
+
+// Renders `scene`. The film depends only on the scene, the settings' sizes, sample range,
+// seed and path settings, never on `threads`, timing, or whether it was resumed.
+RenderResult render(const Scene& scene, const RenderSettings& settings, const RenderHooks& hooks,
+                    const ResumeState* resume = nullptr);
+
+inline RenderResult render(const Scene& scene, const RenderSettings& settings,
+                           const ProgressCallback& on_pass = {}, const std::atomic<bool>* cancel = nullptr) {
+  return render(scene, settings, RenderHooks{on_pass, cancel, {}, 0.0});
+}
 
 }  // namespace prism

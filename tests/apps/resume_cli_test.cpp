@@ -1,0 +1,109 @@
+// End-to-end: `prism render --checkpoint`, interrupted by SIGINT, then `--resume`, gives
+// the same pixels as one uninterrupted render; `--sample-range` parts merged with
+// `prism merge` give the image of the whole range.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+
+#include "prism/io/exr.h"
+
+namespace prism {
+namespace {
+namespace fs = std::filesystem;
+
+class CliRender : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("prism-cli-test-" + std::to_string(::getpid()) + "-" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+  int run(const std::string& args) {
+    const std::string cmd = std::string(PRISM_CLI) + " " + args + " >" + (dir_ / "log").string() + " 2>&1";
+    const int status = std::system(cmd.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+  std::string log() const {
+    std::ifstream in(dir_ / "log");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }
+  fs::path dir_;
+};
+
+TEST_F(CliRender, InterruptThenResumeEqualsUninterrupted) {
+  const std::string common = "render cornell-box --width 48 --height 48 --seed 3 ";
+  ASSERT_EQ(run(common + "--spp 400 -o " + (dir_ / "full.exr").string()), 0) << log();
+
+  // Start the same render with a checkpoint, interrupt it, then resume.
+  const std::string ckp = (dir_ / "render.ckp").string();
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    const std::string out = (dir_ / "partial.exr").string();
+    ::execl(PRISM_CLI, PRISM_CLI, "render", "cornell-box", "--width", "48", "--height", "48", "--seed", "3", "--spp",
+            "400", "--checkpoint", ckp.c_str(), "-o", out.c_str(), static_cast<char*>(nullptr));
+    std::_Exit(127);
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  ::kill(pid, SIGINT);
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  ASSERT_TRUE(WIFEXITED(status));
+  if (WEXITSTATUS(status) == 0) GTEST_SKIP() << "render finished before the interrupt arrived";
+  ASSERT_EQ(WEXITSTATUS(status), 130);
+  ASSERT_TRUE(fs::exists(ckp));
+  const ExrFile partial = read_exr(dir_ / "partial.exr");
+  EXPECT_LT(partial.metadata.ints.at("prism:spp"), 400);
+
+  ASSERT_EQ(run(common + "--spp 400 --threads 1 --resume " + ckp + " -o " + (dir_ / "resumed.exr").string()), 0) << log();
+  const ExrFile full = read_exr(dir_ / "full.exr");
+  const ExrFile resumed = read_exr(dir_ / "resumed.exr");
+  EXPECT_EQ(resumed.metadata.ints.at("prism:spp"), 400);
+  EXPECT_TRUE(full.image.rgb == resumed.image.rgb) << "resumed pixels differ from the uninterrupted render";
+}
+
+TEST_F(CliRender, ResumeWithDifferentSettingsIsRefused) {
+  const std::string ckp = (dir_ / "a.ckp").string();
+  ASSERT_EQ(run("render cornell-box --width 16 --height 16 --spp 2 --checkpoint " + ckp + " -o " +
+                (dir_ / "a.exr").string()),
+            0)
+      << log();
+  EXPECT_EQ(run("render cornell-box --width 16 --height 16 --spp 4 --seed 9 --resume " + ckp + " -o " +
+                (dir_ / "b.exr").string()),
+            2);
+  EXPECT_NE(log().find("different scene or settings"), std::string::npos) << log();
+  EXPECT_FALSE(fs::exists(dir_ / "b.exr"));
+}
+
+TEST_F(CliRender, SampleRangesMergeToTheWholeRender) {
+  const std::string common = "render cornell-box --width 24 --height 20 ";
+  ASSERT_EQ(run(common + "--spp 16 -o " + (dir_ / "whole.exr").string()), 0) << log();
+  ASSERT_EQ(run(common + "--sample-range 0:8 -o " + (dir_ / "a.exr").string()), 0) << log();
+  ASSERT_EQ(run(common + "--sample-range 8:16 -o " + (dir_ / "b.exr").string()), 0) << log();
+  ASSERT_EQ(run("merge " + (dir_ / "a.exr").string() + " " + (dir_ / "b.exr").string() + " -o " +
+                (dir_ / "merged.exr").string()),
+            0)
+      << log();
+  const ExrFile whole = read_exr(dir_ / "whole.exr");
+  const ExrFile merged = read_exr(dir_ / "merged.exr");
+  EXPECT_EQ(merged.metadata.ints.at("prism:spp"), 16);
+  ASSERT_EQ(whole.image.rgb.size(), merged.image.rgb.size());
+  for (std::size_t i = 0; i < whole.image.rgb.size(); ++i)  // float rounding of the parts' means
+    EXPECT_NEAR(merged.image.rgb[i], whole.image.rgb[i], 4e-7f * std::abs(whole.image.rgb[i]) + 1e-30f);
+  // Overlapping parts are refused.
+  EXPECT_EQ(run("merge " + (dir_ / "a.exr").string() + " " + (dir_ / "a.exr").string() + " -o " +
+                (dir_ / "bad.exr").string()),
+            2);
+  EXPECT_FALSE(fs::exists(dir_ / "bad.exr"));
+}
+
+}  // namespace
+}  // namespace prism

@@ -1,0 +1,171 @@
+// Interrupted renders resume to exactly the uninterrupted image; partial sample ranges
+// merge to the image of their union; corrupt checkpoints are refused.
+#include "prism/render/checkpoint.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "prism/core/error.h"
+#include "prism/render/merge_partial_renders.h"
+#include "prism/render/renderer.h"
+#include "prism/scene/builtin_scenes.h"
+
+namespace prism {
+namespace {
+namespace fs = std::filesystem;
+
+RenderSettings settings_for_test(int spp) {
+  RenderSettings s;
+  s.width = 40;
+  s.height = 32;
+  s.samples_per_pixel = spp;
+  s.seed = 17;
+  return s;
+}
+
+fs::path temp_file(const std::string& name) {
+  return fs::temp_directory_path() / ("prism-checkpoint-test-" + std::to_string(::getpid()) + "-" + name);
+}
+
+bool films_identical(const Film& a, const Film& b) {
+  return a.sums() == b.sums() && a.sum_squares() == b.sum_squares() && a.counts() == b.counts();
+}
+
+TEST(Checkpoint, ResumedRenderIsBitwiseIdenticalToUninterrupted) {
+  const Scene scene = make_cornell_box();
+  const RenderSettings full = settings_for_test(6);
+  const RenderResult reference = render(scene, full);
+
+  // Interrupt after 3 passes; the final checkpoint holds exactly those passes.
+  std::atomic<bool> cancel{false};
+  std::optional<Checkpoint> saved;
+  RenderHooks hooks;
+  hooks.cancel = &cancel;
+  hooks.on_pass = [&](const RenderProgress& p) { cancel = p.passes_done == 3; };
+  hooks.on_checkpoint = [&](const Film& film, int next) {
+    saved = Checkpoint{image_fingerprint(scene, full), 0, next, film};
+  };
+  RenderSettings two_threads = full;
+  two_threads.threads = 2;
+  const RenderResult interrupted = render(scene, two_threads, hooks);
+  ASSERT_EQ(interrupted.stop_reason, StopReason::cancelled);
+  ASSERT_TRUE(saved);
+  ASSERT_EQ(saved->next_sample, 3);
+
+  const fs::path path = temp_file("resume.ckp");
+  write_checkpoint(path, *saved);
+  const Checkpoint loaded = read_checkpoint(path);
+  fs::remove(path);
+  EXPECT_EQ(loaded.fingerprint, image_fingerprint(scene, full));
+  EXPECT_TRUE(films_identical(loaded.film, saved->film));
+
+  RenderSettings one_thread = full;
+  one_thread.threads = 1;
+  const ResumeState resume{loaded.film, loaded.next_sample};
+  const RenderResult resumed = render(scene, one_thread, RenderHooks{}, &resume);
+  EXPECT_EQ(resumed.passes_done, 6);
+  EXPECT_TRUE(films_identical(resumed.film, reference.film)) << "resumed film differs from the uninterrupted one";
+}
+
+TEST(Checkpoint, PeriodicCheckpointsAreWritten) {
+  const Scene scene = make_cornell_box();
+  int calls = 0, last_next = 0;
+  RenderHooks hooks;
+  hooks.checkpoint_interval_seconds = 1e-9;  // after every pass
+  hooks.on_checkpoint = [&](const Film&, int next) {
+    ++calls;
+    last_next = next;
+  };
+  render(scene, settings_for_test(4), hooks);
+  EXPECT_EQ(calls, 4);  // three during the render, one at the end
+  EXPECT_EQ(last_next, 4);
+}
+
+TEST(Checkpoint, CorruptTruncatedAndForeignFilesAreRefused) {
+  const Scene scene = make_cornell_box();
+  const RenderResult r = render(scene, settings_for_test(1));
+  const fs::path path = temp_file("corrupt.ckp");
+  write_checkpoint(path, Checkpoint{1, 0, 1, r.film});
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const auto write_bytes = [&](const std::string& b) { std::ofstream(path, std::ios::binary) << b; };
+
+  std::string flipped = bytes;
+  flipped[bytes.size() / 2] ^= 0x40;
+  write_bytes(flipped);
+  EXPECT_THROW(read_checkpoint(path), IoError);
+  write_bytes(bytes.substr(0, bytes.size() - 100));
+  EXPECT_THROW(read_checkpoint(path), IoError);
+  write_bytes("not a checkpoint at all, just text");
+  EXPECT_THROW(read_checkpoint(path), IoError);
+  std::string huge = bytes;
+  huge[20] = '\x7f';  // width field: absurd size must fail before allocating
+  huge[21] = huge[22] = huge[23] = '\x7f';
+  write_bytes(huge);
+  EXPECT_THROW(read_checkpoint(path), IoError);
+  fs::remove(path);
+  EXPECT_THROW(read_checkpoint(path), IoError);
+}
+
+TEST(Fingerprint, CoversWhatChangesPixelsOnly) {
+  const Scene scene = make_cornell_box();
+  const RenderSettings base = settings_for_test(8);
+  RenderSettings other = base;
+  other.samples_per_pixel = 100;
+  other.threads = 1;
+  other.time_limit_seconds = 5;
+  EXPECT_EQ(image_fingerprint(scene, base), image_fingerprint(scene, other));
+  other = base;
+  other.seed = 18;
+  EXPECT_NE(image_fingerprint(scene, base), image_fingerprint(scene, other));
+  other = base;
+  other.path.max_depth = 3;
+  EXPECT_NE(image_fingerprint(scene, base), image_fingerprint(scene, other));
+  Scene moved = scene;
+  moved.camera.eye.x += 1.0f;
+  EXPECT_NE(image_fingerprint(scene, base), image_fingerprint(moved, base));
+}
+
+PartialRender partial(const Scene& scene, int begin, int end) {
+  RenderSettings s = settings_for_test(end);
+  s.first_sample = begin;
+  const RenderResult r = render(scene, s);
+  return {"part", ImageRgbF{s.width, s.height, r.film.mean_rgb()}, begin, r.next_sample, "same"};
+}
+
+TEST(MergePartialRenders, SplitRangesMergeToTheSingleRender) {
+  const Scene scene = make_cornell_box();
+  const RenderResult whole = render(scene, settings_for_test(8));
+  const std::vector<float> expected = whole.film.mean_rgb();
+  const MergedRender merged = merge_partial_renders({partial(scene, 4, 8), partial(scene, 0, 3), partial(scene, 3, 4)});
+  EXPECT_EQ(merged.samples, 8);
+  ASSERT_EQ(merged.ranges.size(), 1u);
+  EXPECT_EQ(merged.ranges.front(), std::make_pair(0, 8));
+  ASSERT_EQ(merged.image.rgb.size(), expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    // Each part's mean was rounded to float once and the weighted sum is formed in
+    // double: the merge differs from the direct mean by a few float ulps at most.
+    EXPECT_NEAR(merged.image.rgb[i], expected[i], 4e-7f * std::abs(expected[i]) + 1e-30f) << "at " << i;
+  }
+}
+
+TEST(MergePartialRenders, RejectsIncompatibleParts) {
+  const ImageRgbF a{2, 2, std::vector<float>(12, 1.0f)};
+  const ImageRgbF b{3, 2, std::vector<float>(18, 1.0f)};
+  EXPECT_THROW(merge_partial_renders({}), UsageError);
+  EXPECT_THROW(merge_partial_renders({{"a", a, 0, 4, "f"}, {"b", b, 4, 8, "f"}}), UsageError);
+  EXPECT_THROW(merge_partial_renders({{"a", a, 0, 4, "f"}, {"b", a, 4, 8, "g"}}), UsageError);
+  EXPECT_THROW(merge_partial_renders({{"a", a, 0, 4, "f"}, {"b", a, 3, 8, "f"}}), UsageError);
+  EXPECT_THROW(merge_partial_renders({{"a", a, 4, 4, "f"}}), UsageError);
+  const MergedRender gap = merge_partial_renders({{"a", a, 0, 2, "f"}, {"b", a, 5, 8, "f"}});
+  EXPECT_EQ(gap.ranges.size(), 2u);
+  EXPECT_EQ(gap.samples, 5);
+}
+
+}  // namespace
+}  // namespace prism

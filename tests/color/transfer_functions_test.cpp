@@ -44,7 +44,7 @@ void expect_increasing(const Fn& f, double lo, double hi, int n = 200001, bool s
   }
 }
 
-TEST(Srgb, PublishedValues) {
+TEST(ColorTransferSrgb, PublishedValues) {
   // IEC 61966-2-1 §5.2/§5.3: both printed breaks fall on the linear segment.
   EXPECT_DOUBLE_EQ(srgb_decode(0.04045), 0.04045 / 12.92);
   EXPECT_DOUBLE_EQ(srgb_encode(0.0031308), 12.92 * 0.0031308);
@@ -57,7 +57,7 @@ TEST(Srgb, PublishedValues) {
   EXPECT_DOUBLE_EQ(srgb_decode(-0.5), -srgb_decode(0.5));
 }
 
-TEST(Srgb, RoundTripsAndIsMonotonic) {
+TEST(ColorTransferSrgb, RoundTripsAndIsMonotonic) {
   expect_float_round_trip(srgb_encode, srgb_decode, -1.0, 1.0, false);
   expect_float_round_trip(srgb_decode, srgb_encode, -1.0, 1.0, false);
   expect_float_round_trip(srgb_encode, srgb_decode, 1e-8, 1.0, true);
@@ -68,7 +68,7 @@ TEST(Srgb, RoundTripsAndIsMonotonic) {
   expect_increasing(srgb_encode, 0.04045 / 12.92 - 1e-8, 0.04045 / 12.92 + 1e-8, 2001, false);
 }
 
-TEST(Bt1886, PublishedFormAndDisplayForm) {
+TEST(ColorTransferBt1886, PublishedFormAndDisplayForm) {
   EXPECT_DOUBLE_EQ(bt1886_decode(0.5), std::pow(0.5, 2.4));
   EXPECT_DOUBLE_EQ(bt1886_decode(0.0), 0.0);
   EXPECT_DOUBLE_EQ(bt1886_decode(-0.1), 0.0);  // clamped
@@ -80,7 +80,7 @@ TEST(Bt1886, PublishedFormAndDisplayForm) {
   EXPECT_THROW(bt1886_encode_nits(50.0, 100.0, -1.0), UsageError);
 }
 
-TEST(Bt1886, RoundTripsAndIsMonotonic) {
+TEST(ColorTransferBt1886, RoundTripsAndIsMonotonic) {
   expect_float_round_trip(bt1886_encode, bt1886_decode, 1e-8, 1.0, true);
   expect_float_round_trip(bt1886_decode, bt1886_encode, 0.0, 1.0, false);
   const Fn enc = [](double l) { return bt1886_encode_nits(l, 250.0, 0.05); };
@@ -90,7 +90,7 @@ TEST(Bt1886, RoundTripsAndIsMonotonic) {
   expect_increasing(bt1886_decode, 0.0, 1.0);
 }
 
-TEST(Pq, PublishedValues) {
+TEST(ColorTransferPq, PublishedValues) {
   // Issue 3 / common ST 2084 tables, 6 decimals: half-unit tolerance.
   EXPECT_NEAR(pq_encode_nits(100.0), 0.508078, 0.5e-6);
   EXPECT_NEAR(pq_encode_nits(1000.0), 0.751827, 0.5e-6);
@@ -101,14 +101,14 @@ TEST(Pq, PublishedValues) {
   EXPECT_NEAR(pq_decode_nits(pq_encode_nits(203.0)), 203.0, 1e-9);
 }
 
-TEST(Pq, RoundTripsAndIsMonotonic) {
+TEST(ColorTransferPq, RoundTripsAndIsMonotonic) {
   expect_float_round_trip(pq_encode_nits, pq_decode_nits, 1e-4, 10000.0, true);
   expect_float_round_trip(pq_decode_nits, pq_encode_nits, 0.01, 1.0, false);
   expect_increasing(pq_encode_nits, 0.0, 10000.0);
   expect_increasing(pq_decode_nits, pq_encode_nits(0.0), 1.0);
 }
 
-TEST(Hlg, PublishedValues) {
+TEST(ColorTransferHlg, PublishedValues) {
   // BT.2100-2 Table 5 prints b and c to 8 decimals; ours are derived from a.
   const double c_from_code = 0.55991073;
   EXPECT_NEAR(hlg_encode(1.0 / 12.0), 0.5, 1e-15);
@@ -120,21 +120,21 @@ TEST(Hlg, PublishedValues) {
   EXPECT_EQ(hlg_encode(-1.0), 0.0);
 }
 
-TEST(Hlg, RoundTripsAndIsMonotonic) {
+TEST(ColorTransferHlg, RoundTripsAndIsMonotonic) {
   expect_float_round_trip(hlg_encode, hlg_decode, 1e-8, 1.0, true);
   expect_float_round_trip(hlg_decode, hlg_encode, 1e-4, 1.0, false);
   expect_increasing(hlg_encode, 0.0, 1.0);
   expect_increasing(hlg_decode, 0.0, 1.0);
 }
 
-TEST(Scrgb, EightyNitsIsOne) {
+TEST(ColorTransferScrgb, EightyNitsIsOne) {
   EXPECT_EQ(scrgb_from_nits(80.0), 1.0);
   EXPECT_EQ(scrgb_from_nits(10000.0), 125.0);
   EXPECT_EQ(scrgb_from_nits(-8.0), -0.1);
   EXPECT_EQ(scrgb_to_nits(scrgb_from_nits(123.5)), 123.5);
 }
 
-TEST(Acescc, PublishedValues) {
+TEST(ColorTransferAcescc, PublishedValues) {
   // S-2014-003: 18% grey encodes to 0.4135884 (7 decimals), 0 to (9.72 − 16) / 17.52.
   EXPECT_NEAR(acescc_encode(0.18), 0.4135884, 0.5e-7);
   EXPECT_NEAR(acescc_encode(0.0), (9.72 - 16.0) / 17.52, 1e-15);
@@ -143,14 +143,14 @@ TEST(Acescc, PublishedValues) {
   EXPECT_EQ(acescc_decode(2.0), 65504.0);                                      // half-float ceiling
 }
 
-TEST(Acescc, RoundTripsAndIsMonotonic) {
+TEST(ColorTransferAcescc, RoundTripsAndIsMonotonic) {
   expect_float_round_trip(acescc_encode, acescc_decode, 1e-6, 65000.0, true);
   expect_float_round_trip(acescc_decode, acescc_encode, acescc_encode(0.0) + 1e-3, 1.45, false);
   expect_increasing(acescc_encode, 0.0, 65504.0);
   expect_increasing(acescc_decode, acescc_encode(0.0), acescc_encode(65000.0));
 }
 
-TEST(Acescct, PublishedConstants) {
+TEST(ColorTransferAcescct, PublishedConstants) {
   // S-2016-001 §4.4 prints A = 10.5402377416545 and B = 0.0729055341958355 (15 and 16
   // significant digits); ours are derived from the break, so they agree to that precision.
   EXPECT_NEAR(acescct_encode(0.0), 0.0729055341958355, 1e-15);
@@ -160,7 +160,7 @@ TEST(Acescct, PublishedConstants) {
   EXPECT_EQ(acescct_decode(2.0), 65504.0);
 }
 
-TEST(Acescct, RoundTripsAndIsMonotonic) {
+TEST(ColorTransferAcescct, RoundTripsAndIsMonotonic) {
   expect_float_round_trip(acescct_encode, acescct_decode, 1e-6, 65000.0, true);
   expect_float_round_trip(acescct_encode, acescct_decode, -0.005, 0.0078125, false);
   expect_float_round_trip(acescct_decode, acescct_encode, 0.0, 1.45, false);
@@ -168,7 +168,7 @@ TEST(Acescct, RoundTripsAndIsMonotonic) {
   expect_increasing(acescct_decode, 0.0, acescct_encode(65000.0));
 }
 
-TEST(TransferFunction, NamesAndGenericDispatch) {
+TEST(ColorTransferTransferFunction, NamesAndGenericDispatch) {
   for (const std::string& name : transfer_function_names())
     EXPECT_EQ(transfer_function_name(parse_transfer_function(name)), name);
   EXPECT_EQ(parse_transfer_function("PQ"), TransferFunction::pq);

@@ -7,6 +7,8 @@
 #include <string>
 #include <system_error>
 
+#include <fmt/format.h>
+
 namespace prism::color {
 namespace {
 
@@ -17,9 +19,9 @@ namespace {
 constexpr double kMinTwiceArea = 1e-10;
 constexpr double kMinBarycentric = 1e-9;
 
-std::string describe(Chromaticity c) {
-  return "(" + std::to_string(c.x) + ", " + std::to_string(c.y) + ")";
-}
+// fmt rather than string concatenation: GCC 12's -Wrestrict misfires on
+// "literal" + std::string&& (GCC bug 105329).
+std::string describe(Chromaticity c) { return fmt::format("({}, {})", c.x, c.y); }
 
 bool finite(Chromaticity c) { return std::isfinite(c.x) && std::isfinite(c.y); }
 

@@ -8,6 +8,7 @@ packages=(
   libembree-dev libtbb-dev libopenexr-dev libpng-dev libstb-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
+  libopencolorio-dev  # test oracle for the ACES display transforms (issue 6)
 )
 
 missing=()

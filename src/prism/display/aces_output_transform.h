@@ -1,0 +1,69 @@
+#pragma once
+// ACES 1.x Output Transforms (RRT + ODT) by name, from ACES2065-1 to display-linear light
+// in absolute nits in the display's RGB primaries. Encoding to code values is a separate
+// stage (display_encoding.h), so every encoding of one ODT shows the same light.
+//
+//   srgb-100nit         RRT + ODT.Academy.RGBmonitor_100nits_dim (Rec.709 primaries, sRGB)
+//   rec709-100nit       RRT + ODT.Academy.Rec709_100nits_dim (BT.1886)
+//   p3d65-100nit        the same SDR video rendering on P3-D65 primaries (Display P3, sRGB curve)
+//   rec2020-100nit      RRT + ODT.Academy.Rec2020_100nits_dim (BT.1886)
+//   rec2020-pq-1000nit  RRTODT.Academy.Rec2020_1000nits_15nits_ST2084 (SSTS)
+//   rec2020-pq-2000nit  RRTODT.Academy.Rec2020_2000nits_15nits_ST2084
+//   rec2020-pq-4000nit  RRTODT.Academy.Rec2020_4000nits_15nits_ST2084
+//   p3d65-pq-1000nit    RRTODT.Academy.P3D65_1000nits_15nits_ST2084
+//   none                no tone mapping: ACES → Rec.709 (Bradford), 1.0 = 80 nits
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "prism/core/mat3.h"
+#include "prism/core/vec.h"
+#include "prism/display/display_encoding.h"
+#include "prism/display/ssts.h"
+
+namespace prism::display {
+
+enum class OdtId {
+  none, srgb_100nit, rec709_100nit, p3d65_100nit, rec2020_100nit,
+  rec2020_pq_1000nit, rec2020_pq_2000nit, rec2020_pq_4000nit, p3d65_pq_1000nit,
+};
+
+struct OdtDescription {
+  OdtId id;
+  std::string_view name;
+  std::string_view display_space;  // prism::color name of the display primaries
+  DisplayEncoding default_encoding;
+  bool hdr;                 // SSTS Output Transform (else SDR C5+C9 path, or none)
+  double y_min_nits;        // HDR: Y_MIN; SDR: 0 (display black)
+  double y_mid_nits;        // HDR: Y_MID
+  double white_nits;        // peak: HDR Y_MAX, SDR 100, none 80
+};
+
+const OdtDescription& odt_description(OdtId id);
+// Case-insensitive; '_' accepted for '-'. Unknown: UsageError listing the names.
+OdtId parse_odt(std::string_view name);
+std::vector<std::string> odt_names();
+
+class AcesOutputTransform {
+ public:
+  // stretch_black (HDR only, the CTL's STRETCH_BLACK): map linear code 0 to 0 nits rather
+  // than Y_MIN. The Academy's ST 2084 transforms ship with it on.
+  explicit AcesOutputTransform(OdtId id, bool stretch_black = true);
+
+  // ACES2065-1 → display-linear RGB (display primaries), nits.
+  Vec3d display_nits(const Vec3d& aces) const;
+  const OdtDescription& description() const { return *desc_; }
+
+ private:
+  Vec3d sdr(const Vec3d& aces) const;
+  Vec3d hdr(const Vec3d& aces) const;
+
+  const OdtDescription* desc_;
+  bool stretch_black_;
+  Mat3 xyz_to_display_;      // XYZ (D65) → display RGB
+  Mat3 limit_xyz_to_rgb_, limit_rgb_to_xyz_;  // limiting primaries (= display primaries)
+  Mat3 ap0_to_display_;      // for `none`
+  TsParams ts_{};
+};
+
+}  // namespace prism::display

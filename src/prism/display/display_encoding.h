@@ -1,0 +1,33 @@
+#pragma once
+// Display encodings: display-linear light in nits → signal code values, on the colour
+// functions of prism::color (IEC 61966-2-1 sRGB, ITU-R BT.1886, SMPTE ST 2084 PQ,
+// IEC 61966-2-2 scRGB).
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace prism::display {
+
+enum class DisplayEncoding {
+  srgb,    // relative: nits / display white, sRGB piecewise curve
+  bt1886,  // relative: nits / display white, γ 2.4 (black 0)
+  pq,      // absolute: ST 2084, 1.0 = 10000 nits
+  scrgb,   // linear Rec.709, 1.0 = 80 nits, negatives and values above 1 kept
+};
+
+// "srgb", "bt1886" (alias "rec709"), "pq" (alias "st2084"), "scrgb"; case-insensitive.
+// Unknown: UsageError listing the names.
+DisplayEncoding parse_display_encoding(std::string_view name);
+std::string_view display_encoding_name(DisplayEncoding e);
+std::vector<std::string> display_encoding_names();
+
+// Integer-codable encodings (everything but scrgb) take values in [0, 1].
+bool is_float_encoding(DisplayEncoding e);
+
+// Display light (nits) → code value; relative encodings divide by white_nits first and
+// clamp to [0, 1]; pq clamps to [0, 10000] nits.
+double encode_display_nits(DisplayEncoding e, double luminance_nits, double white_nits);
+// Code value → display light (nits), the inverse of encode_display_nits.
+double decode_display_nits(DisplayEncoding e, double code, double white_nits);
+
+}  // namespace prism::display

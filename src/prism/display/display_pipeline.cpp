@@ -1,0 +1,86 @@
+#include "prism/display/display_pipeline.h"
+
+#include <cmath>
+#include <string>
+
+#include <oneapi/tbb/parallel_for.h>
+
+#include "prism/color/chromatic_adaptation.h"
+#include "prism/core/error.h"
+#include "prism/display/blue_light_lmt.h"
+#include "prism/display/dither.h"
+#include "prism/display/exposure.h"
+
+namespace prism::display {
+
+double exposure_scale(const DisplaySettings& s, const ImageRgbF& film, const color::ColorSpace& film_space) {
+  if (s.exposure_ev100 && s.auto_exposure) throw UsageError("give either an EV100 or auto exposure, not both");
+  if (s.exposure_ev100) return exposure_scale_from_ev100(*s.exposure_ev100);
+  if (s.auto_exposure) {
+    const double l_avg = log_average_luminance(film.rgb, film_space.rgb_to_xyz.row(1));
+    return exposure_scale_from_ev100(auto_exposure_ev100(l_avg, s.auto_exposure_key));
+  }
+  return 1.0;
+}
+
+Mat3 film_to_aces_matrix(const color::ColorSpace& film_space, double blue_correction) {
+  const Mat3 to_ap0 = color::conversion_matrix(film_space, color::color_space("aces2065-1"), color::Cat::bradford);
+  return blue_correction_matrix(blue_correction) * to_ap0;
+}
+
+DisplayImage apply_display_pipeline(const ImageRgbF& film, const color::ColorSpace& film_space,
+                                    const DisplaySettings& s) {
+  const OdtDescription& odt = odt_description(s.odt);
+  DisplayImage out;
+  out.width = film.width;
+  out.height = film.height;
+  out.encoding = s.encoding.value_or(odt.default_encoding);
+  out.white_nits = odt.white_nits;
+  out.exposure_scale = exposure_scale(s, film, film_space);
+  // scRGB is defined on Rec.709 primaries; every other encoding keeps the ODT's.
+  const bool to_rec709 = out.encoding == DisplayEncoding::scrgb && odt.display_space != "srgb";
+  out.primaries = to_rec709 ? "srgb" : std::string(odt.display_space);
+  const Mat3 display_to_output =
+      to_rec709 ? color::conversion_matrix(color::color_space(odt.display_space), color::color_space("srgb"))
+                : Mat3::identity();
+
+  Mat3 to_aces = film_to_aces_matrix(film_space, s.blue_correction);
+  for (auto& row : to_aces.m)
+    for (double& v : row) v *= out.exposure_scale;
+  const AcesOutputTransform transform(s.odt, s.stretch_black.value_or(true));
+
+  const std::size_t n = static_cast<std::size_t>(film.width) * film.height;
+  out.code.resize(3 * n);
+  out.nits.resize(3 * n);
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+    Vec3d rgb{film.rgb[3 * i], film.rgb[3 * i + 1], film.rgb[3 * i + 2]};
+    for (int c = 0; c < 3; ++c)
+      if (!std::isfinite(rgb[c])) rgb[c] = 0.0;  // NaN/inf samples show as black, not as noise
+    const Vec3d nits = display_to_output * transform.display_nits(to_aces * rgb);
+    for (int c = 0; c < 3; ++c) {
+      out.nits[3 * i + c] = static_cast<float>(nits[c]);
+      out.code[3 * i + c] = static_cast<float>(encode_display_nits(out.encoding, nits[c], out.white_nits));
+    }
+  });
+  return out;
+}
+
+EncodedImage quantise_display_image(const DisplayImage& image, int bit_depth, std::uint64_t seed) {
+  if (is_float_encoding(image.encoding))
+    throw UsageError("encoding '" + std::string(display_encoding_name(image.encoding)) +
+                     "' is floating point: write it to an EXR file");
+  if (bit_depth != 8 && bit_depth != 10 && bit_depth != 12 && bit_depth != 16)
+    throw UsageError("bit depth must be 8, 10, 12 or 16, got " + std::to_string(bit_depth));
+  EncodedImage out;
+  out.width = image.width;
+  out.height = image.height;
+  out.channels = 3;
+  out.bit_depth = bit_depth;
+  out.samples.resize(image.code.size());
+  const bool dither = bit_depth <= 10;
+  for (std::size_t i = 0; i < image.code.size(); ++i)
+    out.samples[i] = quantise_code(image.code[i], bit_depth, dither ? triangular_dither_lsb(seed, i) : 0.0);
+  return out;
+}
+
+}  // namespace prism::display

@@ -1,0 +1,24 @@
+#pragma once
+// PNG writing with colour metadata beyond the sRGB chunk: cICP, mDCv and cLLi (PNG Third
+// Edition, W3C 2025). Debian 12's libpng 1.6.39 has no API for these chunks, so they are
+// written through libpng's unknown-chunk API, placed before PLTE/IDAT as the spec requires.
+#include <filesystem>
+#include <optional>
+
+#include "prism/io/hdr10_metadata.h"
+#include "prism/io/image.h"
+
+namespace prism {
+
+struct PngColorMetadata {
+  bool srgb_chunk = false;  // `sRGB` (+ gAMA/cHRM fallbacks); only for sRGB-encoded Rec.709
+  std::optional<CicpInfo> cicp;
+  std::optional<MasteringDisplay> mastering_display;
+  std::optional<ContentLightLevel> content_light_level;
+};
+
+// 8- or 16-bit RGB; writes atomically. Throws IoError.
+void write_png_with_color_metadata(const std::filesystem::path& path, const EncodedImage& image,
+                                   const PngColorMetadata& metadata);
+
+}  // namespace prism

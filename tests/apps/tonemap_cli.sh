@@ -1,0 +1,81 @@
+#!/usr/bin/env bash
+# `prism tonemap`: SDR/HDR PNG and scRGB EXR outputs, and exit status 2 with one line on
+# stderr and no output file for bad input. Usage: tonemap_cli.sh PATH_TO_PRISM.
+set -u
+prism="$1"
+failures=0
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+fail() { echo "FAIL: $*" >&2; failures=$((failures + 1)); }
+
+# A small scene-linear input rendered by prism itself.
+if ! "$prism" render cornell-box --width 24 --height 16 --spp 2 -o "$work/in.exr" >/dev/null 2>&1; then
+  echo "FAIL: could not render the input EXR" >&2
+  exit 1
+fi
+
+# expect_ok OUT args...: exit 0 and the output exists.
+expect_ok() {
+  local out="$1"; shift
+  if ! "$prism" tonemap "$work/in.exr" -o "$work/$out" "$@" >/dev/null 2>"$work/err"; then
+    fail "tonemap -o $out $*: $(cat "$work/err")"
+  elif [ ! -s "$work/$out" ]; then
+    fail "tonemap -o $out $*: no output file"
+  fi
+}
+
+# expect_usage_error OUT args...: exit 2, one line on stderr, no output file.
+expect_usage_error() {
+  local out="$1"; shift
+  rm -f "$work/$out"
+  "$prism" tonemap "$@" -o "$work/$out" >/dev/null 2>"$work/err"
+  local rc=$?
+  [ "$rc" -eq 2 ] || fail "tonemap $* -o $out: exit $rc, expected 2 ($(cat "$work/err"))"
+  [ "$(wc -l <"$work/err")" -eq 1 ] || fail "tonemap $*: stderr is not one line: $(cat "$work/err")"
+  grep -q '^prism: error: ' "$work/err" || fail "tonemap $*: stderr lacks 'prism: error:'"
+  [ ! -e "$work/$out" ] || fail "tonemap $*: wrote $out despite the error"
+}
+
+# png_has_chunk FILE NAME: the chunk name appears in the file (chunk types are ASCII).
+png_has_chunk() { grep -q -a "$2" "$1"; }
+
+expect_ok sdr.png
+expect_ok sdr8.png --bit-depth 8 --ev100 -2 --blue-correction 0.6
+expect_ok rec709.png --odt rec709-100nit
+expect_ok p3.png --odt p3d65-100nit
+expect_ok hdr.png --odt rec2020-pq-1000nit --max-cll 900
+expect_ok hdr4k.png --odt rec2020-pq-4000nit --no-odt-stretch-black --auto-exposure
+expect_ok p3pq.png --odt p3d65-pq-1000nit --f-number 2.8 --shutter 0.01 --iso 200
+expect_ok scrgb.exr --odt rec2020-pq-1000nit
+expect_ok none.png --odt none
+
+png_has_chunk "$work/sdr.png" sRGB || fail "SDR PNG lacks the sRGB chunk"
+for c in cICP mDCv cLLi; do
+  png_has_chunk "$work/hdr.png" "$c" || fail "HDR PNG lacks $c"
+done
+png_has_chunk "$work/sdr.png" cICP && fail "SDR sRGB PNG carries a cICP chunk"
+# 16-bit PNG by default (float input): IHDR bit depth byte at offset 24.
+[ "$(od -An -tu1 -j24 -N1 "$work/sdr.png" | tr -d ' ')" = 16 ] || fail "default SDR PNG is not 16-bit"
+[ "$(od -An -tu1 -j24 -N1 "$work/sdr8.png" | tr -d ' ')" = 8 ] || fail "--bit-depth 8 PNG is not 8-bit"
+# The cICP payload of the HDR PNG is (9, 16, 0, 1): Rec.2020, PQ, RGB, full range.
+cicp=$(od -An -tu1 -v "$work/hdr.png" | tr -s ' \n' ' ' | grep -o '99 73 67 80 9 16 0 1')
+[ -n "$cicp" ] || fail "HDR PNG cICP payload is not 9 16 0 1"
+
+echo "not an exr" >"$work/bogus.exr"
+head -c 200 "$work/in.exr" >"$work/truncated.exr"
+expect_usage_error o1.png "$work/bogus.exr"
+expect_usage_error o2.png "$work/truncated.exr"
+expect_usage_error o3.png "$work/missing.exr"
+expect_usage_error o4.png "$work/in.exr" --odt rec9999-100nit
+expect_usage_error o5.png "$work/in.exr" --encoding gamma7
+expect_usage_error o6.png "$work/in.exr" --ev100 nan
+expect_usage_error o7.png "$work/in.exr" --blue-correction 2
+expect_usage_error o8.png "$work/in.exr" --encoding scrgb
+expect_usage_error o9.tiff "$work/in.exr"
+expect_usage_error o10.png "$work/in.exr" --ev100 1 --auto-exposure
+
+if [ "$failures" -ne 0 ]; then
+  echo "$failures failure(s)" >&2
+  exit 1
+fi
+echo "tonemap_cli: all checks passed"

@@ -124,7 +124,9 @@ TEST_P(AcesVsOcio, CodeValuesAgreeOnGrid) {
   std::printf("[ oracle ] %-20s max |Δcode| %.2e (XYZ + exact encoding), %d channel(s) compared in light "
               "(max %.2e of peak), OCIO's own display chain %.2e\n",
               std::string(d.name).c_str(), max_code_error, light_fallbacks, max_light_fallback, max_full_chain_error);
-  if (!d.hdr && full) EXPECT_LE(max_full_chain_error, 1e-3) << d.name;  // analytic SDR curves in OCIO
+  if (!d.hdr && full) {
+    EXPECT_LE(max_full_chain_error, 1e-3) << d.name;  // analytic SDR curves in OCIO
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(

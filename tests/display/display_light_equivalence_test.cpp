@@ -71,7 +71,9 @@ void check_same_light(bool stretch_black) {
       max_rel = std::max(max_rel, std::fabs(a[k] - b[k]) / (std::fabs(a.y) + 1e-3));
     }
     // Black shows at Y_MIN = 0.0001 nit without stretching, at 0 with it (either file).
-    if (i == 0) EXPECT_NEAR(b.y, stretch_black ? 0.0 : 0.0001, 2e-6);
+    if (i == 0) {
+      EXPECT_NEAR(b.y, stretch_black ? 0.0 : 0.0001, 2e-6);
+    }
   }
   std::printf("[ equiv ] stretch_black=%d: PQ PNG vs scRGB EXR max |ΔXYZ|/Y %.2e\n", stretch_black, max_rel);
   std::filesystem::remove(png_path);

@@ -19,16 +19,13 @@ namespace prism {
 namespace {
 
 // Every cICP/mDCv/cLLi chunk in the file, by name, as libpng hands it over.
-std::map<std::string, std::vector<std::uint8_t>> read_unknown_chunks(const std::filesystem::path& path) {
-  std::map<std::string, std::vector<std::uint8_t>> out;
-  std::FILE* fp = std::fopen(path.c_str(), "rb");
-  if (!fp) return out;
+// The setjmp frame holds the libpng calls only; the file is opened and closed by the caller.
+bool read_unknown_chunks_from(std::FILE* fp, std::map<std::string, std::vector<std::uint8_t>>& out) {
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png_create_info_struct(png);
   if (setjmp(png_jmpbuf(png))) {
     png_destroy_read_struct(&png, &info, nullptr);
-    std::fclose(fp);
-    return {};
+    return false;
   }
   png_init_io(png, fp);
   static const png_byte kNames[] = "cICP\0mDCv\0cLLi";
@@ -40,6 +37,15 @@ std::map<std::string, std::vector<std::uint8_t>> read_unknown_chunks(const std::
     out[std::string(reinterpret_cast<const char*>(chunks[i].name), 4)] =
         std::vector<std::uint8_t>(chunks[i].data, chunks[i].data + chunks[i].size);
   png_destroy_read_struct(&png, &info, nullptr);
+  return true;
+}
+
+// Every cICP/mDCv/cLLi chunk in the file, by name, as libpng hands it over.
+std::map<std::string, std::vector<std::uint8_t>> read_unknown_chunks(const std::filesystem::path& path) {
+  std::map<std::string, std::vector<std::uint8_t>> out;
+  std::FILE* fp = std::fopen(path.c_str(), "rb");
+  if (!fp) return out;
+  if (!read_unknown_chunks_from(fp, out)) out.clear();
   std::fclose(fp);
   return out;
 }

@@ -63,7 +63,7 @@ set(_prism_spectral_core_sources
 list(TRANSFORM _prism_spectral_core_sources PREPEND ${CMAKE_CURRENT_SOURCE_DIR}/)
 add_library(prism_spectral_core OBJECT ${_prism_spectral_core_sources} ${_prism_tabulated_cpp})
 target_include_directories(prism_spectral_core PUBLIC ${PROJECT_SOURCE_DIR}/src)
-target_link_libraries(prism_spectral_core PRIVATE prism_warnings TBB::tbb)
+target_link_libraries(prism_spectral_core PUBLIC fmt::fmt PRIVATE prism_warnings TBB::tbb)
 
 get_target_property(_prism_sources prism SOURCES)
 list(REMOVE_ITEM _prism_sources ${_prism_spectral_core_sources})

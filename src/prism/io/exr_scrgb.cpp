@@ -12,6 +12,7 @@
 #include <exception>
 #include <vector>
 
+#include "prism/color/color_space.h"
 #include "prism/core/error.h"
 #include "prism/io/atomic_file.h"
 
@@ -25,9 +26,10 @@ void write_exr_scrgb(const std::filesystem::path& path, const ImageRgbF& image, 
     Imf::Header header(image.width, image.height);
     header.compression() = Imf::ZIP_COMPRESSION;
     for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::HALF));
-    // ITU-R BT.709 primaries, D65 white: the scRGB primaries.
-    Imf::addChromaticities(header, Imf::Chromaticities(Imath::V2f(0.64f, 0.33f), Imath::V2f(0.30f, 0.60f),
-                                                       Imath::V2f(0.15f, 0.06f), Imath::V2f(0.3127f, 0.3290f)));
+    // scRGB uses the ITU-R BT.709 primaries and D65 white: take them from color/.
+    const color::ColorSpace& rec709 = color::color_space("srgb");
+    const auto xy = [](color::Chromaticity c) { return Imath::V2f(static_cast<float>(c.x), static_cast<float>(c.y)); };
+    Imf::addChromaticities(header, Imf::Chromaticities(xy(rec709.red), xy(rec709.green), xy(rec709.blue), xy(rec709.white)));
     Imf::addWhiteLuminance(header, static_cast<float>(white_nits));
     // Half floats, as scRGB swap chains use (values beyond ±65504 saturate to ±inf).
     std::vector<half> pixels(image.rgb.begin(), image.rgb.end());

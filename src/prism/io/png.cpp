@@ -13,26 +13,13 @@
 
 #include "prism/core/error.h"
 #include "prism/io/atomic_file.h"
+#include "prism/io/libpng_support.h"
 
 namespace prism {
 namespace {
 
-// libpng reports errors by longjmp; the message is kept here for the exception.
-struct PngErrorState {
-  char message[256] = "unknown libpng error";
-};
-
-void on_png_error(png_structp png, png_const_charp message) {
-  auto* state = static_cast<PngErrorState*>(png_get_error_ptr(png));
-  std::snprintf(state->message, sizeof state->message, "%s", message);
-  png_longjmp(png, 1);
-}
-
-void on_png_warning(png_structp, png_const_charp) {}
-
-struct FileCloser {
-  void operator()(std::FILE* f) const { std::fclose(f); }
-};
+using libpng::FileCloser;
+using PngErrorState = libpng::ErrorState;
 
 int color_type_for(int channels) {
   switch (channels) {
@@ -46,7 +33,7 @@ int color_type_for(int channels) {
 // The libpng calls live in functions whose frames hold only trivially destructible
 // objects, so longjmp out of them is well defined. Returns false on error.
 bool write_rows(std::FILE* fp, const EncodedImage& image, bool srgb, png_bytep* rows, PngErrorState& err) {
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &err, on_png_error, on_png_warning);
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &err, libpng::on_error, libpng::on_warning);
   if (!png) return false;
   png_infop info = png_create_info_struct(png);
   if (!info || setjmp(png_jmpbuf(png))) {
@@ -143,7 +130,7 @@ PngFile read_png(const std::filesystem::path& path) {
   std::rewind(fp.get());
 
   PngErrorState err;
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &err, on_png_error, on_png_warning);
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &err, libpng::on_error, libpng::on_warning);
   png_infop info = png ? png_create_info_struct(png) : nullptr;
   if (!png || !info) {
     png_destroy_read_struct(&png, &info, nullptr);

@@ -13,24 +13,13 @@
 
 #include "prism/core/error.h"
 #include "prism/io/atomic_file.h"
+#include "prism/io/libpng_support.h"
 
 namespace prism {
 namespace {
 
-struct ErrorState {
-  char message[256] = "unknown libpng error";
-};
-
-void on_error(png_structp png, png_const_charp message) {
-  auto* state = static_cast<ErrorState*>(png_get_error_ptr(png));
-  std::snprintf(state->message, sizeof state->message, "%s", message);
-  png_longjmp(png, 1);
-}
-void on_warning(png_structp, png_const_charp) {}
-
-struct FileCloser {
-  void operator()(std::FILE* f) const { std::fclose(f); }
-};
+using libpng::ErrorState;
+using libpng::FileCloser;
 
 // One ancillary chunk for png_set_unknown_chunks; `data` must outlive the write.
 png_unknown_chunk make_chunk(const char (&name)[5], std::uint8_t* data, std::size_t size) {
@@ -46,7 +35,7 @@ png_unknown_chunk make_chunk(const char (&name)[5], std::uint8_t* data, std::siz
 // objects, so the longjmp out of it is well defined.
 bool write_all(std::FILE* fp, const EncodedImage& image, bool srgb, png_unknown_chunk* chunks, int n_chunks,
                png_bytep* rows, ErrorState& err) {
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &err, on_error, on_warning);
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &err, libpng::on_error, libpng::on_warning);
   if (!png) return false;
   png_infop info = png_create_info_struct(png);
   if (!info || setjmp(png_jmpbuf(png))) {

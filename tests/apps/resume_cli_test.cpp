@@ -39,8 +39,8 @@ class CliRender : public ::testing::Test {
 };
 
 TEST_F(CliRender, InterruptThenResumeEqualsUninterrupted) {
-  const std::string common = "render cornell-box --width 48 --height 48 --seed 3 ";
-  ASSERT_EQ(run(common + "--spp 400 -o " + (dir_ / "full.exr").string()), 0) << log();
+  const std::string common = "render cornell-box --width 32 --height 32 --seed 3 ";
+  ASSERT_EQ(run(common + "--spp 2000 -o " + (dir_ / "full.exr").string()), 0) << log();
 
   // Start the same render with a checkpoint, interrupt it, then resume.
   const std::string ckp = (dir_ / "render.ckp").string();
@@ -48,11 +48,11 @@ TEST_F(CliRender, InterruptThenResumeEqualsUninterrupted) {
   ASSERT_GE(pid, 0);
   if (pid == 0) {
     const std::string out = (dir_ / "partial.exr").string();
-    ::execl(PRISM_CLI, PRISM_CLI, "render", "cornell-box", "--width", "48", "--height", "48", "--seed", "3", "--spp",
-            "400", "--checkpoint", ckp.c_str(), "-o", out.c_str(), static_cast<char*>(nullptr));
+    ::execl(PRISM_CLI, PRISM_CLI, "render", "cornell-box", "--width", "32", "--height", "32", "--seed", "3", "--spp",
+            "2000", "--checkpoint", ckp.c_str(), "-o", out.c_str(), static_cast<char*>(nullptr));
     std::_Exit(127);
   }
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  std::this_thread::sleep_for(std::chrono::milliseconds(150));
   ::kill(pid, SIGINT);
   int status = 0;
   ::waitpid(pid, &status, 0);
@@ -61,12 +61,12 @@ TEST_F(CliRender, InterruptThenResumeEqualsUninterrupted) {
   ASSERT_EQ(WEXITSTATUS(status), 130);
   ASSERT_TRUE(fs::exists(ckp));
   const ExrFile partial = read_exr(dir_ / "partial.exr");
-  EXPECT_LT(partial.metadata.ints.at("prism:spp"), 400);
+  EXPECT_LT(partial.metadata.ints.at("prism:spp"), 2000);
 
-  ASSERT_EQ(run(common + "--spp 400 --threads 1 --resume " + ckp + " -o " + (dir_ / "resumed.exr").string()), 0) << log();
+  ASSERT_EQ(run(common + "--spp 2000 --threads 1 --resume " + ckp + " -o " + (dir_ / "resumed.exr").string()), 0) << log();
   const ExrFile full = read_exr(dir_ / "full.exr");
   const ExrFile resumed = read_exr(dir_ / "resumed.exr");
-  EXPECT_EQ(resumed.metadata.ints.at("prism:spp"), 400);
+  EXPECT_EQ(resumed.metadata.ints.at("prism:spp"), 2000);
   EXPECT_TRUE(full.image.rgb == resumed.image.rgb) << "resumed pixels differ from the uninterrupted render";
 }
 

@@ -23,7 +23,7 @@ TEST(CornellBox, HasTheClassicContents) {
   EXPECT_EQ(scene.triangle_count(), 5u * 2 + 2u * 10 + 2);
   EXPECT_EQ(scene.default_width, 512);
   EXPECT_EQ(scene.default_height, 512);
-  EXPECT_GT(scene.materials[scene.meshes[3].material].albedo.y, 0.3f);  // green wall
+  EXPECT_GT(scene.materials[scene.meshes[3].material].base_color.y, 0.3f);  // green wall
 }
 
 TEST(CornellBox, LightFacesDownIntoTheRoom) {

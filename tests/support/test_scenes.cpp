@@ -5,8 +5,15 @@ namespace prism::test {
 Scene make_emitting_enclosure(float albedo, float emitted) {
   Scene scene;
   scene.name = "emitting-enclosure";
-  scene.materials = {{"wall", Vec3f(albedo), Vec3f(emitted)}};
-  TriangleMesh mesh{"cube", {}, {}, 0};
+  Material wall;
+  wall.name = "wall";
+  wall.base_color = Vec3f(albedo);
+  // Rec.709 white has luminance 1, so radiance is `emitted` in every channel.
+  wall.emission.color = Vec3f(1.0f);
+  wall.emission.luminance_nits = emitted;
+  scene.materials = {wall};
+  TriangleMesh mesh;
+  mesh.name = "cube";
   // Corners of [-1, 1]^3; each face listed so its counter-clockwise normal points inwards.
   const Vec3f c[8] = {{-1, -1, -1}, {1, -1, -1}, {1, 1, -1}, {-1, 1, -1},
                       {-1, -1, 1},  {1, -1, 1},  {1, 1, 1},  {-1, 1, 1}};
@@ -17,7 +24,9 @@ Scene make_emitting_enclosure(float albedo, float emitted) {
     mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
   }
   scene.meshes.push_back(mesh);
-  scene.camera = Camera{Vec3f(0, 0, 0), Vec3f(0.3f, 0.2f, 1), Vec3f(0, 1, 0), 90.0f};
+  scene.camera.eye = Vec3f(0, 0, 0);
+  scene.camera.target = Vec3f(0.3f, 0.2f, 1);
+  scene.camera.fov_degrees = 90.0f;
   return scene;
 }
 

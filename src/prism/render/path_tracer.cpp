@@ -46,26 +46,28 @@ Vec3f trace_path(const PathContext& context, Ray ray, Pcg32& rng) {
     Hit hit;
     if (!context.accel.intersect(ray, hit)) break;  // no environment light yet
     const SurfacePoint sp = surface_point(scene, hit);
-    const Material& material = scene.materials[scene.meshes[hit.mesh].material];
+    const std::uint32_t material_index = scene.meshes[hit.mesh].material;
+    const Material& material = scene.materials[material_index];
+    const Vec3f& emitted = context.emitted_radiance[material_index];
     const Vec3f wo = -ray.direction;
     const float cos_wo = dot(sp.normal, wo);
 
     if (material.is_emissive() && cos_wo > 0.0f) {
       if (depth == 0 || !use_nee) {
-        radiance += throughput * material.emitted_radiance;
+        radiance += throughput * emitted;
       } else if (settings.estimator == LightEstimator::mis) {
         // Density with which NEE would have produced this point, in solid angle at the
         // previous vertex: p_A · r² / cos θ_light.
         const float r2 = length_squared(sp.position - previous_position);
         const float light_pdf = context.lights.pdf_area(hit.mesh, hit.triangle) * r2 / cos_wo;
-        radiance += throughput * material.emitted_radiance * power_heuristic(previous_bsdf_pdf, light_pdf);
+        radiance += throughput * emitted * power_heuristic(previous_bsdf_pdf, light_pdf);
       }
     }
     if (depth + 1 > settings.max_depth) break;
 
     // Lambertian surfaces scatter from both sides: shade in the hemisphere of wo.
     const Vec3f n = cos_wo >= 0.0f ? sp.normal : -sp.normal;
-    const Vec3f f = material.albedo * std::numbers::inv_pi_v<float>;
+    const Vec3f f = material.base_color * std::numbers::inv_pi_v<float>;
 
     if (use_nee) {
       const float u_select = rng.next_float();
@@ -98,7 +100,7 @@ Vec3f trace_path(const PathContext& context, Ray ray, Pcg32& rng) {
     const Vec3f wi = Frame::from_normal(n).to_world(local);
     previous_bsdf_pdf = cosine_hemisphere_pdf(local.z);
     if (previous_bsdf_pdf <= 0.0f) break;
-    throughput *= material.albedo;
+    throughput *= material.base_color;
     previous_position = sp.position;
 
     // Russian roulette (Arvo & Kirk 1990): survive with probability max throughput,

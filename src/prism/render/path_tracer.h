@@ -4,6 +4,7 @@
 // importance sampling with the power heuristic (Veach 1997, ch. 9), Russian roulette.
 // It is replaced by the wavefront integrator; keep it small and correct.
 #include <cstdint>
+#include <vector>
 
 #include "prism/accel/embree_accel.h"
 #include "prism/core/pcg32.h"
@@ -27,6 +28,7 @@ struct PathContext {
   const EmbreeAccel& accel;
   const LightSampler& lights;
   PathTracerSettings settings;
+  std::vector<Vec3f> emitted_radiance;  // per material, linear Rec.709
 };
 
 // Radiance arriving along `ray` (film RGB).

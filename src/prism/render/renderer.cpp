@@ -9,6 +9,7 @@
 #include "prism/core/parallel.h"
 #include "prism/core/sample_stream.h"
 #include "prism/scene/camera_rays.h"
+#include "prism/scene/emission.h"
 
 namespace prism {
 namespace {
@@ -57,10 +58,19 @@ std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settin
     h.bytes(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
   }
   for (const auto& m : scene.materials) {
-    h.value(m.albedo);
-    h.value(m.emitted_radiance);
+    h.value(m.type);
+    h.value(m.base_color);
+    h.value(m.roughness);
+    h.value(m.metallic);
+    h.value(m.ior);
+    h.value(m.emission.color);
+    h.value(m.emission.color_space);
+    h.value(m.emission.luminance_nits);
   }
-  h.value(scene.camera);
+  const Camera& c = scene.camera;
+  for (float v : {c.eye.x, c.eye.y, c.eye.z, c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z,
+                  c.fov_degrees, c.aperture_radius, c.focus_distance})
+    h.value(v);
   h.value(settings.width);
   h.value(settings.height);
   h.value(settings.seed);
@@ -97,7 +107,9 @@ RenderResult render(const Scene& scene, const RenderSettings& settings, const Re
 
   const EmbreeAccel accel(scene);
   const LightSampler lights(scene);
-  const PathContext context{scene, accel, lights, settings.path};
+  PathContext context{scene, accel, lights, settings.path, {}};
+  for (const Material& m : scene.materials)
+    context.emitted_radiance.emplace_back(emission_radiance_rgb(m.emission, color::color_space("srgb")));
   const PinholeCamera camera(scene.camera, settings.width, settings.height);
   std::atomic<std::uint64_t> invalid{0};
   const auto cancelled = [&hooks] { return hooks.cancel && hooks.cancel->load(std::memory_order_relaxed); };

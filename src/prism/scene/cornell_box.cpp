@@ -1,6 +1,7 @@
 #include <array>
 
 #include "prism/scene/builtin_scenes.h"
+#include "prism/scene/emission.h"
 
 namespace prism {
 namespace {
@@ -14,7 +15,9 @@ void add_quad(TriangleMesh& mesh, const Vec3f& a, const Vec3f& b, const Vec3f& c
 
 // A block standing on the floor: its top face's four corners and its height.
 TriangleMesh make_block(std::string name, const std::array<Vec3f, 4>& top, std::uint32_t material) {
-  TriangleMesh mesh{std::move(name), {}, {}, material};
+  TriangleMesh mesh;
+  mesh.name = std::move(name);
+  mesh.material = material;
   add_quad(mesh, top[0], top[1], top[2], top[3]);
   for (int i = 0; i < 4; ++i) {
     const Vec3f& a = top[i];
@@ -26,7 +29,9 @@ TriangleMesh make_block(std::string name, const std::array<Vec3f, 4>& top, std::
 
 TriangleMesh make_wall(std::string name, const Vec3f& a, const Vec3f& b, const Vec3f& c,
                        const Vec3f& d, std::uint32_t material) {
-  TriangleMesh mesh{std::move(name), {}, {}, material};
+  TriangleMesh mesh;
+  mesh.name = std::move(name);
+  mesh.material = material;
   add_quad(mesh, a, b, c, d);
   return mesh;
 }
@@ -39,12 +44,19 @@ Scene make_cornell_box() {
   // Linear Rec.709 reflectances and light radiance of the pbrt-v4 Cornell box, so Prism
   // and pbrt-v4 can render the same scene (see the performance issue).
   enum : std::uint32_t { kWhite, kRed, kGreen, kLight };
-  scene.materials = {
-      {"white", Vec3f(0.725f, 0.71f, 0.68f), Vec3f(0.0f)},
-      {"red", Vec3f(0.63f, 0.065f, 0.05f), Vec3f(0.0f)},
-      {"green", Vec3f(0.14f, 0.45f, 0.091f), Vec3f(0.0f)},
-      {"light", Vec3f(0.78f), Vec3f(17.0f, 12.0f, 4.0f)},
+  const auto diffuse = [](const char* name, Vec3f reflectance) {
+    Material m;
+    m.name = name;
+    m.base_color = reflectance;
+    return m;
   };
+  scene.materials = {diffuse("white", {0.725f, 0.71f, 0.68f}), diffuse("red", {0.63f, 0.065f, 0.05f}),
+                     diffuse("green", {0.14f, 0.45f, 0.091f}), diffuse("light", Vec3f(0.78f))};
+  // Radiance (17, 12, 4) in linear Rec.709: its luminance in nits, with that chromaticity.
+  const Vec3f light_rgb(17.0f, 12.0f, 4.0f);
+  scene.materials[kLight].emission.color = light_rgb;
+  scene.materials[kLight].emission.luminance_nits =
+      static_cast<float>(relative_luminance(light_rgb, ColorPickerSpace::srgb));
 
   scene.meshes.push_back(make_wall("floor", {552.8f, 0, 0}, {0, 0, 0}, {0, 0, 559.2f},
                                    {549.6f, 0, 559.2f}, kWhite));
@@ -70,7 +82,11 @@ Scene make_cornell_box() {
   scene.meshes.push_back(make_wall("light", {343, kLightY, 227}, {343, kLightY, 332},
                                    {213, kLightY, 332}, {213, kLightY, 227}, kLight));
 
-  scene.camera = Camera{Vec3f(278, 273, -800), Vec3f(278, 273, -799), Vec3f(0, 1, 0), 39.3077f};
+  scene.camera.eye = Vec3f(278, 273, -800);
+  scene.camera.target = Vec3f(278, 273, -799);
+  scene.camera.up = Vec3f(0, 1, 0);
+  scene.camera.fov_degrees = 39.3077f;
+  scene.camera.name = "default";
   scene.default_width = 512;
   scene.default_height = 512;
   return scene;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "prism/sampling/warps.h"
+#include "prism/scene/emission.h"
 
 namespace prism {
 
@@ -14,7 +15,8 @@ LightSampler::LightSampler(const Scene& scene) {
     const Material& material = scene.materials[mesh.material];
     if (!material.is_emissive()) continue;
     first_light_of_mesh_[m] = static_cast<std::int64_t>(triangles_.size());
-    const Vec3f& L = material.emitted_radiance;
+    // Radiance in linear Rec.709, the foundation film's space.
+    const Vec3f L(emission_radiance_rgb(material.emission, color::color_space("srgb")));
     for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
       const Vec3f& p0 = mesh.positions[mesh.indices[3 * t + 0]];
       const Vec3f& p1 = mesh.positions[mesh.indices[3 * t + 1]];

@@ -1,5 +1,7 @@
 #include "prism/scene/scene.h"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "prism/core/error.h"
@@ -30,7 +32,8 @@ void validate_scene(const Scene& scene) {
         throw SceneError(fmt::format("mesh '{}': vertex {} is not finite", mesh.name, i));
   }
   for (const auto& m : scene.materials)
-    if (!is_finite(m.albedo) || !is_finite(m.emitted_radiance))
+    if (!is_finite(m.base_color) || !is_finite(m.emission.color) || !std::isfinite(m.emission.luminance_nits) ||
+        m.emission.luminance_nits < 0.0f)
       throw SceneError(fmt::format("material '{}' has non-finite values", m.name));
 }
 

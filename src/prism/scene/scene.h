@@ -5,45 +5,62 @@
 #include <string>
 #include <vector>
 
+#include "prism/core/transform.h"
 #include "prism/core/vec.h"
+#include "prism/scene/light.h"
+#include "prism/scene/material.h"
+#include "prism/scene/texture.h"
 
 namespace prism {
 
 struct TriangleMesh {
   std::string name;
   std::vector<Vec3f> positions;
-  std::vector<std::uint32_t> indices;  // three per triangle
+  std::vector<std::uint32_t> indices;  // three per triangle, counter-clockwise = front
+  std::vector<Vec3f> normals;          // optional per-vertex shading normals (empty: flat)
+  std::vector<Vec2f> uvs;              // optional per-vertex texture coordinates
+  std::vector<Vec3f> tangents;         // optional per-vertex tangents (normal mapping)
   std::uint32_t material = 0;
 
   std::size_t triangle_count() const { return indices.size() / 3; }
 };
 
-// Lambertian material with optional one-sided diffuse emission (linear RGB for now;
-// spectral data arrives with the colour issue). Emission leaves the front face, the
-// side the triangle's geometric normal (counter-clockwise winding) points to.
-struct Material {
-  std::string name;
-  Vec3f albedo{0.5f};
-  Vec3f emitted_radiance{0.0f};  // W·sr⁻¹·m⁻² per channel, in the film's RGB space
-
-  bool is_emissive() const { return max_component(emitted_radiance) > 0.0f; }
+// A placement of a mesh. A scene without instances places every mesh once, untransformed.
+struct Instance {
+  std::uint32_t mesh = 0;
+  Transform object_to_world;
 };
 
-// Pinhole camera. The field of view spans the smaller image axis.
+// Pinhole (aperture_radius 0) or thin-lens camera. The field of view spans the smaller
+// image axis. Physical exposure settings, when given, define the EV100 the display
+// pipeline uses: EV100 = log2(N² / t · 100 / S).
 struct Camera {
   Vec3f eye{0.0f, 0.0f, 0.0f};
   Vec3f target{0.0f, 0.0f, 1.0f};
   Vec3f up{0.0f, 1.0f, 0.0f};
   float fov_degrees = 40.0f;
+  float aperture_radius = 0.0f;  // scene units; 0 = pinhole
+  float focus_distance = 1.0f;   // scene units, along the viewing direction
+  float f_number = 0.0f;         // 0: no physical exposure given
+  float shutter_seconds = 0.0f;
+  float iso = 100.0f;
+  std::string name;
 };
 
 struct Scene {
   std::string name;
   std::vector<TriangleMesh> meshes;
+  std::vector<Instance> instances;  // empty: every mesh once, untransformed
   std::vector<Material> materials;
+  std::vector<Light> lights;        // non-geometric lights (point, spot, directional, environment)
+  std::vector<TextureImage> textures;
   Camera camera;
+  std::vector<Camera> cameras;      // all cameras a file defines (camera is the chosen one)
   int default_width = 512;
   int default_height = 512;
+  int default_spp = 0;        // 0: the renderer's default (files like pbrt-v4 may set it)
+  int default_max_depth = 0;  // 0: the renderer's default
+  std::vector<std::string> warnings;  // loader warnings (unsupported features), one line each
 
   std::size_t triangle_count() const;
 };

@@ -1,0 +1,28 @@
+#include "prism/scene/emission.h"
+
+#include "prism/color/chromatic_adaptation.h"
+
+namespace prism {
+
+const color::ColorSpace& picker_color_space(ColorPickerSpace space) {
+  switch (space) {
+    case ColorPickerSpace::acescg: return color::color_space("acescg");
+    case ColorPickerSpace::rec2020: return color::color_space("rec2020");
+    case ColorPickerSpace::srgb: break;
+  }
+  return color::color_space("srgb");
+}
+
+double relative_luminance(const Vec3f& color, ColorPickerSpace space) {
+  return (picker_color_space(space).rgb_to_xyz * Vec3d(color)).y;
+}
+
+Vec3d emission_radiance_rgb(const Vec3f& color, ColorPickerSpace space, float luminance_nits,
+                            const color::ColorSpace& target) {
+  const double y = relative_luminance(color, space);
+  if (!(y > 0.0) || !(luminance_nits > 0.0f)) return Vec3d(0.0);
+  const Mat3 to_target = color::conversion_matrix(picker_color_space(space), target);
+  return to_target * Vec3d(color) * (static_cast<double>(luminance_nits) / y);
+}
+
+}  // namespace prism

@@ -1,0 +1,22 @@
+#pragma once
+// Radiance of an emitter in an RGB space: the colour is converted from its picker space
+// (with Bradford adaptation between whites) and scaled so that the radiance's luminance
+// equals the requested nits.
+#include "prism/color/color_space.h"
+#include "prism/scene/material.h"
+
+namespace prism {
+
+const color::ColorSpace& picker_color_space(ColorPickerSpace space);
+
+// Linear RGB radiance in `target` whose CIE Y equals luminance_nits. Zero for black.
+Vec3d emission_radiance_rgb(const Vec3f& color, ColorPickerSpace space, float luminance_nits,
+                            const color::ColorSpace& target);
+inline Vec3d emission_radiance_rgb(const Emission& e, const color::ColorSpace& target) {
+  return emission_radiance_rgb(e.color, e.color_space, e.luminance_nits, target);
+}
+
+// Luminance (CIE Y) of a linear RGB colour in the given picker space.
+double relative_luminance(const Vec3f& color, ColorPickerSpace space);
+
+}  // namespace prism

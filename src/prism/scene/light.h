@@ -1,0 +1,34 @@
+#pragma once
+// Non-geometric lights in physical units (emissive triangles are materials' Emission).
+#include <cstdint>
+#include <string>
+
+#include "prism/core/transform.h"
+#include "prism/core/vec.h"
+#include "prism/scene/material.h"
+
+namespace prism {
+
+enum class LightType : std::uint8_t {
+  point,        // intensity: luminous intensity in candela (loaders convert lumens: I = Φ / 4π)
+  spot,         // intensity: candela on the axis; smooth falloff between inner and outer cone
+  directional,  // intensity: illuminance in lux on a surface facing the light
+  environment,  // intensity: luminance scale in nits applied to the (linear) texture
+};
+
+struct Light {
+  std::string name;
+  LightType type = LightType::point;
+  Vec3f position{0.0f};
+  Vec3f direction{0.0f, -1.0f, 0.0f};  // spot axis / direction light travels (directional)
+  Vec3f color{1.0f};
+  ColorPickerSpace color_space = ColorPickerSpace::srgb;
+  float intensity = 1.0f;               // unit depends on type, see LightType
+  float spot_inner_angle_degrees = 30.0f;
+  float spot_outer_angle_degrees = 45.0f;
+  float angular_diameter_degrees = 0.0f;  // directional: 0 = delta light; the Sun is ≈ 0.53
+  int environment_texture = -1;           // environment: equirectangular texture index
+  Transform environment_to_world;         // environment: orientation
+};
+
+}  // namespace prism

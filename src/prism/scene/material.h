@@ -1,0 +1,75 @@
+#pragma once
+// Materials as plain data: a closed set of types (no virtual calls per ray; the
+// integrator dispatches on `type`). Colours are linear and authored with Rec.709/sRGB
+// primaries unless a field says otherwise; the integrator converts them to its transport
+// mode (upsampled spectra or the working RGB space).
+#include <array>
+#include <cstdint>
+#include <string>
+
+#include "prism/core/vec.h"
+
+namespace prism {
+
+enum class MaterialType : std::uint8_t {
+  diffuse,             // Lambertian, reflectance = base_color
+  mirror,              // perfect specular reflection, tinted by base_color
+  conductor,           // rough (GGX) metal: Schlick from F0 = base_color, or complex IOR by name
+  dielectric,          // smooth or rough (GGX) glass; constant or dispersive IOR
+  metallic_roughness,  // glTF 2.0: Lambert + GGX specular, dielectric F0 0.04 blended by metallic
+};
+
+enum class MicrofacetModel : std::uint8_t { ggx, beckmann, blinn_phong };
+enum class ConductorFresnel : std::uint8_t { schlick, complex_ior };
+enum class DispersionModel : std::uint8_t { none, cauchy, sellmeier };
+enum class AlphaMode : std::uint8_t { opaque, mask, blend };
+
+// Colour-picker space a light colour is given in (so a pure ACEScg blue is expressible).
+enum class ColorPickerSpace : std::uint8_t { srgb, acescg, rec2020 };
+
+// Diffuse emission from the front face: `color` gives the chromaticity (in
+// `color_space`), `luminance_nits` the luminance of the emitted radiance.
+struct Emission {
+  Vec3f color{0.0f};
+  ColorPickerSpace color_space = ColorPickerSpace::srgb;
+  float luminance_nits = 0.0f;
+  int texture = -1;  // optional emissive texture (linear), multiplies color
+  bool two_sided = false;
+
+  bool is_emissive() const { return luminance_nits > 0.0f && max_component(color) > 0.0f; }
+};
+
+struct Material {
+  std::string name;
+  MaterialType type = MaterialType::diffuse;
+  Vec3f base_color{0.8f};        // albedo / specular tint / F0, linear Rec.709
+  int base_color_texture = -1;   // index into Scene::textures; multiplies base_color
+  float roughness = 0.5f;        // perceptual roughness r; microfacet α = r²
+  float anisotropy = 0.0f;       // reserved for anisotropic roughness (0 = isotropic)
+  float metallic = 0.0f;
+  int metallic_roughness_texture = -1;  // glTF layout: G = roughness, B = metallic
+  MicrofacetModel microfacet = MicrofacetModel::ggx;
+
+  // Conductors: Schlick with F0 = base_color, or spectral η, k of a named metal
+  // ("Au", "Ag", "Cu", "Al").
+  ConductorFresnel conductor_fresnel = ConductorFresnel::schlick;
+  std::string conductor_name;
+
+  // Dielectrics: η at 587.6 nm (the d line) when dispersion is none; otherwise the
+  // model's coefficients: Cauchy (A, B in µm²), Sellmeier (B1, B2, B3, C1, C2, C3 in µm²).
+  float ior = 1.5f;
+  DispersionModel dispersion = DispersionModel::none;
+  std::array<float, 6> dispersion_coefficients{};
+  bool thin_walled = false;  // glTF KHR_materials_volume absent: thin surface
+  float transmission = 0.0f; // glTF KHR_materials_transmission factor (metallic_roughness)
+
+  AlphaMode alpha_mode = AlphaMode::opaque;
+  float alpha_cutoff = 0.5f;  // for AlphaMode::mask; alpha comes from base colour texture's A
+  float opacity = 1.0f;       // constant alpha (AlphaMode::blend: stochastic coverage)
+
+  Emission emission;
+
+  bool is_emissive() const { return emission.is_emissive(); }
+};
+
+}  // namespace prism

@@ -19,4 +19,12 @@ Table illuminant_a();
 Table illuminant_e();
 Table mallett_yuksel_2019_basis();  // wavelength_nm, r, g, b: 380–780 nm, 5 nm
 
+// bsdf/ (issue 4): spectral IOR, used through bsdf/ior.h.
+Table ior_au_johnson();    // wavelength_nm, n, k: Johnson & Christy 1972, 187.9–1937 nm
+Table ior_ag_johnson();
+Table ior_cu_johnson();
+Table ior_al_mcpeak();     // wavelength_nm, n, k: McPeak et al. 2015, 150–1700 nm
+Table ior_nbk7_schott();   // wavelength_nm, n: N-BK7 from SCHOTT's Sellmeier fit, 360–830 nm
+Table sellmeier_nbk7();    // one row: B1, C1, B2, C2, B3, C3 (C in µm²)
+
 }  // namespace prism::color::data

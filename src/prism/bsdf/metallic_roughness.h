@@ -1,0 +1,93 @@
+#pragma once
+// glTF 2.0 metallic-roughness BRDF (glTF 2.0 specification, Appendix B):
+//   dielectric = fresnel_mix(F0 = 0.04, base = Lambert(base colour), layer = specular)
+//   metal      = conductor_fresnel(F0 = base colour, specular)
+//   f          = mix(dielectric, metal, metallic)
+// which, Schlick being linear in F0, is
+//   f = (1 − m)(1 − F_0.04(wi·h)) c/π + F_F0(wi·h) D G2 / (4 |cos θo| |cos θi|),
+//   F0 = mix(0.04, c, m),
+// with the microfacet lobe GGX at α = roughness² (done by the caller; α is clamped to
+// kMinAlpha so that roughness 0 stays a finite, evaluable lobe rather than a delta).
+//
+// Sampling picks the specular lobe with probability p_s = E_s / (E_s + E_d) from
+// albedo estimates at wo (E_s = mean F_F0(cos θo), E_d = (1 − m) mean(c) (1 − F_0.04(cos θo)))
+// and pdf() is the matching one-sample mixture p_s p_spec + (1 − p_s) p_diffuse. A lobe is
+// given probability 0 only when its f is identically 0. Two-sided.
+#include <algorithm>
+#include <numbers>
+#include <optional>
+
+#include "prism/bsdf/bsdf_sample.h"
+#include "prism/bsdf/fresnel.h"
+#include "prism/bsdf/microfacet.h"
+#include "prism/sampling/warps.h"
+
+namespace prism::bsdf {
+
+template <int N>
+struct MetallicRoughness {
+  static constexpr float kDielectricF0 = 0.04f;  // glTF 2.0: IOR 1.5
+  static constexpr float kMinAlpha = 2e-3f;
+
+  color::SampledSpectrum<N> base_color{0.8f};
+  float metallic = 0.0f;
+  MicrofacetDistribution distribution = MicrofacetDistribution::isotropic(MicrofacetType::ggx, 0.25f);
+
+  static MetallicRoughness from_roughness(const color::SampledSpectrum<N>& base, float metallic,
+                                          float perceptual_roughness) {
+    const float alpha = std::max(kMinAlpha, perceptual_roughness * perceptual_roughness);
+    return {base, metallic, MicrofacetDistribution::isotropic(MicrofacetType::ggx, alpha)};
+  }
+
+  color::SampledSpectrum<N> f0() const {
+    return color::SampledSpectrum<N>(kDielectricF0 * (1.0f - metallic)) + base_color * metallic;
+  }
+
+  // Probability of sampling the specular lobe for this wo.
+  float specular_probability(const Vec3f& wo) const {
+    const float cos_o = abs_cos_theta(wo);
+    const float e_spec = fresnel_schlick(f0(), cos_o).average();
+    const float e_diff = (1.0f - metallic) * base_color.average() * (1.0f - fresnel_schlick(kDielectricF0, cos_o));
+    return e_spec + e_diff > 0.0f ? e_spec / (e_spec + e_diff) : 1.0f;
+  }
+
+  color::SampledSpectrum<N> eval(const Vec3f& wo, const Vec3f& wi) const {
+    if (!same_hemisphere(wo, wi)) return {};
+    const Vec3f o = wo.z < 0.0f ? flip_z(wo) : wo, i = wo.z < 0.0f ? flip_z(wi) : wi;
+    const Vec3f h = normalize(o + i);
+    const float i_h = dot(i, h);
+    const float diffuse_weight = (1.0f - metallic) * (1.0f - fresnel_schlick(kDielectricF0, i_h)) *
+                                 std::numbers::inv_pi_v<float>;
+    const float spec = distribution.D(h) * distribution.G2(o, i) / (4.0f * o.z * i.z);
+    return base_color * diffuse_weight + fresnel_schlick(f0(), i_h) * spec;
+  }
+
+  float pdf(const Vec3f& wo, const Vec3f& wi) const {
+    if (!same_hemisphere(wo, wi)) return 0.0f;
+    const Vec3f o = wo.z < 0.0f ? flip_z(wo) : wo, i = wo.z < 0.0f ? flip_z(wi) : wi;
+    const Vec3f h = normalize(o + i);
+    const float p_s = specular_probability(o);
+    const float p_spec = distribution.pdf_microfacet_normal(o, h) * reflection_jacobian(o, h);
+    return p_s * p_spec + (1.0f - p_s) * cosine_hemisphere_pdf(i.z);
+  }
+
+  std::optional<BsdfSample<N>> sample(const Vec3f& wo, float u_lobe, Vec2f u) const {
+    if (wo.z == 0.0f) return std::nullopt;
+    const Vec3f o = wo.z < 0.0f ? flip_z(wo) : wo;
+    Vec3f i;
+    if (u_lobe < specular_probability(o)) {
+      i = reflect(o, distribution.sample_microfacet_normal(o, u));
+      if (i.z <= 0.0f) return std::nullopt;
+    } else {
+      i = sample_cosine_hemisphere(u);
+    }
+    BsdfSample<N> s;
+    s.wi = wo.z < 0.0f ? flip_z(i) : i;
+    s.pdf = pdf(wo, s.wi);
+    if (!(s.pdf > 0.0f)) return std::nullopt;
+    s.f = eval(wo, s.wi);
+    return s;
+  }
+};
+
+}  // namespace prism::bsdf

@@ -1,0 +1,101 @@
+#include "prism/sampling/piecewise_constant.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "prism/core/error.h"
+
+namespace prism {
+
+PiecewiseConstant1D::PiecewiseConstant1D(std::span<const float> f, float min, float max)
+    : f_(f.begin(), f.end()), min_(min), max_(max) {
+  if (f_.empty()) throw UsageError("piecewise-constant distribution needs at least one value");
+  if (!(max > min)) throw UsageError("piecewise-constant distribution needs max > min");
+  for (float v : f_)
+    if (!(v >= 0.0f) || !std::isfinite(v))
+      throw UsageError("piecewise-constant distribution needs finite, non-negative values");
+  const int n = size();
+  const double width = (double(max) - double(min)) / n;
+  // Running sums in double so that long rows (e.g. 4k-wide environment maps) keep a
+  // monotone, accurately normalised CDF in float.
+  std::vector<double> running(static_cast<std::size_t>(n) + 1, 0.0);
+  for (int i = 0; i < n; ++i) running[i + 1] = running[i] + double(f_[i]) * width;
+  integral_ = static_cast<float>(running[n]);
+  cdf_.resize(static_cast<std::size_t>(n) + 1);
+  if (running[n] > 0.0) {
+    for (int i = 0; i <= n; ++i) cdf_[i] = static_cast<float>(running[i] / running[n]);
+  } else {
+    for (int i = 0; i <= n; ++i) cdf_[i] = static_cast<float>(i) / n;
+    std::fill(f_.begin(), f_.end(), 1.0f);  // all-zero: uniform fallback
+  }
+  cdf_[n] = 1.0f;
+}
+
+int PiecewiseConstant1D::find_cell(float u) const {
+  // Largest i with cdf_[i] ≤ u, skipping zero-width cells (they have f = 0).
+  const auto it = std::upper_bound(cdf_.begin(), cdf_.end(), u);
+  return std::clamp(static_cast<int>(it - cdf_.begin()) - 1, 0, size() - 1);
+}
+
+float PiecewiseConstant1D::pmf(int index) const {
+  if (index < 0 || index >= size()) return 0.0f;
+  return cdf_[index + 1] - cdf_[index];
+}
+
+PiecewiseConstant1D::ContinuousSample PiecewiseConstant1D::sample_continuous(float u) const {
+  const int i = find_cell(u);
+  const float mass = cdf_[i + 1] - cdf_[i];
+  float du = mass > 0.0f ? (u - cdf_[i]) / mass : 0.0f;
+  du = std::clamp(du, 0.0f, std::nextafter(1.0f, 0.0f));
+  const float width = (max_ - min_) / size();
+  ContinuousSample s;
+  s.index = i;
+  s.x = std::min(min_ + (i + du) * width, std::nextafter(max_, min_));
+  s.pdf = mass / width;
+  return s;
+}
+
+PiecewiseConstant1D::DiscreteSample PiecewiseConstant1D::sample_discrete(float u) const {
+  const int i = find_cell(u);
+  const float mass = cdf_[i + 1] - cdf_[i];
+  DiscreteSample s;
+  s.index = i;
+  s.pmf = mass;
+  s.u_remapped = mass > 0.0f ? std::clamp((u - cdf_[i]) / mass, 0.0f, std::nextafter(1.0f, 0.0f)) : 0.0f;
+  return s;
+}
+
+float PiecewiseConstant1D::pdf(float x) const {
+  if (x < min_ || x > max_) return 0.0f;
+  const float width = (max_ - min_) / size();
+  const int i = std::clamp(static_cast<int>((x - min_) / width), 0, size() - 1);
+  return pmf(i) / width;
+}
+
+PiecewiseConstant2D::PiecewiseConstant2D(std::span<const float> f, int nu, int nv) {
+  if (nu < 1 || nv < 1 || f.size() != static_cast<std::size_t>(nu) * static_cast<std::size_t>(nv))
+    throw UsageError("piecewise-constant 2D distribution: size does not match nu × nv");
+  conditional_.reserve(static_cast<std::size_t>(nv));
+  std::vector<float> row_integrals(static_cast<std::size_t>(nv));
+  for (int v = 0; v < nv; ++v) {
+    conditional_.emplace_back(f.subspan(static_cast<std::size_t>(v) * nu, static_cast<std::size_t>(nu)));
+    row_integrals[v] = conditional_.back().integral();
+  }
+  marginal_ = PiecewiseConstant1D(row_integrals);
+}
+
+PiecewiseConstant2D::Sample PiecewiseConstant2D::sample(Vec2f u) const {
+  const auto row = marginal_.sample_continuous(u.y);
+  const auto col = conditional_[row.index].sample_continuous(u.x);
+  // p(u, v) = p(v) p(u | v).
+  return {Vec2f(col.x, row.x), row.pdf * col.pdf};
+}
+
+float PiecewiseConstant2D::pdf(Vec2f p) const {
+  if (p.x < 0.0f || p.x > 1.0f || p.y < 0.0f || p.y > 1.0f) return 0.0f;
+  const int nv = static_cast<int>(conditional_.size());
+  const int v = std::clamp(static_cast<int>(p.y * nv), 0, nv - 1);
+  return marginal_.pdf(p.y) * conditional_[v].pdf(p.x);
+}
+
+}  // namespace prism

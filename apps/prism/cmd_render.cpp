@@ -12,7 +12,9 @@
 
 #include "command.h"
 #include "progress_reporter.h"
+#include "prism/color/chromatic_adaptation.h"
 #include "prism/color/color_space.h"
+#include "prism/color/wavelength_sampling.h"
 #include "prism/core/error.h"
 #include "prism/core/version.h"
 #include "prism/display/clamp_srgb_encode.h"
@@ -28,6 +30,7 @@ namespace {
 
 struct RenderOptions {
   std::string scene = "cornell-box";
+  bool allow_external_paths = false;  // scene files may refer to files outside their folder
   std::vector<std::string> outputs;
   int spp = 64;
   int max_depth = 8;
@@ -37,6 +40,14 @@ struct RenderOptions {
   double time_limit_seconds = 0.0;
   int width = 0, height = 0;  // 0: the scene's default
   std::string estimator = "mis";
+  std::string mode = "spectral";
+  int wavelengths = 4;
+  std::string wavelength_sampling = "cosh3";
+  std::string upsampling = "jakob-hanika";
+  std::string working_space = "srgb";
+  bool no_wavelength_stratification = false;
+  int samples_per_pass = 0;
+  std::string exr_space = "working";
   std::string sample_range;  // "START:END"
   std::string checkpoint;
   double checkpoint_every_seconds = 60.0;
@@ -90,32 +101,46 @@ extern "C" void on_interrupt(int signal) {
   std::signal(signal, SIG_DFL);
 }
 
-ExrChromaticities film_chromaticities() {
-  // The foundation's film holds linear Rec.709/sRGB primaries with a D65 white.
-  const color::ColorSpace& s = color::color_space("srgb");
-  auto f = [](double v) { return static_cast<float>(v); };
-  return {f(s.red.x), f(s.red.y), f(s.green.x), f(s.green.y), f(s.blue.x), f(s.blue.y), f(s.white.x), f(s.white.y)};
-}
-
 std::string hex(std::uint64_t v) { return fmt::format("{:016x}", v); }
 
-void write_outputs(const std::vector<std::filesystem::path>& outputs, const Film& film, const RenderResult& result,
-                   const std::string& scene_name, const RenderSettings& settings, std::uint64_t fingerprint) {
-  ImageRgbF image{film.width(), film.height(), film.mean_rgb()};
+ExrChromaticities chromaticities_of(const color::ColorSpace& space) {
+  auto f = [](double v) { return static_cast<float>(v); };
+  return {f(space.red.x), f(space.red.y), f(space.green.x), f(space.green.y),
+          f(space.blue.x), f(space.blue.y), f(space.white.x), f(space.white.y)};
+}
+
+// The film's means converted to `space` (one 3×3, with Bradford adaptation between whites).
+ImageRgbF film_image(const Film& film, const color::ColorSpace& film_space, const color::ColorSpace& space) {
+  const Mat3 m = color::conversion_matrix(film_space, space);
+  ImageRgbF image{film.width(), film.height(), std::vector<float>(3 * film.pixel_count())};
+  for (std::size_t i = 0; i < film.pixel_count(); ++i) {
+    const Vec3d v = m * film.mean(i);
+    for (int c = 0; c < 3; ++c) image.rgb[3 * i + c] = static_cast<float>(v[c]);
+  }
+  return image;
+}
+
+void write_outputs(const std::vector<std::filesystem::path>& outputs, const RenderResult& result,
+                   const std::string& scene_name, const RenderSettings& settings, std::uint64_t fingerprint,
+                   const RenderOptions& o) {
+  const color::ColorSpace& working = color::color_space(settings.transport.working_space);
   for (const auto& path : outputs) {
     if (output_format(path) == OutputFormat::exr) {
       ExrMetadata meta;
       meta.strings["prism:version"] = kVersion;
       meta.strings["prism:scene"] = scene_name;
+      meta.strings["prism:transport"] = describe(settings.transport);
       meta.ints["prism:spp"] = result.passes_done;
       meta.doubles["prism:renderSeconds"] = result.elapsed_seconds;
       // What `prism merge` needs to combine partial renders of one image.
       meta.ints["prism:sampleBegin"] = settings.first_sample;
       meta.ints["prism:sampleEnd"] = result.next_sample;
       meta.strings["prism:fingerprint"] = hex(fingerprint);
-      write_exr(path, image, film_chromaticities(), meta);
+      // Pixel values are luminance-scaled: Y = 1 is one nit.
+      const color::ColorSpace& space = o.exr_space == "film" ? result.film_space : working;
+      write_exr(path, film_image(result.film, result.film_space, space), chromaticities_of(space), meta);
     } else {
-      write_png(path, clamp_srgb_encode(image, 8));
+      write_png(path, clamp_srgb_encode(film_image(result.film, result.film_space, color::color_space("srgb")), 8));
     }
   }
 }
@@ -125,6 +150,20 @@ int run_render(const RenderOptions& o) {
   settings.samples_per_pixel = o.spp;
   settings.path.max_depth = o.max_depth;
   settings.path.estimator = parse_estimator(o.estimator);
+  if (o.mode != "spectral" && o.mode != "rgb") throw UsageError(fmt::format("unknown --mode '{}' (spectral, rgb)", o.mode));
+  settings.transport.kind = o.mode == "rgb" ? TransportKind::rgb : TransportKind::spectral;
+  settings.transport.wavelengths = o.wavelengths;
+  settings.transport.wavelength_strategy = color::parse_wavelength_strategy(o.wavelength_sampling);
+  settings.transport.stratify_first_wavelengths = !o.no_wavelength_stratification;
+  if (o.upsampling != "jakob-hanika" && o.upsampling != "mallett-yuksel")
+    throw UsageError(fmt::format("unknown --upsampling '{}' (jakob-hanika, mallett-yuksel)", o.upsampling));
+  settings.transport.upsampling = o.upsampling == "mallett-yuksel" ? Upsampling::mallett_yuksel : Upsampling::jakob_hanika;
+  settings.transport.working_space = color::color_space(o.working_space).name;
+  validate_transport(settings.transport);
+  if (o.samples_per_pass < 0) throw UsageError("--samples-per-pass must be at least 1");
+  settings.samples_per_pass = o.samples_per_pass;
+  if (o.exr_space != "working" && o.exr_space != "film")
+    throw UsageError(fmt::format("unknown --exr-space '{}' (working, film)", o.exr_space));
   settings.seed = o.seed;
   settings.threads = o.threads;
   settings.time_limit_seconds = o.time_limit_seconds;
@@ -184,7 +223,7 @@ int run_render(const RenderOptions& o) {
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
 
-  write_outputs(outputs, result.film, result, scene.name, settings, fingerprint);
+  write_outputs(outputs, result, scene.name, settings, fingerprint, o);
 
   const double samples = static_cast<double>(result.passes_done) * result.film.pixel_count();
   std::vector<std::string> written;
@@ -228,6 +267,28 @@ void add_render_command(CLI::App& root, Action& action) {
                   "Direct-light estimator: mis (NEE + BSDF sampling, power heuristic), nee (light sampling only), "
                   "bsdf (BSDF sampling only); all converge to the same image")
       ->capture_default_str();
+  cmd->add_option("--mode", options->mode,
+                  "Transport: spectral (N wavelengths per path, film in CIE XYZ) or rgb (in --working-space)")
+      ->capture_default_str();
+  cmd->add_option("--wavelengths", options->wavelengths, "Spectral: wavelengths per path, 3, 4 or 8")->capture_default_str();
+  cmd->add_option("--wavelength-sampling", options->wavelength_sampling,
+                  "Spectral: hero (uniform, Wilkie 2014), cosh (Radziszewski 2009) or cosh3 (three cosh lobes)")
+      ->capture_default_str();
+  cmd->add_flag("--no-wavelength-stratification", options->no_wavelength_stratification,
+                "Spectral: draw every sample's wavelengths independently (default: nine strata, the first sample of "
+                "a pixel near 600/535/445 nm)");
+  cmd->add_option("--upsampling", options->upsampling,
+                  "Spectral: reflectance upsampling, jakob-hanika (2019) or mallett-yuksel (2019)")
+      ->capture_default_str();
+  cmd->add_option("--working-space", options->working_space,
+                  "srgb, acescg or rec2020: the RGB transport space, and the space of the EXR output")
+      ->capture_default_str();
+  cmd->add_option("--samples-per-pass", options->samples_per_pass,
+                  "Samples per pixel per pass (default: sized to about 0.5 s); does not change the image");
+  cmd->add_option("--exr-space", options->exr_space,
+                  "EXR pixel space: working (the working space's RGB) or film (CIE XYZ relative to E for spectral "
+                  "renders); chromaticities always say which")
+      ->capture_default_str();
   cmd->add_option("--sample-range", options->sample_range,
                   "Render only sample indices START..END-1 (e.g. 0:32), for splitting one image over several "
                   "machines; combine the EXRs with `prism merge`. Replaces --spp");
@@ -239,6 +300,8 @@ void add_render_command(CLI::App& root, Action& action) {
   cmd->add_option("--resume", options->resume,
                   "Continue from a checkpoint of the same scene and settings up to --spp; the result is identical "
                   "to an uninterrupted render. The checkpoint keeps being updated unless --checkpoint is given");
+  cmd->add_flag("--allow-external-paths", options->allow_external_paths,
+                "Let the scene file refer to files outside its own folder (absolute paths, '..')");
   cmd->callback([options, cmd, &action] {
     options->threads_given = cmd->count("--threads") > 0;
     options->spp_given = cmd->count("--spp") > 0;

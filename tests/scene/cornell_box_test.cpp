@@ -3,7 +3,6 @@
 #include "prism/core/error.h"
 #include "prism/core/pcg32.h"
 #include "prism/scene/builtin_scenes.h"
-#include "prism/scene/light_sampler.h"
 #include "prism/scene/load_scene.h"
 #include "support/chi_square.h"
 
@@ -49,36 +48,6 @@ TEST(LoadScene, ResolvesBuiltinsAndReportsErrors) {
   EXPECT_EQ(load_scene("cornell-box").name, "cornell-box");
   EXPECT_THROW(load_scene("no-such-scene"), UsageError);
   EXPECT_THROW(load_scene("/nonexistent/dir/scene.json"), IoError);
-}
-
-TEST(LightSampler, PointsAreUniformOverTheLight) {
-  // Cornell light: a 130 × 105 mm rectangle at constant y. Histogram sampled (x, z) on a
-  // grid over it; uniform area sampling puts equal mass in every cell.
-  const Scene scene = make_cornell_box();
-  const LightSampler lights(scene);
-  ASSERT_EQ(lights.light_count(), 2u);
-  constexpr int kGrid = 16;
-  constexpr long kSamples = 400'000;
-  std::vector<double> observed(kGrid * kGrid, 0.0), expected(kGrid * kGrid, double(kSamples) / (kGrid * kGrid));
-  Pcg32 rng(5, 6);
-  for (long i = 0; i < kSamples; ++i) {
-    const LightSample s = lights.sample(rng.next_float(), Vec2f(rng.next_float(), rng.next_float()));
-    ASSERT_NEAR(s.pdf_area, 1.0f / (130.0f * 105.0f), 1e-9f);
-    ASSERT_LT(s.normal.y, -0.999f);
-    const int ix = std::clamp(static_cast<int>((s.position.x - 213.0f) / 130.0f * kGrid), 0, kGrid - 1);
-    const int iz = std::clamp(static_cast<int>((s.position.z - 227.0f) / 105.0f * kGrid), 0, kGrid - 1);
-    observed[static_cast<std::size_t>(iz * kGrid + ix)] += 1.0;
-  }
-  const auto r = test::chi_square_test(observed, expected);
-  EXPECT_GT(r.p_value, 1e-3) << r.message;
-}
-
-TEST(LightSampler, PdfOfNonEmitterIsZero) {
-  const Scene scene = make_cornell_box();
-  const LightSampler lights(scene);
-  EXPECT_EQ(lights.pdf_area(0, 0), 0.0f);  // floor
-  const auto light_mesh = static_cast<std::uint32_t>(scene.meshes.size() - 1);
-  EXPECT_NEAR(lights.pdf_area(light_mesh, 1), 1.0f / (130.0f * 105.0f), 1e-9f);
 }
 
 TEST(Scene, ValidationCatchesBadData) {

@@ -21,8 +21,7 @@ class Film {
   int height() const { return height_; }
   std::size_t pixel_count() const { return static_cast<std::size_t>(width_) * height_; }
 
-  void add_sample(std::size_t pixel, const Vec3f& radiance) {
-    const Vec3d v(radiance);
+  void add_sample(std::size_t pixel, const Vec3d& v) {
     sum_[pixel] += v;
     sum_squares_[pixel] += v * v;
     ++count_[pixel];

@@ -1,5 +1,6 @@
 #include "prism/render/renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstring>
 
@@ -9,7 +10,8 @@
 #include "prism/core/parallel.h"
 #include "prism/core/sample_stream.h"
 #include "prism/scene/camera_rays.h"
-#include "prism/scene/emission.h"
+#include "prism/scene/flatten_instances.h"
+#include "prism/scene/light_sampler.h"
 
 namespace prism {
 namespace {
@@ -77,73 +79,67 @@ std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settin
   h.value(settings.path.max_depth);
   h.value(settings.path.russian_roulette_depth);
   h.value(settings.path.estimator);
+  h.value(settings.transport.kind);
+  h.value(settings.transport.wavelengths);
+  h.value(settings.transport.wavelength_strategy);
+  h.value(settings.transport.stratify_first_wavelengths);
+  h.value(settings.transport.upsampling);
+  h.bytes(settings.transport.working_space.data(), settings.transport.working_space.size());
+  for (const auto& l : scene.lights) {
+    h.value(l.type);
+    h.value(l.position);
+    h.value(l.direction);
+    h.value(l.color);
+    h.value(l.intensity);
+  }
   return h.digest();
 }
 
-RenderResult render(const Scene& scene, const RenderSettings& settings, const RenderHooks& hooks,
-                    const ResumeState* resume) {
-  validate_render_settings(settings);
-  validate_scene(scene);
-  const ThreadLimit thread_limit(settings.threads);
+namespace {
+
+template <class Mode>
+void render_passes(const Scene& scene, const RenderSettings& settings, const RenderHooks& hooks, RenderResult& result,
+                   int start_sample) {
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
-
-  RenderResult result;
-  int next_sample = settings.first_sample;
-  if (resume) {
-    if (resume->film.width() != settings.width || resume->film.height() != settings.height)
-      throw UsageError(fmt::format("checkpoint film is {}x{} but the render is {}x{}", resume->film.width(),
-                                   resume->film.height(), settings.width, settings.height));
-    if (resume->next_sample < settings.first_sample || resume->next_sample > settings.samples_per_pixel)
-      throw UsageError(fmt::format("checkpoint ends at sample {}, outside the requested range {}:{}",
-                                   resume->next_sample, settings.first_sample, settings.samples_per_pixel));
-    result.film = resume->film;
-    next_sample = resume->next_sample;
-  } else {
-    result.film = Film(settings.width, settings.height);
-  }
-
   const EmbreeAccel accel(scene);
-  const LightSampler lights(scene);
-  PathContext context{scene, accel, lights, settings.path, {}};
-  for (const Material& m : scene.materials)
-    context.emitted_radiance.emplace_back(emission_radiance_rgb(m.emission, color::color_space("srgb")));
+  const LightSampler lights(scene, scene_bounds(scene));
   const PinholeCamera camera(scene.camera, settings.width, settings.height);
-  std::atomic<std::uint64_t> invalid{0};
+  const ColorContext<Mode> colors(scene, settings.transport);
+  WavefrontIntegrator<Mode> integrator(scene, accel, lights, camera, colors, settings.path, settings.width,
+                                       settings.height, settings.seed, settings.regenerate_paths);
   const auto cancelled = [&hooks] { return hooks.cancel && hooks.cancel->load(std::memory_order_relaxed); };
-  double last_checkpoint = 0.0;
 
+  int next_sample = start_sample;
+  double last_checkpoint = 0.0;
+  int pass_size = settings.samples_per_pass > 0 ? settings.samples_per_pass : 1;
+  constexpr double kTargetPassSeconds = 0.5;
   while (next_sample < settings.samples_per_pixel) {
     if (cancelled()) {
       result.stop_reason = StopReason::cancelled;
       break;
     }
-    const auto sample_index = static_cast<std::uint64_t>(next_sample);
-    parallel_for(static_cast<std::size_t>(settings.height), 1, [&](std::size_t row_begin, std::size_t row_end) {
-      std::uint64_t local_invalid = 0;
-      for (std::size_t y = row_begin; y < row_end; ++y) {
-        for (int x = 0; x < settings.width; ++x) {
-          const std::size_t pixel = y * static_cast<std::size_t>(settings.width) + static_cast<std::size_t>(x);
-          Pcg32 rng = make_sample_stream(settings.seed, pixel, sample_index);
-          const float jitter_x = rng.next_float(), jitter_y = rng.next_float();
-          const Ray ray = camera.generate_ray(static_cast<float>(x) + jitter_x, static_cast<float>(y) + jitter_y);
-          const Vec3f L = trace_path(context, ray, rng);
-          if (is_finite(L)) {
-            result.film.add_sample(pixel, L);
-          } else {
-            ++local_invalid;
-          }
-        }
-      }
-      invalid += local_invalid;
-    });
-    ++next_sample;
+    const int count = std::min(pass_size, settings.samples_per_pixel - next_sample);
+    const double pass_start = elapsed();
+    const PassStatistics stats = integrator.render_samples(result.film, static_cast<std::uint32_t>(next_sample),
+                                                          static_cast<std::uint32_t>(count));
     const double seconds = elapsed();
-    const int passes_this_run = next_sample - (resume ? resume->next_sample : settings.first_sample);
+    result.pass_seconds.push_back(seconds - pass_start);
+    result.pass_samples.push_back(count);
+    result.rays += stats.rays;
+    result.shadow_rays += stats.shadow_rays;
+    result.invalid_samples += stats.invalid_samples;
+    next_sample += count;
+    if (settings.samples_per_pass == 0) {
+      // Grouping samples into passes does not change the image (see wavefront_integrator.h),
+      // so the pass size may follow the measured speed.
+      const double per_sample = (seconds - pass_start) / count;
+      pass_size = std::clamp(static_cast<int>(kTargetPassSeconds / std::max(per_sample, 1e-6)), 1, 64);
+    }
     if (hooks.on_pass) {
-      const double samples = static_cast<double>(passes_this_run) * result.film.pixel_count();
+      const double samples = static_cast<double>(next_sample - start_sample) * result.film.pixel_count();
       hooks.on_pass({next_sample - settings.first_sample, settings.samples_per_pixel - settings.first_sample, seconds,
                      seconds > 0.0 ? samples / seconds : 0.0});
     }
@@ -159,10 +155,48 @@ RenderResult render(const Scene& scene, const RenderSettings& settings, const Re
     }
   }
   result.next_sample = next_sample;
-  result.passes_done = next_sample - settings.first_sample;
-  if (hooks.on_checkpoint) hooks.on_checkpoint(result.film, next_sample);
-  result.elapsed_seconds = elapsed();
-  result.invalid_samples = invalid.load();
+}
+
+}  // namespace
+
+RenderResult render(const Scene& input_scene, const RenderSettings& settings, const RenderHooks& hooks,
+                    const ResumeState* resume) {
+  validate_render_settings(settings);
+  validate_transport(settings.transport);
+  validate_scene(input_scene);
+  const Scene scene = flatten_instances(input_scene);
+  const ThreadLimit thread_limit(settings.threads);
+  const auto start = std::chrono::steady_clock::now();
+
+  RenderResult result;
+  result.film_space = film_color_space(settings.transport);
+  int next_sample = settings.first_sample;
+  if (resume) {
+    if (resume->film.width() != settings.width || resume->film.height() != settings.height)
+      throw UsageError(fmt::format("checkpoint film is {}x{} but the render is {}x{}", resume->film.width(),
+                                   resume->film.height(), settings.width, settings.height));
+    if (resume->next_sample < settings.first_sample || resume->next_sample > settings.samples_per_pixel)
+      throw UsageError(fmt::format("checkpoint ends at sample {}, outside the requested range {}:{}",
+                                   resume->next_sample, settings.first_sample, settings.samples_per_pixel));
+    result.film = resume->film;
+    next_sample = resume->next_sample;
+  } else {
+    result.film = Film(settings.width, settings.height);
+  }
+
+  const TransportSettings& t = settings.transport;
+  if (t.kind == TransportKind::rgb) {
+    render_passes<RgbMode>(scene, settings, hooks, result, next_sample);
+  } else if (t.wavelengths == 3) {
+    render_passes<SpectralMode<3>>(scene, settings, hooks, result, next_sample);
+  } else if (t.wavelengths == 8) {
+    render_passes<SpectralMode<8>>(scene, settings, hooks, result, next_sample);
+  } else {
+    render_passes<SpectralMode<4>>(scene, settings, hooks, result, next_sample);
+  }
+  result.passes_done = result.next_sample - settings.first_sample;
+  if (hooks.on_checkpoint) hooks.on_checkpoint(result.film, result.next_sample);
+  result.elapsed_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }
 

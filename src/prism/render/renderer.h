@@ -1,12 +1,15 @@
 #pragma once
-// Progressive driver: renders whole passes of one sample per pixel until the sample
-// target, the time limit or a cancellation request ends the render.
+// Progressive driver: renders passes (a few samples of every pixel, sized to take about
+// half a second) with the wavefront integrator until the sample target, the time limit or
+// a cancellation request ends the render.
 #include <atomic>
 #include <cstdint>
 #include <functional>
 
+#include "prism/color/color_space.h"
 #include "prism/render/film.h"
-#include "prism/render/path_tracer.h"
+#include "prism/render/transport_mode.h"
+#include "prism/render/wavefront_integrator.h"
 #include "prism/scene/scene.h"
 
 namespace prism {
@@ -21,7 +24,10 @@ struct RenderSettings {
   double time_limit_seconds = 0.0;  // 0: no limit
   std::uint64_t seed = 0;
   int threads = 0;                  // 0: all hardware threads
-  PathTracerSettings path;
+  PathSettings path;
+  TransportSettings transport;
+  int samples_per_pass = 0;         // 0: sized from the measured speed (about 0.5 s a pass)
+  bool regenerate_paths = true;     // off: one wave per sample (for measuring the benefit)
 };
 
 // Validates ranges (sizes, spp, depth, threads); throws UsageError naming the option.
@@ -43,10 +49,14 @@ enum class StopReason { completed, time_limit, cancelled };
 
 struct RenderResult {
   Film film;
+  color::ColorSpace film_space;  // working RGB, or CIE XYZ relative to E for spectral films
   int passes_done = 0;   // passes (samples per pixel) in the film, including resumed ones
   int next_sample = 0;   // the sample index the next pass would render
   double elapsed_seconds = 0.0;
   std::uint64_t invalid_samples = 0;  // NaN/Inf radiance discarded, never written to the film
+  std::uint64_t rays = 0, shadow_rays = 0;
+  std::vector<double> pass_seconds;
+  std::vector<int> pass_samples;
   StopReason stop_reason = StopReason::completed;
 };
 

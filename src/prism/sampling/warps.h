@@ -45,6 +45,33 @@ inline Vec2f sample_uniform_triangle(Vec2f u) {
   return {u.y * su, 1.0f - su};
 }
 
+// Uniform directions in the cone of half-angle acos(cos_max) around +z.
+// 1 − cos θ is sampled directly and sin θ taken from it, so narrow cones (the Sun subtends
+// 0.27°: 1 − cos θmax ≈ 1e-5) keep their full angular resolution instead of the ~200
+// float steps that cos θ has there.
+inline Vec3f sample_uniform_cone(Vec2f u, float cos_max) {
+  const float one_minus_cos = u.x * (1.0f - cos_max);
+  const float cos_theta = 1.0f - one_minus_cos;
+  const float sin_theta = std::sqrt(std::max(0.0f, one_minus_cos * (2.0f - one_minus_cos)));
+  const float phi = 2.0f * std::numbers::pi_v<float> * u.y;
+  return {sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta};
+}
+
+// Solid-angle density of sample_uniform_cone: 1 / (2π (1 − cos θmax)).
+inline float uniform_cone_pdf(float cos_max) {
+  return 1.0f / (2.0f * std::numbers::pi_v<float> * (1.0f - cos_max));
+}
+
+// Uniform direction on the unit sphere: z uniform in [−1, 1] (Archimedes' hat-box
+// theorem), φ uniform. Density 1/(4π).
+inline Vec3f sample_uniform_sphere(Vec2f u) {
+  const float z = 1.0f - 2.0f * u.x;
+  const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+  const float phi = 2.0f * std::numbers::pi_v<float> * u.y;
+  return {r * std::cos(phi), r * std::sin(phi), z};
+}
+inline float uniform_sphere_pdf() { return 0.25f * std::numbers::inv_pi_v<float>; }
+
 // Power heuristic with β = 2 (Veach 1997, eq. 9.13) for one sample from each technique.
 inline float power_heuristic(float pdf_a, float pdf_b) {
   const float a2 = pdf_a * pdf_a, b2 = pdf_b * pdf_b;

@@ -1,5 +1,5 @@
 #pragma once
-// Primary rays of the pinhole camera for a film of a given size.
+// Primary rays of the pinhole or thin-lens camera for a film of a given size.
 #include "prism/core/ray.h"
 #include "prism/core/transform.h"
 #include "prism/scene/scene.h"
@@ -10,12 +10,14 @@ class PinholeCamera {
  public:
   PinholeCamera(const Camera& camera, int width, int height);
   // Ray through film position (x, y) in pixels, (0, 0) the top-left corner of the image.
-  Ray generate_ray(float film_x, float film_y) const;
+  // u_lens picks the point on the lens (thin-lens cameras; ignored by pinholes).
+  Ray generate_ray(float film_x, float film_y, Vec2f u_lens = Vec2f(0.5f, 0.5f)) const;
 
  private:
   Transform camera_to_world_;
   float scale_x_ = 1.0f, scale_y_ = 1.0f;  // tangent of the half-angles
   float inv_width_ = 1.0f, inv_height_ = 1.0f;
+  float aperture_radius_ = 0.0f, focus_distance_ = 1.0f;
 };
 
 }  // namespace prism

@@ -1,47 +1,76 @@
 #pragma once
-// Emissive triangles of a scene and how next-event estimation picks them: a triangle is
-// chosen with probability proportional to its emitted power (area × mean radiance over
-// the channels), then a point uniformly on it.
+// Next-event estimation's view of all emitters: emissive triangles, point, spot and
+// directional lights. One emitter is chosen with probability proportional to an estimate
+// of its emitted power (in lumen-like units), then a point or direction on it. Radiance
+// values come from the transport mode (render/color_context.h) by emitter id; this class
+// only handles geometry and densities.
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "prism/core/bounds.h"
 #include "prism/core/vec.h"
 #include "prism/scene/scene.h"
 
 namespace prism {
 
 struct LightSample {
-  Vec3f position;
-  Vec3f normal;     // unit front-face normal of the emitter
-  Vec3f radiance;   // emitted radiance towards the front side
-  float pdf_area;   // selection probability × 1/area, per unit area
+  Vec3f wi;                 // unit direction from the shading point towards the light
+  float distance = 0.0f;    // to the sampled point; infinity for directional lights
+  float pdf = 0.0f;         // solid-angle density × selection probability; for delta lights the selection probability
+  bool is_delta = false;    // point, spot, and directional lights without angular size
+  std::uint32_t emitter = 0;  // emitter id (materials first, then Scene::lights)
+  float scale = 1.0f;       // multiplies the emitter's spectrum: 1/r² and spot falloff, or sun-disc radiance
+  Vec3f position;           // sampled point (shadow-ray target); unused for directional lights
+  Vec3f normal;             // emitter normal at the point (area lights)
 };
 
 class LightSampler {
  public:
-  explicit LightSampler(const Scene& scene);
+  LightSampler(const Scene& scene, const Bounds3f& world_bounds);
 
-  bool empty() const { return triangles_.empty(); }
-  std::size_t light_count() const { return triangles_.size(); }
+  bool empty() const { return selection_pmf_.empty(); }
+  std::size_t light_count() const { return selection_pmf_.size(); }
 
-  // u_select chooses the triangle, u_point the point on it.
-  LightSample sample(float u_select, Vec2f u_point) const;
+  // u_select picks the emitter, u_point the point or direction on it. Returns nothing when
+  // the chosen emitter cannot light the reference point (it faces away, zero area).
+  std::optional<LightSample> sample(const Vec3f& reference, float u_select, Vec2f u_point) const;
 
-  // Area density with which sample() produces a point on the given triangle, 0 if the
-  // triangle is not emissive.
-  float pdf_area(std::uint32_t mesh, std::uint32_t triangle) const;
+  // Density (solid angle at `reference`, including selection) with which sample() would
+  // choose the point `position` on the given emissive triangle; 0 for non-emitters.
+  float pdf_triangle(std::uint32_t mesh, std::uint32_t triangle, const Vec3f& reference, const Vec3f& position,
+                     float cos_light) const;
+
+  // Directional lights with an angular size are hit by escaping rays: their radiance scale
+  // (for the emitter's spectrum) and the density sample() gives the direction `wi`.
+  struct EscapedHit {
+    std::uint32_t emitter;
+    float scale;
+    float pdf;
+  };
+  std::vector<EscapedHit> escaped(const Vec3f& wi) const;
 
  private:
-  struct EmissiveTriangle {
-    Vec3f p0, e1, e2;
-    Vec3f normal;
-    Vec3f radiance;
-    float area;
+  enum class Kind : std::uint8_t { triangle, point, spot, directional };
+  struct Emitter {
+    Kind kind;
+    std::uint32_t emitter;  // emitter id
+    // triangle
+    Vec3f p0, e1, e2, normal;
+    float area = 0.0f;
+    bool two_sided = false;
+    // point / spot / directional
+    Vec3f position, axis;
+    float cos_inner = 1.0f, cos_outer = 0.0f;
+    float cos_max = 1.0f;          // directional: cosine of the angular radius (1 = delta)
+    float disc_radiance_scale = 1.0f;  // directional with size: L = E / (π sin²θ)
   };
-  std::vector<EmissiveTriangle> triangles_;
-  std::vector<float> cdf_;                    // inclusive, normalised, size = triangles_
-  std::vector<float> pmf_;
-  std::vector<std::int64_t> first_light_of_mesh_;  // -1 for non-emissive meshes
+  std::optional<LightSample> sample_emitter(std::size_t index, const Vec3f& reference, Vec2f u) const;
+
+  std::vector<Emitter> emitters_;
+  std::vector<float> selection_pmf_;
+  std::vector<float> selection_cdf_;
+  std::vector<std::int64_t> first_triangle_of_mesh_;  // -1 for meshes without emission
 };
 
 }  // namespace prism

@@ -1,0 +1,133 @@
+#include "prism/render/color_context.h"
+
+#include "prism/color/chromatic_adaptation.h"
+#include "prism/color/cie_1931.h"
+#include "prism/color/jakob_hanika_table.h"
+#include "prism/color/mallett_yuksel.h"
+#include "prism/scene/emission.h"
+
+namespace prism {
+namespace {
+
+struct EmitterColor {
+  Vec3f color;
+  ColorPickerSpace space;
+  float value;  // nits, candela or lux: the spectrum is normalised the same way
+};
+
+std::vector<EmitterColor> emitter_colors(const Scene& scene) {
+  std::vector<EmitterColor> out;
+  for (const Material& m : scene.materials)
+    out.push_back({m.emission.color, m.emission.color_space, m.is_emissive() ? m.emission.luminance_nits : 0.0f});
+  for (const Light& l : scene.lights) out.push_back({l.color, l.color_space, l.intensity});
+  return out;
+}
+
+}  // namespace
+
+color::ColorSpace film_color_space(const TransportSettings& settings) {
+  if (settings.kind == TransportKind::rgb) return color::color_space(settings.working_space);
+  color::ColorSpace xyz;
+  xyz.name = "xyz-e";
+  xyz.red = {1.0, 0.0};
+  xyz.green = {0.0, 1.0};
+  xyz.blue = {0.0, 0.0};
+  xyz.white = color::kWhiteE;
+  xyz.rgb_to_xyz = xyz.xyz_to_rgb = Mat3::identity();
+  return xyz;
+}
+
+template <int N>
+ColorContext<SpectralMode<N>>::ColorContext(const Scene& scene, const TransportSettings& settings)
+    : settings_(settings) {
+  const color::JakobHanikaTable& table = color::JakobHanikaTable::get("srgb");
+  for (const Material& m : scene.materials) {
+    base_color_jh_.push_back(table.lookup(Vec3d(m.base_color)));
+    base_color_rgb_.emplace_back(m.base_color);
+  }
+  const color::ColorSpace& working = color::color_space(settings.working_space);
+  for (const EmitterColor& e : emitter_colors(scene)) {
+    const Vec3d rgb = color::conversion_matrix(picker_color_space(e.space), working) * Vec3d(e.color);
+    emitters_.push_back(e.value > 0.0f ? color::emission_spectrum(rgb, working, e.value) : color::EmissionSpectrum{});
+  }
+}
+
+template <int N>
+Wavelengths<SpectralMode<N>> ColorContext<SpectralMode<N>>::sample_wavelengths(std::uint64_t sample_index,
+                                                                                Pcg32& rng) const {
+  const double jitter = rng.next_double();
+  const double u = settings_.stratify_first_wavelengths ? color::stratified_wavelength_u(sample_index, jitter) : jitter;
+  return color::sample_wavelengths<N>(settings_.wavelength_strategy, u);
+}
+
+template <int N>
+Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::reflectance(const Vec3f& srgb, const Wavelengths<Mode>& w) const {
+  Spectrum<Mode> s;
+  if (settings_.upsampling == Upsampling::mallett_yuksel) {
+    const color::MallettYukselSpectrum my{Vec3d(srgb)};
+    for (int i = 0; i < N; ++i) s[i] = static_cast<float>(my(w.wavelength_nm[i]));
+  } else {
+    const color::SigmoidPolynomial c = color::JakobHanikaTable::get("srgb").lookup(Vec3d(srgb));
+    for (int i = 0; i < N; ++i) s[i] = static_cast<float>(c(w.wavelength_nm[i]));
+  }
+  return s;
+}
+
+template <int N>
+Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::base_color(std::uint32_t material,
+                                                                     const Wavelengths<Mode>& w) const {
+  Spectrum<Mode> s;
+  if (settings_.upsampling == Upsampling::mallett_yuksel) {
+    const color::MallettYukselSpectrum my(base_color_rgb_[material]);
+    for (int i = 0; i < N; ++i) s[i] = static_cast<float>(my(w.wavelength_nm[i]));
+  } else {
+    const color::SigmoidPolynomial& c = base_color_jh_[material];
+    for (int i = 0; i < N; ++i) s[i] = static_cast<float>(c(w.wavelength_nm[i]));
+  }
+  return s;
+}
+
+template <int N>
+Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::emission(std::uint32_t emitter, const Wavelengths<Mode>& w) const {
+  Spectrum<Mode> s;
+  const color::EmissionSpectrum& e = emitters_[emitter];
+  for (int i = 0; i < N; ++i) s[i] = static_cast<float>(e(w.wavelength_nm[i]));
+  return s;
+}
+
+template <int N>
+Vec3d ColorContext<SpectralMode<N>>::to_film(const Spectrum<Mode>& value, const Wavelengths<Mode>& w) const {
+  // Y in nits: the emission rule scales spectra so that 683 ∫ L ȳ dλ is the luminance.
+  return color::to_xyz(value, w) * color::kMaxLuminousEfficacyLmPerW;
+}
+
+template <int N>
+void ColorContext<SpectralMode<N>>::terminate_secondary(Wavelengths<Mode>& w) {
+  for (int i = 1; i < N; ++i) w.pdf[i] = 0.0f;
+  w.pdf[0] /= static_cast<float>(N);
+}
+
+template class ColorContext<SpectralMode<3>>;
+template class ColorContext<SpectralMode<4>>;
+template class ColorContext<SpectralMode<8>>;
+
+ColorContext<RgbMode>::ColorContext(const Scene& scene, const TransportSettings& settings) {
+  const color::ColorSpace& working = color::color_space(settings.working_space);
+  srgb_to_working_ = color::conversion_matrix(color::color_space("srgb"), working);
+  for (const Material& m : scene.materials) base_colors_.push_back(reflectance(m.base_color, {}));
+  for (const EmitterColor& e : emitter_colors(scene)) {
+    const Vec3d rgb = emission_radiance_rgb(e.color, e.space, e.value, working);
+    Spectrum<Mode> s;
+    for (int i = 0; i < 3; ++i) s[i] = static_cast<float>(rgb[i]);
+    emitters_.push_back(s);
+  }
+}
+
+Spectrum<RgbMode> ColorContext<RgbMode>::reflectance(const Vec3f& srgb, const Wavelengths<Mode>&) const {
+  const Vec3d rgb = srgb_to_working_ * Vec3d(srgb);
+  Spectrum<Mode> s;
+  for (int i = 0; i < 3; ++i) s[i] = static_cast<float>(rgb[i]);
+  return s;
+}
+
+}  // namespace prism

@@ -1,0 +1,78 @@
+#pragma once
+// What the channels of a spectrum sample mean, for each transport mode: how authored
+// colours (sRGB reflectances, emitters in a colour-picker space with a luminance) become
+// per-path spectra, and how a path's radiance becomes film values.
+//   spectral: channels are N sampled wavelengths; reflectances are upsampled (Jakob–Hanika
+//             2019 table of sRGB, or Mallett–Yuksel 2019); emitters follow the emission rule
+//             of color/emission_spectrum.h (E-relative); the film holds 683·XYZ (Y in nits),
+//             relative to illuminant E.
+//   rgb:      channels are the working space's R, G, B; reflectances are converted from
+//             sRGB primaries; emitters from their picker space (Bradford); the film holds
+//             working RGB with Y in nits.
+#include <cstdint>
+#include <vector>
+
+#include "prism/color/color_space.h"
+#include "prism/color/emission_spectrum.h"
+#include "prism/color/sigmoid_polynomial.h"
+#include "prism/core/pcg32.h"
+#include "prism/render/transport_mode.h"
+#include "prism/scene/scene.h"
+
+namespace prism {
+
+// The colour space a film's values are in: for spectral films, CIE XYZ relative to E.
+color::ColorSpace film_color_space(const TransportSettings& settings);
+
+// Emitter ids: materials are [0, materials), non-geometric lights follow.
+inline std::uint32_t light_emitter_id(const Scene& scene, std::size_t light) {
+  return static_cast<std::uint32_t>(scene.materials.size() + light);
+}
+
+template <class Mode>
+class ColorContext;
+
+template <int N>
+class ColorContext<SpectralMode<N>> {
+ public:
+  using Mode = SpectralMode<N>;
+  ColorContext(const Scene& scene, const TransportSettings& settings);
+
+  Wavelengths<Mode> sample_wavelengths(std::uint64_t sample_index, Pcg32& rng) const;
+  Spectrum<Mode> reflectance(const Vec3f& linear_srgb, const Wavelengths<Mode>& w) const;
+  Spectrum<Mode> base_color(std::uint32_t material, const Wavelengths<Mode>& w) const;
+  // Emitted radiance (or intensity / illuminance for delta lights) of an emitter.
+  Spectrum<Mode> emission(std::uint32_t emitter, const Wavelengths<Mode>& w) const;
+  Vec3d to_film(const Spectrum<Mode>& value, const Wavelengths<Mode>& w) const;
+  // Keeps only the hero wavelength after a dispersive event (pbrt-v4's TerminateSecondary):
+  // the other channels' pdfs become 0 and the hero's is divided by N, so the estimator
+  // (1/N) Σ f/p stays unbiased with one wavelength.
+  static void terminate_secondary(Wavelengths<Mode>& w);
+
+ private:
+  TransportSettings settings_;
+  std::vector<color::SigmoidPolynomial> base_color_jh_;
+  std::vector<Vec3d> base_color_rgb_;
+  std::vector<color::EmissionSpectrum> emitters_;
+};
+
+template <>
+class ColorContext<RgbMode> {
+ public:
+  using Mode = RgbMode;
+  ColorContext(const Scene& scene, const TransportSettings& settings);
+
+  Wavelengths<Mode> sample_wavelengths(std::uint64_t, Pcg32&) const { return {}; }
+  Spectrum<Mode> reflectance(const Vec3f& linear_srgb, const Wavelengths<Mode>& w) const;
+  Spectrum<Mode> base_color(std::uint32_t material, const Wavelengths<Mode>&) const { return base_colors_[material]; }
+  Spectrum<Mode> emission(std::uint32_t emitter, const Wavelengths<Mode>&) const { return emitters_[emitter]; }
+  Vec3d to_film(const Spectrum<Mode>& value, const Wavelengths<Mode>&) const { return {value[0], value[1], value[2]}; }
+  static void terminate_secondary(Wavelengths<Mode>&) {}
+
+ private:
+  Mat3 srgb_to_working_;
+  std::vector<Spectrum<Mode>> base_colors_;
+  std::vector<Spectrum<Mode>> emitters_;
+};
+
+}  // namespace prism

@@ -1,0 +1,65 @@
+#pragma once
+// Geometry at a ray hit, as the shading stage needs it.
+#include <algorithm>
+#include <cmath>
+
+#include "prism/accel/embree_accel.h"
+#include "prism/core/frame.h"
+#include "prism/scene/scene.h"
+
+namespace prism {
+
+struct SurfaceInteraction {
+  Vec3f position;
+  Vec3f geometric_normal;  // unit, on the side the ray came from
+  Frame shading;           // around the shading normal, on the same side
+  Vec2f uv;
+  std::uint32_t material = 0;
+  bool front_face = true;        // the ray hit the counter-clockwise (front) side
+  float cos_wo_geometric = 0.0f; // cos between the unflipped front normal and -ray.direction
+};
+
+inline SurfaceInteraction surface_interaction(const Scene& scene, const Hit& hit, const Ray& ray) {
+  const TriangleMesh& mesh = scene.meshes[hit.mesh];
+  const std::uint32_t i0 = mesh.indices[3 * hit.triangle], i1 = mesh.indices[3 * hit.triangle + 1],
+                      i2 = mesh.indices[3 * hit.triangle + 2];
+  const Vec3f& p0 = mesh.positions[i0];
+  const Vec3f& p1 = mesh.positions[i1];
+  const Vec3f& p2 = mesh.positions[i2];
+  const float b0 = 1.0f - hit.u - hit.v;
+  SurfaceInteraction si;
+  si.material = mesh.material;
+  // Position from barycentrics rather than origin + t·direction: it lies on the plane to
+  // float precision, which keeps the self-intersection offset small.
+  si.position = p0 * b0 + p1 * hit.u + p2 * hit.v;
+  const Vec3f ng = normalize(cross(p1 - p0, p2 - p0));
+  si.cos_wo_geometric = -dot(ng, ray.direction);
+  si.front_face = si.cos_wo_geometric > 0.0f;
+  si.geometric_normal = si.front_face ? ng : -ng;
+  Vec3f ns = si.geometric_normal;
+  if (!mesh.normals.empty()) {
+    const Vec3f n = mesh.normals[i0] * b0 + mesh.normals[i1] * hit.u + mesh.normals[i2] * hit.v;
+    const float len = length(n);
+    if (len > 0.0f) {
+      ns = n / len;
+      if (dot(ns, si.geometric_normal) < 0.0f) ns = -ns;  // same side as the geometric normal
+    }
+  }
+  si.shading = Frame::from_normal(ns);
+  if (!mesh.uvs.empty()) {
+    const Vec2f& t0 = mesh.uvs[i0];
+    const Vec2f& t1 = mesh.uvs[i1];
+    const Vec2f& t2 = mesh.uvs[i2];
+    si.uv = Vec2f(t0.x * b0 + t1.x * hit.u + t2.x * hit.v, t0.y * b0 + t1.y * hit.u + t2.y * hit.v);
+  }
+  return si;
+}
+
+// Offsets a ray origin off the surface along the normal, scaled to the coordinates'
+// magnitude so it stays above float rounding (about 2^-23 relative) at any scene scale.
+inline Vec3f offset_ray_origin(const Vec3f& p, const Vec3f& n_towards) {
+  const float magnitude = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 1.0f});
+  return p + n_towards * (magnitude * 1e-5f);
+}
+
+}  // namespace prism

@@ -1,0 +1,281 @@
+#include "prism/render/wavefront_integrator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "prism/core/frame.h"
+#include "prism/core/parallel.h"
+#include "prism/core/sample_stream.h"
+#include "prism/render/surface_bsdf.h"
+#include "prism/render/surface_interaction.h"
+#include "prism/sampling/warps.h"
+
+namespace prism {
+
+template <class Mode>
+struct WavefrontIntegrator<Mode>::Paths {
+  explicit Paths(std::size_t n)
+      : ray(n), throughput(n), radiance(n), wavelengths(n), rng(n), hit(n), hit_found(n), shadow_ray(n),
+        shadow_contribution(n), shadow_pending(n), prev_position(n), prev_pdf(n), prev_specular(n), depth(n),
+        finished(n), sample_index(n), sample_end(n) {}
+  std::vector<Ray> ray;
+  std::vector<Spectrum<Mode>> throughput, radiance;
+  std::vector<Wavelengths<Mode>> wavelengths;
+  std::vector<Pcg32> rng;
+  std::vector<Hit> hit;
+  std::vector<std::uint8_t> hit_found;
+  std::vector<Ray> shadow_ray;
+  std::vector<Spectrum<Mode>> shadow_contribution;
+  std::vector<std::uint8_t> shadow_pending;
+  std::vector<Vec3f> prev_position;
+  std::vector<float> prev_pdf;             // solid-angle pdf of the direction that led here
+  std::vector<std::uint8_t> prev_specular; // that direction came from a delta lobe
+  std::vector<std::int32_t> depth;
+  std::vector<std::uint8_t> finished;
+  std::vector<std::uint32_t> sample_index, sample_end;
+};
+
+template <class Mode>
+WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeAccel& accel, const LightSampler& lights,
+                                               const PinholeCamera& camera, const ColorContext<Mode>& colors,
+                                               const PathSettings& settings, int width, int height, std::uint64_t seed,
+                                               bool regenerate)
+    : scene_(scene), accel_(accel), lights_(lights), camera_(camera), colors_(colors), settings_(settings),
+      width_(width), height_(height), seed_(seed), regenerate_(regenerate) {}
+
+template <class Mode>
+void WavefrontIntegrator<Mode>::generate(Paths& p, std::uint32_t slot, std::uint32_t sample_index) const {
+  Pcg32 rng = make_sample_stream(seed_, slot, sample_index);
+  const float jitter_x = rng.next_float(), jitter_y = rng.next_float();
+  const Vec2f u_lens(rng.next_float(), rng.next_float());
+  p.wavelengths[slot] = colors_.sample_wavelengths(sample_index, rng);
+  const auto x = static_cast<float>(slot % static_cast<std::uint32_t>(width_));
+  const auto y = static_cast<float>(slot / static_cast<std::uint32_t>(width_));
+  p.ray[slot] = camera_.generate_ray(x + jitter_x, y + jitter_y, u_lens);
+  p.rng[slot] = rng;
+  p.throughput[slot] = Spectrum<Mode>(1.0f);
+  p.radiance[slot] = Spectrum<Mode>(0.0f);
+  p.depth[slot] = 0;
+  p.prev_pdf[slot] = 0.0f;
+  p.prev_specular[slot] = 1;  // camera rays see emitters directly, unweighted
+  p.finished[slot] = 0;
+  p.sample_index[slot] = sample_index;
+}
+
+template <class Mode>
+void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
+  p.shadow_pending[slot] = 0;
+  Pcg32& rng = p.rng[slot];
+  Spectrum<Mode>& beta = p.throughput[slot];
+  Spectrum<Mode>& L = p.radiance[slot];
+  const Wavelengths<Mode>& wl = p.wavelengths[slot];
+  const Ray& ray = p.ray[slot];
+  const bool use_nee = settings_.estimator != LightEstimator::bsdf_only && !lights_.empty();
+  const bool weight_bsdf_hits = settings_.estimator == LightEstimator::mis;
+
+  if (!p.hit_found[slot]) {
+    // Escaped: only directional lights with an angular size can be hit.
+    for (const auto& e : lights_.escaped(ray.direction)) {
+      float w = 1.0f;
+      if (!p.prev_specular[slot] && use_nee) w = weight_bsdf_hits ? power_heuristic(p.prev_pdf[slot], e.pdf) : 0.0f;
+      L += beta * colors_.emission(e.emitter, wl) * (e.scale * w);
+    }
+    p.finished[slot] = 1;
+    return;
+  }
+
+  const SurfaceInteraction si = surface_interaction(scene_, p.hit[slot], ray);
+  const Material& material = scene_.materials[si.material];
+  if (material.is_emissive() && (si.front_face || material.emission.two_sided)) {
+    float w = 1.0f;
+    if (!p.prev_specular[slot] && use_nee) {
+      if (weight_bsdf_hits) {
+        const float light_pdf = lights_.pdf_triangle(p.hit[slot].mesh, p.hit[slot].triangle, p.prev_position[slot],
+                                                     si.position, si.cos_wo_geometric);
+        w = power_heuristic(p.prev_pdf[slot], light_pdf);
+      } else {
+        w = 0.0f;  // NEE only: emitters found by BSDF sampling are left to light sampling
+      }
+    }
+    L += beta * colors_.emission(si.material, wl) * w;
+  }
+  if (p.depth[slot] + 1 > settings_.max_depth) {
+    p.finished[slot] = 1;
+    return;
+  }
+
+  const SurfaceBsdf<Mode> bsdf = make_surface_bsdf<Mode>(material, colors_.base_color(si.material, wl));
+  const Vec3f wo_local = si.shading.to_local(-ray.direction);
+
+  if (use_nee && !bsdf.is_specular()) {
+    const float u_select = rng.next_float();
+    const Vec2f u_light(rng.next_float(), rng.next_float());
+    if (const auto ls = lights_.sample(si.position, u_select, u_light)) {
+      const Vec3f wi_local = si.shading.to_local(ls->wi);
+      // Both the geometric and the shading side must agree, or light leaks through edges.
+      if (dot(ls->wi, si.geometric_normal) > 0.0f && wi_local.z > 0.0f) {
+        const Spectrum<Mode> f = bsdf.eval(wo_local, wi_local);
+        if (!f.is_black() && ls->pdf > 0.0f) {
+          float w = 1.0f;
+          if (!ls->is_delta && settings_.estimator == LightEstimator::mis)
+            w = power_heuristic(ls->pdf, bsdf.pdf(wo_local, wi_local));
+          const Vec3f origin = offset_ray_origin(si.position, si.geometric_normal);
+          float t_max;
+          Vec3f dir = ls->wi;
+          if (std::isinf(ls->distance)) {
+            t_max = std::numeric_limits<float>::infinity();
+          } else {
+            const Vec3f target = ls->is_delta ? ls->position : offset_ray_origin(ls->position, -ls->wi);
+            const Vec3f segment = target - origin;
+            const float len = length(segment);
+            dir = segment / len;
+            t_max = len * (1.0f - 1e-4f);
+          }
+          p.shadow_ray[slot] = Ray{origin, dir, 0.0f, t_max};
+          p.shadow_contribution[slot] =
+              beta * f * colors_.emission(ls->emitter, wl) * (wi_local.z * ls->scale * w / ls->pdf);
+          p.shadow_pending[slot] = 1;
+        }
+      }
+    }
+  }
+
+  const float u_lobe = rng.next_float();
+  const Vec2f u_dir(rng.next_float(), rng.next_float());
+  const auto bs = bsdf.sample(wo_local, u_lobe, u_dir);
+  if (!bs || bs->pdf <= 0.0f) {
+    p.finished[slot] = 1;
+    return;
+  }
+  const Vec3f wi = si.shading.to_world(bs->wi);
+  const bool transmits = dot(wi, si.geometric_normal) < 0.0f;
+  if (transmits) {  // reflection-only BSDFs: a shading-normal direction below the surface
+    p.finished[slot] = 1;
+    return;
+  }
+  beta *= bs->f * (std::abs(bs->wi.z) / bs->pdf);
+  p.prev_pdf[slot] = bs->pdf;
+  p.prev_specular[slot] = bs->is_specular;
+  p.prev_position[slot] = si.position;
+  p.depth[slot] += 1;
+
+  // Russian roulette (Arvo & Kirk 1990): survive with probability max throughput,
+  // dividing by it keeps the estimator unbiased.
+  if (p.depth[slot] >= settings_.russian_roulette_depth) {
+    float max_beta = 0.0f;
+    for (int i = 0; i < Mode::kChannels; ++i) max_beta = std::max(max_beta, beta[i]);
+    const float survive = std::min(1.0f, max_beta);
+    if (rng.next_float() >= survive) {
+      p.finished[slot] = 1;
+      return;
+    }
+    beta *= 1.0f / survive;
+  }
+  p.ray[slot] = Ray{offset_ray_origin(si.position, si.geometric_normal), wi};
+}
+
+template <class Mode>
+PassStatistics WavefrontIntegrator<Mode>::render_samples(Film& film, std::uint32_t first_sample, std::uint32_t count) {
+  if (regenerate_) return run_wave(film, first_sample, count);
+  PassStatistics total;
+  for (std::uint32_t s = 0; s < count; ++s) {
+    const PassStatistics wave = run_wave(film, first_sample + s, 1);
+    total.rays += wave.rays;
+    total.shadow_rays += wave.shadow_rays;
+    total.invalid_samples += wave.invalid_samples;
+    total.completed_samples += wave.completed_samples;
+    total.steps += wave.steps;
+    total.live_paths_per_step.insert(total.live_paths_per_step.end(), wave.live_paths_per_step.begin(),
+                                     wave.live_paths_per_step.end());
+  }
+  return total;
+}
+
+template <class Mode>
+PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t first_sample, std::uint32_t count) {
+  const auto slots = static_cast<std::uint32_t>(film.pixel_count());
+  Paths p(slots);
+  std::vector<std::uint32_t> live(slots);
+  for (std::uint32_t s = 0; s < slots; ++s) live[s] = s;
+  parallel_for(slots, 4096, [&](std::size_t b, std::size_t e) {
+    for (std::size_t s = b; s < e; ++s) {
+      generate(p, static_cast<std::uint32_t>(s), first_sample);
+      p.sample_end[s] = first_sample + count;
+    }
+  });
+
+  PassStatistics stats;
+  std::atomic<std::uint64_t> shadow_rays{0}, invalid{0}, completed{0};
+  constexpr std::size_t kGrain = 1024;
+  while (!live.empty()) {
+    stats.live_paths_per_step.push_back(static_cast<std::uint32_t>(live.size()));
+    stats.rays += live.size();
+    ++stats.steps;
+    // Stage 1: closest hits for the whole queue.
+    parallel_for(live.size(), kGrain, [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i) {
+        const std::uint32_t s = live[i];
+        p.hit_found[s] = accel_.intersect(p.ray[s], p.hit[s]);
+      }
+    });
+    // Stage 2: shading emits continuation and shadow rays.
+    parallel_for(live.size(), kGrain, [&](std::size_t b, std::size_t e) {
+      for (std::size_t i = b; i < e; ++i) shade(p, live[i]);
+    });
+    // Stage 3: shadow rays.
+    parallel_for(live.size(), kGrain, [&](std::size_t b, std::size_t e) {
+      std::uint64_t traced = 0;
+      for (std::size_t i = b; i < e; ++i) {
+        const std::uint32_t s = live[i];
+        if (!p.shadow_pending[s]) continue;
+        ++traced;
+        if (!accel_.occluded(p.shadow_ray[s])) p.radiance[s] += p.shadow_contribution[s];
+      }
+      shadow_rays += traced;
+    });
+    // Stage 4: finished paths go to the film; their slot restarts with the pixel's next
+    // sample. Stage 5: compaction of the survivors, in queue order.
+    const std::size_t chunks = (live.size() + kGrain - 1) / kGrain;
+    std::vector<std::vector<std::uint32_t>> survivors(chunks);
+    parallel_for(chunks, 1, [&](std::size_t cb, std::size_t ce) {
+      for (std::size_t c = cb; c < ce; ++c) {
+        std::uint64_t local_invalid = 0, local_completed = 0;
+        const std::size_t end = std::min(live.size(), (c + 1) * kGrain);
+        for (std::size_t i = c * kGrain; i < end; ++i) {
+          const std::uint32_t s = live[i];
+          if (p.finished[s]) {
+            const Vec3d value = colors_.to_film(p.radiance[s], p.wavelengths[s]);
+            if (is_finite(value)) {
+              film.add_sample(s, value);
+            } else {
+              ++local_invalid;  // never written to the film; reported at the end
+            }
+            ++local_completed;
+            if (!regenerate_ || p.sample_index[s] + 1 >= p.sample_end[s]) continue;
+            generate(p, s, p.sample_index[s] + 1);
+          }
+          survivors[c].push_back(s);
+        }
+        invalid += local_invalid;
+        completed += local_completed;
+      }
+    });
+    std::vector<std::uint32_t> next;
+    next.reserve(live.size());
+    for (const auto& v : survivors) next.insert(next.end(), v.begin(), v.end());
+    live.swap(next);
+  }
+  stats.shadow_rays = shadow_rays.load();
+  stats.invalid_samples = invalid.load();
+  stats.completed_samples = completed.load();
+  return stats;
+}
+
+template class WavefrontIntegrator<SpectralMode<3>>;
+template class WavefrontIntegrator<SpectralMode<4>>;
+template class WavefrontIntegrator<SpectralMode<8>>;
+template class WavefrontIntegrator<RgbMode>;
+
+}  // namespace prism

@@ -1,0 +1,74 @@
+#pragma once
+// Wavefront path tracing (Laine, Karras, Aila 2013, "Megakernels Considered Harmful"):
+// path state in structs of arrays, one stage at a time over the queue of live paths —
+// intersect, shade (emission, next-event estimation with MIS, BSDF sampling, Russian
+// roulette), shadow rays, then completion. A finished path is regenerated at once with its
+// pixel's next sample, so the queue stays full and step times stay steady; queues are
+// compacted every step, so only live paths are traced.
+//
+// Determinism: every pixel owns one path slot and renders its samples in order; a
+// sample's random numbers depend only on (seed, pixel, sample index), and the film adds a
+// pixel's samples in sample order. The image is therefore bitwise independent of thread
+// count and scheduling, and of how samples are grouped into passes.
+#include <atomic>
+#include <cstdint>
+#include <vector>
+
+#include "prism/accel/embree_accel.h"
+#include "prism/render/color_context.h"
+#include "prism/render/film.h"
+#include "prism/scene/camera_rays.h"
+#include "prism/scene/light_sampler.h"
+#include "prism/scene/scene.h"
+
+namespace prism {
+
+// How direct light is estimated. All three converge to the same image; mis has the
+// lowest variance. nee_only and bsdf_only exist to test that claim.
+enum class LightEstimator { mis, nee_only, bsdf_only };
+
+struct PathSettings {
+  int max_depth = 8;               // scattering events; 1 = direct lighting only
+  int russian_roulette_depth = 3;  // roulette starts after this many bounces
+  LightEstimator estimator = LightEstimator::mis;
+};
+
+struct PassStatistics {
+  std::uint64_t rays = 0;             // closest-hit rays (camera and continuation)
+  std::uint64_t shadow_rays = 0;
+  std::uint64_t invalid_samples = 0;  // NaN/Inf radiance discarded
+  std::uint64_t completed_samples = 0;
+  int steps = 0;
+  std::vector<std::uint32_t> live_paths_per_step;
+};
+
+template <class Mode>
+class WavefrontIntegrator {
+ public:
+  WavefrontIntegrator(const Scene& scene, const EmbreeAccel& accel, const LightSampler& lights,
+                      const PinholeCamera& camera, const ColorContext<Mode>& colors, const PathSettings& settings,
+                      int width, int height, std::uint64_t seed, bool regenerate = true);
+
+  // Renders samples [first_sample, first_sample + count) of every pixel into `film`.
+  // With regeneration off, each of the `count` samples is a separate wave (for measuring
+  // what regeneration buys).
+  PassStatistics render_samples(Film& film, std::uint32_t first_sample, std::uint32_t count);
+
+ private:
+  struct Paths;  // structure of arrays, one slot per pixel
+  void generate(Paths& paths, std::uint32_t slot, std::uint32_t sample_index) const;
+  void shade(Paths& paths, std::uint32_t slot) const;
+  PassStatistics run_wave(Film& film, std::uint32_t first_sample, std::uint32_t count);
+
+  const Scene& scene_;
+  const EmbreeAccel& accel_;
+  const LightSampler& lights_;
+  const PinholeCamera& camera_;
+  const ColorContext<Mode>& colors_;
+  PathSettings settings_;
+  int width_, height_;
+  std::uint64_t seed_;
+  bool regenerate_;
+};
+
+}  // namespace prism

@@ -1,0 +1,177 @@
+// Light sampling: uniform points on area lights with the right solid-angle density,
+// delta lights, spot falloff, sun discs, and selection proportional to power.
+#include "prism/scene/light_sampler.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "prism/core/frame.h"
+#include "prism/core/pcg32.h"
+#include "prism/scene/builtin_scenes.h"
+#include "prism/scene/flatten_instances.h"
+#include "support/chi_square.h"
+
+namespace prism {
+namespace {
+
+constexpr double kAlphaTotal = 0.01;  // Šidák-corrected over this file's chi-square tests
+constexpr int kChiSquareTests = 3;
+
+TEST(LightSampler, AreaLightPointsAreUniformWithSolidAngleDensity) {
+  // Cornell light: a 130 × 105 mm rectangle at constant y, seen from the floor below it.
+  const Scene scene = make_cornell_box();
+  const LightSampler lights(scene, scene_bounds(scene));
+  ASSERT_EQ(lights.light_count(), 2u);
+  const Vec3f reference(278.0f, 0.0f, 279.0f);
+  constexpr int kGrid = 16;
+  constexpr long kSamples = 400'000;
+  std::vector<double> observed(kGrid * kGrid, 0.0), expected(kGrid * kGrid, double(kSamples) / (kGrid * kGrid));
+  Pcg32 rng(5, 6);
+  for (long i = 0; i < kSamples; ++i) {
+    const auto s = lights.sample(reference, rng.next_float(), Vec2f(rng.next_float(), rng.next_float()));
+    ASSERT_TRUE(s.has_value());
+    ASSERT_FALSE(s->is_delta);
+    ASSERT_LT(s->normal.y, -0.999f);
+    // p_ω = r² / (cos θ_light · A_total): both triangles are chosen in proportion to area.
+    const float d2 = length_squared(s->position - reference);
+    const float cos_light = -dot(s->normal, s->wi);
+    ASSERT_NEAR(s->pdf, d2 / (cos_light * 130.0f * 105.0f), 1e-4f * s->pdf);
+    const int ix = std::clamp(static_cast<int>((s->position.x - 213.0f) / 130.0f * kGrid), 0, kGrid - 1);
+    const int iz = std::clamp(static_cast<int>((s->position.z - 227.0f) / 105.0f * kGrid), 0, kGrid - 1);
+    observed[static_cast<std::size_t>(iz * kGrid + ix)] += 1.0;
+  }
+  const auto r = test::chi_square_test(observed, expected);
+  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+}
+
+TEST(LightSampler, TrianglePdfMatchesSampling) {
+  const Scene scene = make_cornell_box();
+  const LightSampler lights(scene, scene_bounds(scene));
+  const auto light_mesh = static_cast<std::uint32_t>(scene.meshes.size() - 1);
+  const Vec3f reference(100.0f, 50.0f, 300.0f), on_light(278.0f, 548.3f, 279.0f);
+  const Vec3f wi = normalize(on_light - reference);
+  const float cos_light = -dot(Vec3f(0, -1, 0), wi);
+  const float expected = length_squared(on_light - reference) / (cos_light * 130.0f * 105.0f);
+  EXPECT_NEAR(lights.pdf_triangle(light_mesh, 1, reference, on_light, cos_light), expected, 1e-4f * expected);
+  EXPECT_EQ(lights.pdf_triangle(0, 0, reference, on_light, cos_light), 0.0f);  // the floor emits nothing
+  // Above the light (behind its emitting side) nothing can be sampled.
+  EXPECT_FALSE(lights.sample(Vec3f(278, 600, 279), 0.5f, Vec2f(0.5f, 0.5f)).has_value());
+}
+
+Scene scene_with(const Light& light) {
+  Scene scene = make_cornell_box();
+  scene.materials.back().emission.luminance_nits = 0.0f;  // only the test light emits
+  scene.lights.push_back(light);
+  return scene;
+}
+
+TEST(LightSampler, PointLightIsDeltaWithInverseSquareFalloff) {
+  Light point;
+  point.type = LightType::point;
+  point.position = Vec3f(200, 400, 200);
+  point.intensity = 100.0f;
+  const Scene scene = scene_with(point);
+  const LightSampler lights(scene, scene_bounds(scene));
+  ASSERT_EQ(lights.light_count(), 1u);
+  const Vec3f reference(200, 0, 200);
+  const auto s = lights.sample(reference, 0.3f, Vec2f(0.1f, 0.9f));
+  ASSERT_TRUE(s.has_value());
+  EXPECT_TRUE(s->is_delta);
+  EXPECT_FLOAT_EQ(s->pdf, 1.0f);
+  EXPECT_FLOAT_EQ(s->distance, 400.0f);
+  EXPECT_FLOAT_EQ(s->scale, 1.0f / (400.0f * 400.0f));
+  EXPECT_EQ(s->emitter, static_cast<std::uint32_t>(scene.materials.size()));
+}
+
+TEST(LightSampler, SpotLightFallsOffBetweenItsCones) {
+  Light spot;
+  spot.type = LightType::spot;
+  spot.position = Vec3f(0, 100, 0);
+  spot.direction = Vec3f(0, -1, 0);
+  spot.spot_inner_angle_degrees = 20.0f;
+  spot.spot_outer_angle_degrees = 40.0f;
+  const Scene scene = scene_with(spot);
+  const LightSampler lights(scene, scene_bounds(scene));
+  const auto at_angle = [&](float degrees) {
+    const float t = std::tan(degrees * std::numbers::pi_v<float> / 180.0f);
+    return lights.sample(Vec3f(100.0f * t, 0, 0), 0.5f, Vec2f(0.5f, 0.5f));
+  };
+  const auto inside = at_angle(10.0f);
+  ASSERT_TRUE(inside.has_value());
+  EXPECT_NEAR(inside->scale * length_squared(inside->position - Vec3f(100.0f * std::tan(10.0f * std::numbers::pi_v<float> / 180.0f), 0, 0)), 1.0f, 1e-4f);
+  const auto middle = at_angle(30.0f);
+  ASSERT_TRUE(middle.has_value());
+  const float d2 = length_squared(middle->position - Vec3f(100.0f * std::tan(30.0f * std::numbers::pi_v<float> / 180.0f), 0, 0));
+  EXPECT_GT(middle->scale * d2, 0.0f);
+  EXPECT_LT(middle->scale * d2, 1.0f);
+  EXPECT_FALSE(at_angle(50.0f).has_value());
+}
+
+TEST(LightSampler, SunDiscDirectionsAreUniformInTheCone) {
+  Light sun;
+  sun.type = LightType::directional;
+  sun.direction = normalize(Vec3f(0.3f, -1.0f, 0.2f));
+  sun.angular_diameter_degrees = 20.0f;  // large, so the histogram resolves the cone
+  sun.intensity = 1000.0f;
+  const Scene scene = scene_with(sun);
+  const LightSampler lights(scene, scene_bounds(scene));
+  const float cos_max = std::cos(10.0f * std::numbers::pi_v<float> / 180.0f);
+  // Uniform in the cone ⇔ (1 − cos θ)/(1 − cos θmax) and φ/2π uniform on [0, 1)² in the
+  // cone's own frame (the pdf is constant inside and the map is measure-preserving), so
+  // histogram those: no bin straddles the cone's edge.
+  const Frame frame = Frame::from_normal(-sun.direction);
+  constexpr int kGrid = 20;
+  constexpr long kSamples = 400'000;
+  std::vector<double> observed(kGrid * kGrid, 0.0), expected(kGrid * kGrid, double(kSamples) / (kGrid * kGrid));
+  Pcg32 rng(3, 8);
+  for (long i = 0; i < kSamples; ++i) {
+    const auto s = lights.sample(Vec3f(0.0f), rng.next_float(), Vec2f(rng.next_float(), rng.next_float()));
+    ASSERT_TRUE(s.has_value());
+    ASSERT_NEAR(s->pdf, 1.0f / (2.0f * std::numbers::pi_v<float> * (1.0f - cos_max)), 1e-3f);
+    const Vec3f d = frame.to_local(s->wi);
+    ASSERT_GE(d.z, cos_max - 1e-5f);
+    double phi = std::atan2(double(d.y), double(d.x));
+    if (phi < 0.0) phi += 2.0 * std::numbers::pi;
+    const int a = std::clamp(static_cast<int>((1.0 - d.z) / (1.0 - cos_max) * kGrid), 0, kGrid - 1);
+    const int b = std::clamp(static_cast<int>(phi / (2.0 * std::numbers::pi) * kGrid), 0, kGrid - 1);
+    observed[static_cast<std::size_t>(a * kGrid + b)] += 1.0;
+  }
+  const auto r = test::chi_square_test(observed, expected);
+  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+  // Escaping rays inside the disc see radiance E / (π sin²θ) with the sampling density.
+  const auto hits = lights.escaped(-sun.direction);
+  ASSERT_EQ(hits.size(), 1u);
+  EXPECT_NEAR(hits[0].scale, 1.0f / (std::numbers::pi_v<float> * (1.0f - cos_max * cos_max)), 1e-6f);
+  EXPECT_TRUE(lights.escaped(sun.direction).empty());
+}
+
+TEST(LightSampler, SelectionIsProportionalToPower) {
+  // Cornell light (Φ = π L A) and a point light (Φ = 4π I) chosen in proportion.
+  Scene scene = make_cornell_box();
+  Light point;
+  point.type = LightType::point;
+  point.position = Vec3f(100, 300, 100);
+  point.intensity = 5000.0f;
+  scene.lights.push_back(point);
+  const LightSampler lights(scene, scene_bounds(scene));
+  const double area_power = std::numbers::pi * scene.materials.back().emission.luminance_nits * 130.0 * 105.0;
+  const double point_power = 4.0 * std::numbers::pi * 5000.0;
+  const double p_point = point_power / (area_power + point_power);
+  constexpr long kSamples = 200'000;
+  std::vector<double> observed(2, 0.0);
+  Pcg32 rng(1, 9);
+  const auto point_id = static_cast<std::uint32_t>(scene.materials.size());
+  for (long i = 0; i < kSamples; ++i) {
+    const auto s = lights.sample(Vec3f(278, 10, 279), rng.next_float(), Vec2f(rng.next_float(), rng.next_float()));
+    ASSERT_TRUE(s.has_value());
+    observed[s->emitter == point_id ? 1 : 0] += 1.0;
+  }
+  const std::vector<double> expected = {kSamples * (1.0 - p_point), kSamples * p_point};
+  const auto r = test::chi_square_test(observed, expected);
+  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+}
+
+}  // namespace
+}  // namespace prism

@@ -8,7 +8,8 @@ packages=(
   libembree-dev libtbb-dev libopenexr-dev libpng-dev libstb-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  libopencolorio-dev  # test oracle for the ACES display transforms (issue 6)
+  libopencolorio-dev  # ACES oracle in tests; `--ocio-config` display path (issue 6)
+  libavif-dev         # AVIF HDR output (issue 6)
 )
 
 missing=()

@@ -74,6 +74,28 @@ expect_usage_error o8.png "$work/in.exr" --encoding scrgb
 expect_usage_error o9.tiff "$work/in.exr"
 expect_usage_error o10.png "$work/in.exr" --ev100 1 --auto-exposure
 
+# Issue 6, second round: bloom, display primaries, render scale, views, overlay, AVIF.
+expect_ok bloom.png --bloom 0.5 --bloom-threshold-space rgb --ev100 0
+expect_ok adobe.png --display-primaries adobe-rgb
+expect_ok custom.png --odt rec2020-pq-1000nit --display-primaries 0.68,0.32,0.265,0.69,0.15,0.06,0.3127,0.329
+expect_ok up.png --render-scale 0.5
+[ "$(od -An -tu4 --endian=big -j16 -N4 "$work/up.png" | tr -d ' ')" = 48 ] || fail "--render-scale 0.5 did not double the width"
+for v in luminance luminance-display chromaticity gamut-clip; do expect_ok "view-$v.png" --view "$v"; done
+expect_ok split.png --view sdr-hdr-split --odt rec2020-pq-1000nit --sdr-white 200
+expect_ok hdr.avif --odt rec2020-pq-1000nit --bit-depth 12
+expect_usage_error o11.png "$work/in.exr" --display-primaries 0.2,0.2,0.3,0.3,0.4,0.4,0.3127,0.329
+expect_usage_error o12.png "$work/in.exr" --display-primaries 0.8,0.3,0.21,0.71,0.15,0.06,0.3127,0.329
+expect_usage_error o13.png "$work/in.exr" --bloom 3
+expect_usage_error o14.png "$work/in.exr" --bloom-threshold-space lab
+expect_usage_error o15.png "$work/in.exr" --render-scale 0
+expect_usage_error o16.png "$work/in.exr" --view normal
+expect_usage_error o17.png "$work/in.exr" --view heatmap
+expect_usage_error o18.png "$work/in.exr" --view sdr-hdr-split
+expect_usage_error o19.avif "$work/in.exr" --bit-depth 8
+expect_usage_error o20.png "$work/in.exr" --overlay "$work/missing.png"
+expect_usage_error o21.png "$work/in.exr" --ui-nits 1000
+expect_usage_error o22.png "$work/in.exr" --ocio-config "$work/missing.ocio" --display sRGB --view Standard
+
 if [ "$failures" -ne 0 ]; then
   echo "$failures failure(s)" >&2
   exit 1

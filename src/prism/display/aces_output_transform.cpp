@@ -76,50 +76,60 @@ AcesOutputTransform::AcesOutputTransform(OdtId id, bool stretch_black)
   xyz_to_display_ = display.xyz_to_rgb;
   limit_xyz_to_rgb_ = display.xyz_to_rgb;
   limit_rgb_to_xyz_ = display.rgb_to_xyz;
-  ap0_to_display_ = color::conversion_matrix(color::color_space("aces2065-1"), display, color::Cat::bradford);
+  ap1_to_display_ = color::conversion_matrix(color::color_space("acescg"), display, color::Cat::bradford);
   if (desc_->hdr) ts_ = make_output_ts_params(desc_->y_min_nits, desc_->y_mid_nits, desc_->white_nits);
 }
 
 Vec3d AcesOutputTransform::display_nits(const Vec3d& aces) const {
-  if (desc_->id == OdtId::none) return (ap0_to_display_ * aces) * desc_->white_nits;
-  return desc_->hdr ? hdr(aces) : sdr(aces);
+  return display_nits_from_normalized(normalized_ap1(aces), desc_->white_nits);
 }
 
-// RRT, then the SDR video ODT: C9 tone scale to cinema luminance, normalised to linear
-// code, dim-surround gamma, desaturation 0.93, AP1 → XYZ, Bradford to D65, display
-// primaries, clamp to [0, 1]; the display shows code 1 at 100 nits and 0 at 0 nits.
-Vec3d AcesOutputTransform::sdr(const Vec3d& aces) const {
+Vec3d AcesOutputTransform::normalized_ap1(const Vec3d& aces) const {
   const AcesMatrices& m = aces_matrices();
-  const Vec3d pre = m.ap0_to_ap1 * aces_rrt(aces);
+  if (desc_->id == OdtId::none) return m.ap0_to_ap1 * aces;
   Vec3d cv;
+  if (desc_->hdr) {
+    // ACESlib.OutputTransforms.ctl outputTransform(): RRT sweeteners, SSTS per channel,
+    // Y_2_linCV.
+    const double y_min = desc_->y_min_nits, y_max = desc_->white_nits;
+    const Vec3d pre = rrt_sweeteners(aces);
+    for (int c = 0; c < 3; ++c) cv[c] = (ssts(pre[c], ts_) - y_min) / (y_max - y_min);
+    return cv;
+  }
+  // RRT, then the SDR video ODT: C9 tone scale to cinema luminance, normalised to linear
+  // code, dim-surround gamma, desaturation 0.93.
+  const Vec3d pre = m.ap0_to_ap1 * aces_rrt(aces);
   for (int c = 0; c < 3; ++c)
     cv[c] = (segmented_spline_c9_fwd(pre[c]) - kCinemaBlack) / (kCinemaWhite - kCinemaBlack);
   cv = dark_to_dim_surround(cv);
   static const Mat3 kDesat = saturation_matrix(kOdtSatFactor, m.ap1_luminance);
-  Vec3d rgb = xyz_to_display_ * (m.d60_to_d65 * (m.ap1_to_xyz * (kDesat * cv)));
-  for (int c = 0; c < 3; ++c) rgb[c] = std::clamp(rgb[c], 0.0, 1.0) * desc_->white_nits;
-  return rgb;
+  return kDesat * cv;
 }
 
-// ACESlib.OutputTransforms.ctl outputTransform() for a dark surround, no D60 simulation,
-// full range, limiting primaries equal to the display primaries.
-Vec3d AcesOutputTransform::hdr(const Vec3d& aces) const {
+Vec3d AcesOutputTransform::display_nits_from_normalized(const Vec3d& cv, double peak) const {
   const AcesMatrices& m = aces_matrices();
-  const double y_min = desc_->y_min_nits, y_max = desc_->white_nits;
-  const Vec3d pre = rrt_sweeteners(aces);
-  Vec3d cv;
-  for (int c = 0; c < 3; ++c) cv[c] = (ssts(pre[c], ts_) - y_min) / (y_max - y_min);
-  Vec3d XYZ = m.ap1_to_xyz * cv;
-  // limit_to_primaries: clip to [0, 1] in the limiting primaries (applied, as in the CTL,
-  // to XYZ that is still relative to the ACES white).
-  Vec3d limited = limit_xyz_to_rgb_ * XYZ;
-  for (int c = 0; c < 3; ++c) limited[c] = std::clamp(limited[c], 0.0, 1.0);
-  XYZ = m.d60_to_d65 * (limit_rgb_to_xyz_ * limited);
-  Vec3d rgb = xyz_to_display_ * XYZ;
+  if (desc_->id == OdtId::none) return (ap1_to_display_ * cv) * peak;
+  // The clips below limit *light* to the display's peak: 1 at the ODT's own peak, larger
+  // when an overlay lowers the pixel's normalisation peak toward the UI luminance.
+  const double limit = desc_->white_nits / peak;
+  if (!desc_->hdr) {
+    // SDR: AP1 → XYZ, Bradford to D65, display primaries, clamp to [0, 1]; code 1 shows at
+    // the peak, 0 at 0 nits.
+    Vec3d rgb = xyz_to_display_ * (m.d60_to_d65 * (m.ap1_to_xyz * cv));
+    for (int c = 0; c < 3; ++c) rgb[c] = std::clamp(rgb[c], 0.0, limit) * peak;
+    return rgb;
+  }
+  // HDR, no D60 simulation, full range, limiting primaries = display primaries:
+  // limit_to_primaries clips to [0, 1] in the limiting primaries (applied, as in the CTL, to
+  // XYZ that is still relative to the ACES white), then Bradford D60→D65.
+  Vec3d limited = limit_xyz_to_rgb_ * (m.ap1_to_xyz * cv);
+  for (int c = 0; c < 3; ++c) limited[c] = std::clamp(limited[c], 0.0, limit);
+  Vec3d rgb = xyz_to_display_ * (m.d60_to_d65 * (limit_rgb_to_xyz_ * limited));
+  const double y_min = desc_->y_min_nits;
   for (int c = 0; c < 3; ++c) {
     const double v = std::max(rgb[c], 0.0);
     // linCV_2_Y with Y_MIN = 0 (stretched black) or the display's Y_MIN.
-    rgb[c] = stretch_black_ ? v * y_max : v * (y_max - y_min) + y_min;
+    rgb[c] = stretch_black_ ? v * peak : v * (peak - y_min) + y_min;
   }
   return rgb;
 }

@@ -50,19 +50,27 @@ class AcesOutputTransform {
   // than Y_MIN. The Academy's ST 2084 transforms ship with it on.
   explicit AcesOutputTransform(OdtId id, bool stretch_black = true);
 
-  // ACES2065-1 → display-linear RGB (display primaries), nits.
+  // ACES2065-1 → display-linear RGB (display primaries), nits. Equal to
+  // display_nits_from_normalized(normalized_ap1(aces), peak).
   Vec3d display_nits(const Vec3d& aces) const;
+
+  // The two halves of display_nits, split at the ODT's normalised linear code in AP1 (SDR:
+  // after the C9 tone scale, dim-surround gamma and desaturation, 1.0 = display white; HDR:
+  // (SSTS − Y_MIN)/(Y_MAX − Y_MIN); none: ACES in AP1, 1.0 = 80 nits). Overlays and the
+  // render-scale upscale work at this step.
+  Vec3d normalized_ap1(const Vec3d& aces) const;
+  // Limit/clamp in the display primaries, to display RGB, × peak_nits (the ODT's peak, or a
+  // per-pixel peak moved toward the UI luminance by an overlay).
+  Vec3d display_nits_from_normalized(const Vec3d& cv_ap1, double peak_nits) const;
   const OdtDescription& description() const { return *desc_; }
 
  private:
-  Vec3d sdr(const Vec3d& aces) const;
-  Vec3d hdr(const Vec3d& aces) const;
 
   const OdtDescription* desc_;
   bool stretch_black_;
   Mat3 xyz_to_display_;      // XYZ (D65) → display RGB
   Mat3 limit_xyz_to_rgb_, limit_rgb_to_xyz_;  // limiting primaries (= display primaries)
-  Mat3 ap0_to_display_;      // for `none`
+  Mat3 ap1_to_display_;      // for `none`: Bradford ACES white → display white
   TsParams ts_{};
 };
 

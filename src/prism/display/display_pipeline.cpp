@@ -1,5 +1,6 @@
 #include "prism/display/display_pipeline.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -8,6 +9,8 @@
 #include "prism/color/chromatic_adaptation.h"
 #include "prism/core/error.h"
 #include "prism/display/blue_light_lmt.h"
+#include "prism/display/display_primaries.h"
+#include "prism/display/resampling.h"
 #include "prism/display/dither.h"
 #include "prism/display/exposure.h"
 
@@ -28,38 +31,82 @@ Mat3 film_to_aces_matrix(const color::ColorSpace& film_space, double blue_correc
   return blue_correction_matrix(blue_correction) * to_ap0;
 }
 
-DisplayImage apply_display_pipeline(const ImageRgbF& film, const color::ColorSpace& film_space,
+DisplayImage apply_display_pipeline(const ImageRgbF& film_in, const color::ColorSpace& film_space,
                                     const DisplaySettings& s) {
   const OdtDescription& odt = odt_description(s.odt);
   DisplayImage out;
-  out.width = film.width;
-  out.height = film.height;
   out.encoding = s.encoding.value_or(odt.default_encoding);
   out.white_nits = odt.white_nits;
-  out.exposure_scale = exposure_scale(s, film, film_space);
-  // scRGB is defined on Rec.709 primaries; every other encoding keeps the ODT's.
-  const bool to_rec709 = out.encoding == DisplayEncoding::scrgb && odt.display_space != "srgb";
-  out.primaries = to_rec709 ? "srgb" : std::string(odt.display_space);
-  const Mat3 display_to_output =
-      to_rec709 ? color::conversion_matrix(color::color_space(odt.display_space), color::color_space("srgb"))
-                : Mat3::identity();
+  out.y_max_nits = odt.white_nits;
+  out.exposure_scale = exposure_scale(s, film_in, film_space);
+  out.width = upscaled_size(film_in.width, s.render_scale);
+  out.height = upscaled_size(film_in.height, s.render_scale);
+  if (s.overlay && (s.overlay->width != out.width || s.overlay->height != out.height))
+    throw UsageError("the overlay is " + std::to_string(s.overlay->width) + "x" + std::to_string(s.overlay->height) +
+                     " but the output is " + std::to_string(out.width) + "x" + std::to_string(out.height));
+  if (s.display_primaries && out.encoding == DisplayEncoding::scrgb)
+    throw UsageError("scRGB is defined on Rec.709 primaries: --display-primaries needs another encoding");
 
+  // Primaries of the output: the user's display, Rec.709 for scRGB, else the ODT's.
+  const color::ColorSpace& odt_space = color::color_space(odt.display_space);
+  const bool to_rec709 = out.encoding == DisplayEncoding::scrgb && odt.display_space != "srgb";
+  Mat3 display_to_output = Mat3::identity();
+  if (s.display_primaries) {
+    out.primaries = s.display_primaries->name;
+    display_to_output = gamut_remap_matrix(odt_space, *s.display_primaries);
+  } else {
+    out.primaries = to_rec709 ? "srgb" : std::string(odt.display_space);
+    if (to_rec709) display_to_output = color::conversion_matrix(odt_space, color::color_space("srgb"));
+  }
+
+  // Exposure (and bloom, which thresholds exposed values) in the film's space.
   Mat3 to_aces = film_to_aces_matrix(film_space, s.blue_correction);
-  for (auto& row : to_aces.m)
-    for (double& v : row) v *= out.exposure_scale;
+  const ImageRgbF* film = &film_in;
+  ImageRgbF exposed;
+  if (s.bloom.strength > 0.0) {
+    exposed = film_in;
+    for (float& v : exposed.rgb) v = std::isfinite(v) ? static_cast<float>(v * out.exposure_scale) : 0.0f;
+    exposed = apply_bloom(exposed, s.bloom);
+    film = &exposed;
+  } else {
+    for (auto& row : to_aces.m)
+      for (double& v : row) v *= out.exposure_scale;
+  }
   const AcesOutputTransform transform(s.odt, s.stretch_black.value_or(true));
 
-  const std::size_t n = static_cast<std::size_t>(film.width) * film.height;
+  // RRT + ODT up to the normalised AP1 step, at the render size.
+  const std::size_t n_in = static_cast<std::size_t>(film->width) * film->height;
+  ImageRgbF cv{film->width, film->height, std::vector<float>(3 * n_in)};
+  tbb::parallel_for(std::size_t{0}, n_in, [&](std::size_t i) {
+    Vec3d rgb{film->rgb[3 * i], film->rgb[3 * i + 1], film->rgb[3 * i + 2]};
+    for (int c = 0; c < 3; ++c)
+      if (!std::isfinite(rgb[c])) rgb[c] = 0.0;  // NaN/inf samples show as black, not as noise
+    const Vec3d v = transform.normalized_ap1(to_aces * rgb);
+    for (int c = 0; c < 3; ++c) cv.rgb[3 * i + c] = static_cast<float>(v[c]);
+  });
+  if (out.width != cv.width || out.height != cv.height) cv = upscale_bilinear(cv, out.width, out.height);
+
+  // Overlay, display light, gamut remap, encoding — at the output size.
+  const std::size_t n = static_cast<std::size_t>(out.width) * out.height;
+  const double remap_peak = odt.white_nits;
   out.code.resize(3 * n);
   out.nits.resize(3 * n);
   tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-    Vec3d rgb{film.rgb[3 * i], film.rgb[3 * i + 1], film.rgb[3 * i + 2]};
-    for (int c = 0; c < 3; ++c)
-      if (!std::isfinite(rgb[c])) rgb[c] = 0.0;  // NaN/inf samples show as black, not as noise
-    const Vec3d nits = display_to_output * transform.display_nits(to_aces * rgb);
-    for (int c = 0; c < 3; ++c) {
-      out.nits[3 * i + c] = static_cast<float>(nits[c]);
-      out.code[3 * i + c] = static_cast<float>(encode_display_nits(out.encoding, nits[c], out.white_nits));
+    Vec3d c{cv.rgb[3 * i], cv.rgb[3 * i + 1], cv.rgb[3 * i + 2]};
+    double peak = odt.white_nits;
+    if (s.overlay) {
+      const UiOverlay& o = *s.overlay;
+      const Vec3d ui{o.ap1[3 * i], o.ap1[3 * i + 1], o.ap1[3 * i + 2]};
+      const UiComposite comp = composite_ui(c, ui, o.alpha[i], odt.white_nits, o.ui_nits, o.blend_power);
+      c = comp.cv_ap1;
+      peak = comp.peak_nits;
+    }
+    Vec3d nits = display_to_output * transform.display_nits_from_normalized(c, peak);
+    if (s.display_primaries)
+      for (int k = 0; k < 3; ++k) nits[k] = std::clamp(nits[k], 0.0, remap_peak);
+    for (int k = 0; k < 3; ++k) {
+      out.nits[3 * i + k] = static_cast<float>(nits[k]);
+      out.code[3 * i + k] = static_cast<float>(encode_display_nits(out.encoding, nits[k], out.white_nits));
     }
   });
   return out;

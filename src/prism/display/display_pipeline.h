@@ -1,7 +1,8 @@
 #pragma once
-// The display pipeline on a whole image: exposure → to ACES2065-1 (one 3×3 with Bradford
-// adaptation) → blue-light LMT → ACES Output Transform (RRT + ODT) → encoding → optional
-// quantisation with dither. Settings are a plain struct that the CLI, scene files and the
+// The display pipeline on a whole image: exposure → bloom → to ACES2065-1 (one 3×3 with
+// Bradford adaptation) → blue-light LMT → ACES RRT + ODT up to its normalised AP1 step →
+// render-scale upscale → overlay/UI → display light → gamut remap to the user's display →
+// encoding → optional quantisation with dither. Settings are a plain struct that the CLI, scene files and the
 // viewer fill the same way. See docs/display-pipeline.md.
 #include <cstdint>
 #include <optional>
@@ -10,6 +11,8 @@
 
 #include "prism/color/color_space.h"
 #include "prism/display/aces_output_transform.h"
+#include "prism/display/bloom.h"
+#include "prism/display/ui_overlay.h"
 #include "prism/display/display_encoding.h"
 #include "prism/io/image.h"
 
@@ -25,6 +28,13 @@ struct DisplaySettings {
   std::optional<DisplayEncoding> encoding;      // default: the ODT's own
   std::optional<bool> stretch_black;            // default: the Academy's (on)
   std::uint64_t dither_seed = 0x70726973;       // "pris"
+  BloomSettings bloom;                          // strength 0: off
+  // The user's display (--display-primaries): remap the ODT's output to it. None: the ODT's.
+  std::optional<color::ColorSpace> display_primaries;
+  // The film was rendered at this fraction of the output size (--render-scale); the
+  // displayed image is upscaled bilinearly to round(size / render_scale).
+  double render_scale = 1.0;
+  std::optional<UiOverlay> overlay;             // composited at the output size
 };
 
 // What the display shows, before quantisation.
@@ -36,6 +46,7 @@ struct DisplayImage {
   std::string primaries;     // prism::color name of the output RGB primaries
   double white_nits = 100;   // light of code 1 for relative encodings; ODT peak otherwise
   double exposure_scale = 1; // factor applied to the input
+  double y_max_nits = 100;   // the ODT's peak (before any gamut remap)
 };
 
 // The exposure factor the settings ask for on this image (1 when none). Validates.

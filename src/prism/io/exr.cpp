@@ -9,6 +9,7 @@
 #include <ImfOutputFile.h>
 #include <ImfStandardAttributes.h>
 #include <ImfStringAttribute.h>
+#include <Imath/half.h>
 #include <fmt/format.h>
 
 #include <exception>
@@ -19,37 +20,56 @@
 namespace prism {
 namespace {
 
-Imf::FrameBuffer rgb_frame_buffer(float* base, int width, int min_x, int min_y) {
+Imf::FrameBuffer rgb_frame_buffer(float* base, int width, int min_x, int min_y,
+                                  const char* const (&names)[3] = {"R", "G", "B"}) {
   // OpenEXR addresses pixels by absolute data-window coordinates: shift the base pointer.
   const std::size_t x_stride = 3 * sizeof(float), y_stride = x_stride * static_cast<std::size_t>(width);
   char* origin = reinterpret_cast<char*>(base) - static_cast<std::ptrdiff_t>(min_x) * static_cast<std::ptrdiff_t>(x_stride) -
                  static_cast<std::ptrdiff_t>(min_y) * static_cast<std::ptrdiff_t>(y_stride);
   Imf::FrameBuffer fb;
-  const char* names[3] = {"R", "G", "B"};
   for (int c = 0; c < 3; ++c)
     fb.insert(names[c], Imf::Slice(Imf::FLOAT, origin + c * sizeof(float), x_stride, y_stride, 1, 1, 0.0));
+  return fb;
+}
+
+// The same for half-float pixels (written only; pixels start at (0, 0)).
+Imf::FrameBuffer rgb_half_frame_buffer(half* base, int width) {
+  const std::size_t x_stride = 3 * sizeof(half), y_stride = x_stride * static_cast<std::size_t>(width);
+  Imf::FrameBuffer fb;
+  const char* names[3] = {"R", "G", "B"};
+  for (int c = 0; c < 3; ++c)
+    fb.insert(names[c], Imf::Slice(Imf::HALF, reinterpret_cast<char*>(base) + c * sizeof(half), x_stride, y_stride));
   return fb;
 }
 
 }  // namespace
 
 void write_exr(const std::filesystem::path& path, const ImageRgbF& image, const ExrChromaticities& c,
-               const ExrMetadata& metadata) {
+               const ExrMetadata& metadata, const ExrWriteOptions& options) {
   if (image.width <= 0 || image.height <= 0 || image.rgb.size() != 3u * image.width * image.height)
     throw IoError(fmt::format("cannot write '{}': image has inconsistent size", path.string()));
   AtomicFile file(path);
   try {
     Imf::Header header(image.width, image.height);
     header.compression() = Imf::ZIP_COMPRESSION;
-    for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+    const bool as_half = options.pixel_type == ExrPixelType::half;
+    for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(as_half ? Imf::HALF : Imf::FLOAT));
     Imf::addChromaticities(header, Imf::Chromaticities(Imath::V2f(c.red_x, c.red_y), Imath::V2f(c.green_x, c.green_y),
                                                        Imath::V2f(c.blue_x, c.blue_y), Imath::V2f(c.white_x, c.white_y)));
     for (const auto& [k, v] : metadata.strings) header.insert(k, Imf::StringAttribute(v));
     for (const auto& [k, v] : metadata.ints) header.insert(k, Imf::IntAttribute(v));
     for (const auto& [k, v] : metadata.doubles) header.insert(k, Imf::DoubleAttribute(v));
-    std::vector<float> pixels = image.rgb;
+    if (options.white_luminance_nits) Imf::addWhiteLuminance(header, static_cast<float>(*options.white_luminance_nits));
+    std::vector<float> pixels;
+    std::vector<half> half_pixels;
     Imf::OutputFile out(file.temporary_path().c_str(), header);
-    out.setFrameBuffer(rgb_frame_buffer(pixels.data(), image.width, 0, 0));
+    if (as_half) {
+      half_pixels.assign(image.rgb.begin(), image.rgb.end());
+      out.setFrameBuffer(rgb_half_frame_buffer(half_pixels.data(), image.width));
+    } else {
+      pixels = image.rgb;
+      out.setFrameBuffer(rgb_frame_buffer(pixels.data(), image.width, 0, 0));
+    }
     out.writePixels(image.height);
   } catch (const std::exception& e) {
     throw IoError(fmt::format("cannot write '{}': {}", path.string(), e.what()));
@@ -89,6 +109,27 @@ ExrFile read_exr(const std::filesystem::path& path) {
     throw IoError(fmt::format("cannot read '{}': {}", path.string(), e.what()));
   }
   return result;
+}
+
+std::optional<ImageRgbF> read_exr_vector_layer(const std::filesystem::path& path, const std::string& name) {
+  try {
+    Imf::InputFile in(path.c_str());
+    const Imf::Header& header = in.header();
+    const std::string x = name + ".x", y = name + ".y", z = name + ".z";
+    const char* const names[3] = {x.c_str(), y.c_str(), z.c_str()};
+    for (const char* n : names)
+      if (header.channels().findChannel(n) == nullptr) return std::nullopt;
+    const Imath::Box2i dw = header.dataWindow();
+    ImageRgbF layer;
+    layer.width = dw.max.x - dw.min.x + 1;
+    layer.height = dw.max.y - dw.min.y + 1;
+    layer.rgb.assign(3u * layer.width * layer.height, 0.0f);
+    in.setFrameBuffer(rgb_frame_buffer(layer.rgb.data(), layer.width, dw.min.x, dw.min.y, names));
+    in.readPixels(dw.min.y, dw.max.y);
+    return layer;
+  } catch (const std::exception& e) {
+    throw IoError(fmt::format("cannot read '{}': {}", path.string(), e.what()));
+  }
 }
 
 }  // namespace prism

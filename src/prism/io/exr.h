@@ -3,6 +3,7 @@
 // Prism's own metadata.
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "prism/io/image.h"
@@ -20,9 +21,18 @@ struct ExrMetadata {
   std::map<std::string, double> doubles;
 };
 
+enum class ExrPixelType { float32, half };
+
+struct ExrWriteOptions {
+  ExrPixelType pixel_type = ExrPixelType::float32;  // half: values beyond ±65504 become ±inf
+  // The standard `whiteLuminance` attribute: nits of RGB (1, 1, 1) (e.g. 80 for scRGB).
+  std::optional<double> white_luminance_nits;
+};
+
 // Writes atomically (temporary file + rename). Throws IoError.
 void write_exr(const std::filesystem::path& path, const ImageRgbF& image,
-               const ExrChromaticities& chromaticities, const ExrMetadata& metadata = {});
+               const ExrChromaticities& chromaticities, const ExrMetadata& metadata = {},
+               const ExrWriteOptions& options = {});
 
 struct ExrFile {
   ImageRgbF image;
@@ -33,5 +43,9 @@ struct ExrFile {
 
 // Reads R, G, B channels (missing channels read as 0). Throws IoError on any failure.
 ExrFile read_exr(const std::filesystem::path& path);
+
+// The layer `name`.x, `name`.y, `name`.z of an EXR (e.g. the shading-normal AOV "N") as a
+// three-channel image, or nothing when the file lacks any of the three. Throws IoError.
+std::optional<ImageRgbF> read_exr_vector_layer(const std::filesystem::path& path, const std::string& name);
 
 }  // namespace prism

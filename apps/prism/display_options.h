@@ -1,0 +1,58 @@
+#pragma once
+// The display options shared by `prism tonemap` and `prism render` (issue 6): one struct the
+// command line fills, turned into display::DisplaySettings, and one call that writes a
+// display-referred output file (PNG, AVIF or scRGB EXR, or a debug view) from scene-linear
+// film. See docs/display-pipeline.md.
+#include <CLI/CLI.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "prism/color/color_space.h"
+#include "prism/display/display_pipeline.h"
+#include "prism/io/image.h"
+
+namespace prism::cli {
+
+struct DisplayCliOptions {
+  std::string odt = "srgb-100nit", encoding;
+  std::optional<double> ev100, f_number, shutter_s, iso;
+  bool auto_exposure = false;
+  double key = 0.18, blue_correction = 0.0;
+  bool stretch_black = false, no_stretch_black = false;
+  int bit_depth = 0;  // 0: 16 for PNG (the input is float), 10 for AVIF
+  std::optional<double> mastering_max_nits, mastering_min_nits, max_cll, max_fall;
+  std::uint64_t dither_seed = 0x70726973;
+  double bloom = 0.0, bloom_threshold = 1.0;
+  std::string bloom_threshold_space = "hsv";
+  std::string display_primaries;
+  double render_scale = 1.0;
+  std::string view;           // debug view, or the OCIO view with --ocio-config/--display
+  double sdr_white_nits = 200.0;
+  std::string overlay;
+  double ui_nits = 200.0, ui_blend_power = 5.0;
+  std::string ocio_config, ocio_display, ocio_input_space;
+};
+
+// Adds --odt, --encoding, exposure, --bloom…, --display-primaries, --render-scale, --view,
+// --overlay/--ui-nits, --ocio-config/--display, HDR10 metadata, --bit-depth, --dither-seed.
+void add_display_options(CLI::App* cmd, DisplayCliOptions& options);
+
+// Validates and converts (reads the overlay PNG). Throws UsageError.
+display::DisplaySettings make_display_settings(const DisplayCliOptions& options);
+
+// Everything about `output` and the options that can be checked before any work: extension,
+// option combinations, writability. Throws UsageError / IoError.
+void validate_display_output(const std::filesystem::path& output, const DisplayCliOptions& options);
+
+// Runs the display pipeline (or the OCIO path, or a debug view) on scene-linear `film` in
+// `film_space` and writes `output` (.png, .avif or .exr by extension). `normals`: the N
+// AOV for --view normal. `output_size`: the displayed size when the film was rendered at
+// --render-scale of it (default: round(film size / render scale)).
+void write_display_output(const std::filesystem::path& output, const ImageRgbF& film,
+                          const color::ColorSpace& film_space, const DisplayCliOptions& options,
+                          const std::optional<ImageRgbF>& normals = std::nullopt);
+
+}  // namespace prism::cli

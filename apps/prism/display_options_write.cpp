@@ -1,0 +1,173 @@
+// Writing a display-referred output (PNG, AVIF, scRGB EXR) or a debug view from scene-linear
+// film, for `prism tonemap` and `prism render`. Declared in display_options.h.
+#include <cctype>
+#include <cmath>
+
+#include "display_options.h"
+#include "prism/core/error.h"
+#include "prism/display/chromaticity_diagram.h"
+#include "prism/display/debug_views.h"
+#include "prism/display/luminance_view.h"
+#include "prism/display/ocio_display.h"
+#include "prism/io/atomic_file.h"
+#include "prism/io/avif.h"
+#include "prism/io/exr_scrgb.h"
+#include "prism/io/png.h"
+#include "prism/io/png_hdr.h"
+
+namespace prism::cli {
+namespace {
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+bool ocio_mode(const DisplayCliOptions& o) { return !o.ocio_config.empty() || !o.ocio_display.empty(); }
+
+display::DebugView debug_view(const DisplayCliOptions& o) {
+  return o.view.empty() || ocio_mode(o) ? display::DebugView::none : display::parse_debug_view(o.view);
+}
+
+// H.273 colour primaries of a space (0 when it has no code point, e.g. Adobe RGB).
+std::uint8_t cicp_primaries(const color::ColorSpace& space) {
+  const auto same = [&](const char* name) {
+    const color::ColorSpace& k = color::color_space(name);
+    const auto eq = [](color::Chromaticity a, color::Chromaticity b) { return std::fabs(a.x - b.x) + std::fabs(a.y - b.y) < 1e-4; };
+    return eq(k.red, space.red) && eq(k.green, space.green) && eq(k.blue, space.blue) && eq(k.white, space.white);
+  };
+  if (same("srgb")) return 1;
+  if (same("rec2020")) return 9;
+  if (same("display-p3")) return 12;
+  return 0;
+}
+
+std::uint8_t cicp_transfer(display::DisplayEncoding e) {
+  switch (e) {
+    case display::DisplayEncoding::pq: return 16;
+    case display::DisplayEncoding::bt1886: return 1;
+    default: return 13;
+  }
+}
+
+display::DisplayEncoding output_encoding(const std::string& ext, const display::DisplaySettings& s) {
+  return s.encoding.value_or(ext == ".exr" ? display::DisplayEncoding::scrgb
+                                           : display::odt_description(s.odt).default_encoding);
+}
+
+void write_png_view(const std::filesystem::path& out, const display::Canvas& canvas) {
+  write_png(out, display::canvas_to_srgb8(canvas), PngWriteOptions{true});
+}
+
+void write_shown(const std::filesystem::path& out, const std::string& ext, const display::DisplayImage& shown,
+                 const display::DisplaySettings& s, const DisplayCliOptions& o) {
+  if (ext == ".exr") {
+    write_exr_scrgb(out, ImageRgbF{shown.width, shown.height, shown.code});
+    return;
+  }
+  const color::ColorSpace primaries = color::parse_color_space(shown.primaries);
+  const std::uint8_t cp = cicp_primaries(primaries);
+  if (ext == ".avif") {
+    // AVIF needs a CICP triple; primaries without a code point are "unspecified" (2).
+    write_avif(out, display::quantise_display_image(shown, o.bit_depth ? o.bit_depth : 10, s.dither_seed),
+               CicpInfo{cp ? cp : std::uint8_t{2}, cicp_transfer(shown.encoding), 0, 1});
+    return;
+  }
+  PngColorMetadata meta;
+  if (cp == 1 && shown.encoding == display::DisplayEncoding::srgb) meta.srgb_chunk = true;
+  else if (cp != 0) meta.cicp = CicpInfo{cp, cicp_transfer(shown.encoding), 0, 1};
+  if (shown.encoding == display::DisplayEncoding::pq) {
+    const display::OdtDescription& odt = display::odt_description(s.odt);
+    const color::ColorSpace& p = primaries;
+    meta.mastering_display = MasteringDisplay{p.red.x, p.red.y, p.green.x, p.green.y, p.blue.x, p.blue.y,
+                                              p.white.x, p.white.y, o.mastering_max_nits.value_or(shown.white_nits),
+                                              o.mastering_min_nits.value_or(odt.hdr ? odt.y_min_nits : 0.0001)};
+    ContentLightLevel cll = content_light_level(shown.nits);
+    if (o.max_cll) cll.max_cll_nits = *o.max_cll;
+    if (o.max_fall) cll.max_fall_nits = *o.max_fall;
+    meta.content_light_level = cll;
+  }
+  write_png_with_color_metadata(out, display::quantise_display_image(shown, o.bit_depth ? o.bit_depth : 16, s.dither_seed),
+                                meta);
+}
+
+}  // namespace
+
+void validate_display_output(const std::filesystem::path& out, const DisplayCliOptions& o) {
+  const std::string ext = lower_extension(out);
+  if (ext != ".png" && ext != ".exr" && ext != ".avif")
+    throw UsageError("output '" + out.string() + "' must end in .png, .avif or .exr");
+  const display::DisplaySettings s = make_display_settings(o);
+  const display::DebugView view = debug_view(o);
+  const display::DisplayEncoding enc = output_encoding(ext, s);
+  if (ocio_mode(o) && ext != ".png") throw UsageError("the OCIO path writes PNG only");
+  if (view != display::DebugView::none && view != display::DebugView::gamut_clip &&
+      view != display::DebugView::sdr_hdr_split && ext != ".png")
+    throw UsageError("--view " + o.view + " writes a PNG");
+  if (ext == ".exr" && enc != display::DisplayEncoding::scrgb)
+    throw UsageError("EXR output holds linear scRGB: use --encoding scrgb or a .png/.avif output");
+  if (ext != ".exr" && enc == display::DisplayEncoding::scrgb)
+    throw UsageError("scRGB is floating point: write it to an .exr output");
+  if (ext == ".png" && o.bit_depth != 0 && o.bit_depth != 8 && o.bit_depth != 16)
+    throw UsageError("--bit-depth must be 8 or 16 for PNG");
+  if (ext == ".avif" && o.bit_depth != 0 && o.bit_depth != 10 && o.bit_depth != 12)
+    throw UsageError("--bit-depth must be 10 or 12 for AVIF");
+  if (view == display::DebugView::sdr_hdr_split && !display::odt_description(s.odt).hdr)
+    throw UsageError("the sdr-hdr-split view needs an HDR ODT (e.g. rec2020-pq-1000nit)");
+  check_writable_output(out);
+}
+
+void write_display_output(const std::filesystem::path& out, const ImageRgbF& film, const color::ColorSpace& film_space,
+                          const DisplayCliOptions& o, const std::optional<ImageRgbF>& normals) {
+  validate_display_output(out, o);
+  const std::string ext = lower_extension(out);
+  const display::DisplaySettings s = make_display_settings(o);
+  if (ocio_mode(o)) {
+    const display::OcioDisplaySettings ocio{o.ocio_config, o.ocio_display, o.view, o.ocio_input_space};
+    const display::DisplayImage shown = display::apply_ocio_display(film, display::exposure_scale(s, film, film_space), ocio);
+    write_png(out, display::quantise_display_image(shown, o.bit_depth ? o.bit_depth : 16, s.dither_seed),
+              PngWriteOptions{false});
+    return;
+  }
+  switch (debug_view(o)) {
+    case display::DebugView::normal: {
+      if (!normals) throw UsageError("--view normal needs a shading-normal AOV (N.x, N.y, N.z channels) in the input");
+      display::Canvas canvas(normals->width, normals->height, {0, 0, 0});
+      canvas.image = display::normal_view(*normals);
+      write_png(out, display::canvas_to_srgb8(canvas), PngWriteOptions{false});
+      return;
+    }
+    case display::DebugView::luminance: {
+      const std::vector<float> y = display::luminance_nits(film.rgb, film_space);
+      write_png_view(out, display::luminance_false_colour_view(y, film.width, film.height, display::luminance_scale_for(y)));
+      return;
+    }
+    case display::DebugView::luminance_display: {
+      const display::DisplayImage shown = display::apply_display_pipeline(film, film_space, s);
+      const std::vector<float> y = display::luminance_nits(shown.nits, color::parse_color_space(shown.primaries));
+      write_png_view(out, display::luminance_false_colour_view(y, shown.width, shown.height, display::luminance_scale_for(y)));
+      return;
+    }
+    case display::DebugView::chromaticity: {
+      const display::OdtDescription& odt = display::odt_description(s.odt);
+      const color::ColorSpace shown_space = s.display_primaries ? *s.display_primaries : color::color_space(odt.display_space);
+      write_png_view(out, display::chromaticity_diagram(film, film_space, shown_space));
+      return;
+    }
+    case display::DebugView::gamut_clip: {
+      display::DisplayImage shown = display::apply_display_pipeline(film, film_space, s);
+      display::mark_gamut_clip(shown);
+      write_shown(out, ext, shown, s, o);
+      return;
+    }
+    case display::DebugView::sdr_hdr_split:
+      write_shown(out, ext, display::sdr_hdr_split_view(film, film_space, s, o.sdr_white_nits), s, o);
+      return;
+    case display::DebugView::none:
+      write_shown(out, ext, display::apply_display_pipeline(film, film_space, s), s, o);
+      return;
+  }
+}
+
+}  // namespace prism::cli

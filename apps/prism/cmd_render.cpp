@@ -177,7 +177,7 @@ int run_render(const RenderOptions& o) {
   for (const auto& n : names) outputs.emplace_back(n);
   // Check everything that can be checked before spending time on the render.
   for (const auto& p : outputs) output_format(p);
-  const Scene scene = load_scene(o.scene);
+  const Scene scene = load_scene(o.scene, LoadOptions{.allow_external_paths = o.allow_external_paths});
   if (o.outputs.empty()) outputs = {scene.name + ".exr", scene.name + ".png"};
   for (const auto& p : outputs) check_writable_output(p);
   settings.width = o.width > 0 ? o.width : scene.default_width;

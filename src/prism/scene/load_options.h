@@ -1,0 +1,15 @@
+#pragma once
+// What every scene loader may and may not do with the files a scene refers to.
+namespace prism {
+
+struct LoadOptions {
+  // Scene files may only refer to files inside their own folder (or below it). A
+  // reference that escapes it (`../../etc/passwd`, an absolute path, a symbolic link
+  // leading out) is refused unless this is set (`--allow-external-paths`).
+  bool allow_external_paths = false;
+  // Images wider or taller than this many pixels are refused before any pixel memory is
+  // allocated.
+  int max_texture_dimension = 32768;
+};
+
+}  // namespace prism

@@ -1,0 +1,152 @@
+// prism-scene/1: materials and the textures they refer to.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "prism/scene/emission.h"
+#include "prism/scene/loaders/json_scene_reader.h"
+#include "prism/scene/loaders/path_safety.h"
+
+namespace prism::loaders {
+namespace {
+
+// Sellmeier coefficients (B1, B2, B3, C1, C2, C3 with C in µm²) of the glasses a scene may
+// name, from the SCHOTT (N-BK7) and Malitson 1965 (fused silica) fits; see data/SOURCES.md.
+struct NamedGlass {
+  std::string_view name;
+  std::array<float, 6> sellmeier;
+};
+constexpr NamedGlass kGlasses[] = {
+    {"N-BK7", {1.03961212f, 0.231792344f, 1.01046945f, 0.00600069867f, 0.0200179144f, 103.560653f}},
+    {"fused-silica", {0.6961663f, 0.4079426f, 0.8974794f, 0.00467914825849f, 0.01351206307396f, 97.934002537921f}},
+};
+
+// Index of refraction at the helium d line (587.56 nm), the usual n_d.
+float ior_at_d_line(DispersionModel model, const std::array<float, 6>& c) {
+  const double l2 = 0.58756 * 0.58756;  // µm²
+  if (model == DispersionModel::cauchy) return static_cast<float>(c[0] + c[1] / l2);
+  double n2 = 1.0;
+  for (int i = 0; i < 3; ++i) n2 += c[i] * l2 / (l2 - c[3 + i]);
+  return static_cast<float>(std::sqrt(std::max(n2, 1.0)));
+}
+
+void read_dispersion(Material& m, const JsonValue& value) {
+  if (value.is_string()) {
+    const std::string name = value.as_string();
+    for (const auto& glass : kGlasses)
+      if (glass.name == name) {
+        m.dispersion = DispersionModel::sellmeier;
+        m.dispersion_coefficients = glass.sellmeier;
+        m.ior = ior_at_d_line(m.dispersion, m.dispersion_coefficients);
+        return;
+      }
+    value.fail(fmt::format("unknown glass '{}' (known: N-BK7, fused-silica)", name));
+  }
+  value.expect_keys({"model", "coefficients"});
+  m.dispersion = value["model"].as_enum<DispersionModel>(
+      {{"none", DispersionModel::none}, {"cauchy", DispersionModel::cauchy}, {"sellmeier", DispersionModel::sellmeier}});
+  if (m.dispersion == DispersionModel::none) return;
+  const std::size_t count = m.dispersion == DispersionModel::cauchy ? 2 : 6;
+  const JsonValue coefficients = value["coefficients"];
+  const auto c = coefficients.elements(count);
+  if (c.size() != count) coefficients.fail(fmt::format("expected {} coefficients", count));
+  m.dispersion_coefficients = {};
+  for (std::size_t i = 0; i < count; ++i) m.dispersion_coefficients[i] = c[i].as_float(-1e6f, 1e6f);
+  m.ior = ior_at_d_line(m.dispersion, m.dispersion_coefficients);
+  if (!(m.ior >= 1.0f && m.ior < 10.0f)) coefficients.fail(fmt::format("gives n_d = {}, outside [1, 10)", m.ior));
+}
+
+void read_emission(JsonSceneReader& reader, Material& m, std::uint32_t index, const JsonValue& value) {
+  value.expect_keys({"color", "color_space", "luminance_nits", "power_lm", "two_sided", "texture"});
+  Emission& e = m.emission;
+  e.color = value.get_vec3("color", Vec3f(1.0f));
+  if (min(e.color, Vec3f(0.0f)) != Vec3f(0.0f)) value["color"].fail("colour components must not be negative");
+  if (auto s = value.find("color_space"))
+    e.color_space = s->as_enum<ColorPickerSpace>(
+        {{"srgb", ColorPickerSpace::srgb}, {"acescg", ColorPickerSpace::acescg}, {"rec2020", ColorPickerSpace::rec2020}});
+  e.two_sided = value.get_bool("two_sided", false);
+  if (value.has("luminance_nits") == value.has("power_lm"))
+    value.fail("give exactly one of 'luminance_nits' and 'power_lm'");
+  if (auto l = value.find("luminance_nits")) e.luminance_nits = l->as_float(0.0f, 1e12f);
+  if (auto p = value.find("power_lm")) reader.emission_power_lm[index] = p->as_float(0.0f, 1e15f);
+  if (auto t = value.find("texture")) e.texture = reader.read_texture(*t, TextureEncoding::srgb);
+}
+
+}  // namespace
+
+std::filesystem::path JsonSceneReader::resolve(const JsonValue& file_name) const {
+  return resolve_scene_reference(scene_dir, file_name.as_string(), options.allow_external_paths,
+                                 fmt::format("{}: {}", document.source, file_name.path()));
+}
+
+int JsonSceneReader::read_texture(const JsonValue& value, TextureEncoding default_encoding) {
+  if (value.is_string()) return textures.load(resolve(value), default_encoding);
+  value.expect_keys({"file", "encoding", "wrap", "wrap_u", "wrap_v"});
+  const auto wrap_mode = [](const JsonValue& w) {
+    return w.as_enum<TextureWrap>(
+        {{"repeat", TextureWrap::repeat}, {"clamp", TextureWrap::clamp}, {"mirror", TextureWrap::mirror}});
+  };
+  TextureWrap wrap_u = TextureWrap::repeat, wrap_v = TextureWrap::repeat;
+  if (auto w = value.find("wrap")) wrap_u = wrap_v = wrap_mode(*w);
+  if (auto w = value.find("wrap_u")) wrap_u = wrap_mode(*w);
+  if (auto w = value.find("wrap_v")) wrap_v = wrap_mode(*w);
+  TextureEncoding encoding = default_encoding;
+  if (auto e = value.find("encoding"))
+    encoding = e->as_enum<TextureEncoding>({{"srgb", TextureEncoding::srgb}, {"linear", TextureEncoding::linear}});
+  return textures.load(resolve(value["file"]), encoding, wrap_u, wrap_v);
+}
+
+std::uint32_t JsonSceneReader::material_index(const JsonValue& name) const {
+  const std::string n = name.as_string();
+  const auto it = material_indices.find(n);
+  if (it == material_indices.end()) name.fail(fmt::format("no material named '{}'", n));
+  return it->second;
+}
+
+void JsonSceneReader::read_material(const JsonValue& value) {
+  value.expect_keys({"name", "type", "base_color", "base_color_texture", "roughness", "anisotropy", "metallic",
+                     "metallic_roughness_texture", "microfacet", "conductor", "ior", "dispersion", "thin_walled",
+                     "transmission", "alpha_mode", "alpha_cutoff", "opacity", "emission"});
+  Material m;
+  m.name = value["name"].as_string();
+  if (material_indices.contains(m.name)) value["name"].fail(fmt::format("material '{}' is defined twice", m.name));
+  m.type = value["type"].as_enum<MaterialType>({{"diffuse", MaterialType::diffuse},
+                                                {"mirror", MaterialType::mirror},
+                                                {"conductor", MaterialType::conductor},
+                                                {"dielectric", MaterialType::dielectric},
+                                                {"metallic_roughness", MaterialType::metallic_roughness}});
+  m.base_color = value.get_vec3("base_color", m.base_color);
+  if (min(m.base_color, Vec3f(0.0f)) != Vec3f(0.0f)) value["base_color"].fail("colour components must not be negative");
+  if (auto t = value.find("base_color_texture")) m.base_color_texture = read_texture(*t, TextureEncoding::srgb);
+  m.roughness = value.get_float("roughness", m.roughness, 0.0f, 1.0f);
+  m.anisotropy = value.get_float("anisotropy", m.anisotropy, -1.0f, 1.0f);
+  m.metallic = value.get_float("metallic", m.metallic, 0.0f, 1.0f);
+  if (auto t = value.find("metallic_roughness_texture"))
+    m.metallic_roughness_texture = read_texture(*t, TextureEncoding::linear);
+  if (auto mf = value.find("microfacet"))
+    m.microfacet = mf->as_enum<MicrofacetModel>(
+        {{"ggx", MicrofacetModel::ggx}, {"beckmann", MicrofacetModel::beckmann}, {"blinn_phong", MicrofacetModel::blinn_phong}});
+  if (auto c = value.find("conductor")) {
+    m.conductor_name = c->as_string();
+    if (m.conductor_name != "Au" && m.conductor_name != "Ag" && m.conductor_name != "Cu" && m.conductor_name != "Al")
+      c->fail(fmt::format("unknown conductor '{}' (known: Au, Ag, Cu, Al)", m.conductor_name));
+    m.conductor_fresnel = ConductorFresnel::complex_ior;
+  }
+  m.ior = value.get_float("ior", m.ior, 1.0f, 10.0f);
+  if (auto d = value.find("dispersion")) {
+    if (value.has("ior")) value.fail("give either 'ior' or 'dispersion', not both");
+    read_dispersion(m, *d);
+  }
+  m.thin_walled = value.get_bool("thin_walled", m.thin_walled);
+  m.transmission = value.get_float("transmission", m.transmission, 0.0f, 1.0f);
+  if (auto a = value.find("alpha_mode"))
+    m.alpha_mode = a->as_enum<AlphaMode>({{"opaque", AlphaMode::opaque}, {"mask", AlphaMode::mask}, {"blend", AlphaMode::blend}});
+  m.alpha_cutoff = value.get_float("alpha_cutoff", m.alpha_cutoff, 0.0f, 1.0f);
+  m.opacity = value.get_float("opacity", m.opacity, 0.0f, 1.0f);
+  const auto index = static_cast<std::uint32_t>(scene.materials.size());
+  if (auto e = value.find("emission")) read_emission(*this, m, index, *e);
+  material_indices.emplace(m.name, index);
+  scene.materials.push_back(std::move(m));
+}
+
+}  // namespace prism::loaders

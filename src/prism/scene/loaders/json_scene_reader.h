@@ -1,0 +1,50 @@
+#pragma once
+// Internal to the JSON scene loader: the state shared by the readers of each section
+// (json_scene_*.cpp), one reader per concept.
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "prism/scene/load_options.h"
+#include "prism/scene/loaders/json_value.h"
+#include "prism/scene/loaders/texture_cache.h"
+#include "prism/scene/scene.h"
+
+namespace prism::loaders {
+
+struct JsonSceneReader {
+  JsonSceneReader(Scene& scene_, JsonDocument& document_, const std::filesystem::path& scene_dir_,
+                  const LoadOptions& options_)
+      : scene(scene_), document(document_), scene_dir(scene_dir_), options(options_), textures(scene_, options_) {}
+
+  Scene& scene;
+  JsonDocument& document;
+  std::filesystem::path scene_dir;
+  LoadOptions options;
+  TextureCache textures;
+  std::map<std::string, std::uint32_t, std::less<>> material_indices;
+  std::map<std::string, std::vector<std::uint32_t>, std::less<>> mesh_indices;  // a file may give several
+  std::vector<bool> mesh_is_prototype;
+  std::map<std::uint32_t, float> emission_power_lm;  // material → luminous flux to convert to nits
+  float meters_per_unit = 1.0f;
+
+  std::filesystem::path resolve(const JsonValue& file_name) const;
+  // A texture reference: "file.png" or {"file", "encoding", "wrap", "wrap_u", "wrap_v"}.
+  int read_texture(const JsonValue& value, TextureEncoding default_encoding);
+  std::uint32_t material_index(const JsonValue& name) const;
+
+  void read_material(const JsonValue& value);
+  void read_light(const JsonValue& value);
+  void read_environment(const JsonValue& value);
+  void read_camera(const JsonValue& value);
+  void read_mesh(const JsonValue& value);
+  void read_instance(const JsonValue& value);
+  void finish_emission_power();  // needs the geometry and instances
+};
+
+// {"translate", "rotate": {"axis", "angle_degrees"}, "rotate_degrees": [x, y, z],
+//  "scale": s | [x, y, z], "matrix": 12 or 16 numbers, row-major}: M then S, R, T.
+Transform read_transform(const JsonValue& value);
+
+}  // namespace prism::loaders

@@ -1,0 +1,89 @@
+#include "prism/scene/scene_summary.h"
+
+#include <fmt/format.h>
+
+namespace prism {
+
+std::string_view material_type_name(MaterialType type) {
+  switch (type) {
+    case MaterialType::diffuse: return "diffuse";
+    case MaterialType::mirror: return "mirror";
+    case MaterialType::conductor: return "conductor";
+    case MaterialType::dielectric: return "dielectric";
+    case MaterialType::metallic_roughness: return "metallic_roughness";
+  }
+  return "unknown";
+}
+
+std::string_view light_type_name(LightType type) {
+  switch (type) {
+    case LightType::point: return "point";
+    case LightType::spot: return "spot";
+    case LightType::directional: return "directional";
+    case LightType::environment: return "environment";
+  }
+  return "unknown";
+}
+
+SceneSummary summarize_scene(const Scene& scene) {
+  SceneSummary s;
+  s.triangles = scene.triangle_count();
+  s.meshes = scene.meshes.size();
+  s.instances = scene.instances.size();
+  if (scene.instances.empty()) {
+    s.placed_triangles = s.triangles;
+  } else {
+    for (const auto& i : scene.instances)
+      if (i.mesh < scene.meshes.size()) s.placed_triangles += scene.meshes[i.mesh].triangle_count();
+  }
+  s.cameras = scene.cameras.empty() ? 1 : scene.cameras.size();
+  s.textures = scene.textures.size();
+  for (const auto& t : scene.textures) s.texture_bytes += t.memory_bytes();
+  for (const auto& m : scene.materials) {
+    ++s.materials_by_type[std::string(material_type_name(m.type))];
+    if (m.is_emissive()) ++s.emissive_materials;
+  }
+  for (const auto& l : scene.lights) ++s.lights_by_type[std::string(light_type_name(l.type))];
+  return s;
+}
+
+namespace {
+
+std::string counts(const std::map<std::string, std::size_t>& by_type) {
+  std::string out;
+  for (const auto& [name, n] : by_type) out += fmt::format("{}{} {}", out.empty() ? "" : ", ", n, name);
+  return out.empty() ? "none" : out;
+}
+
+std::string mebibytes(std::size_t bytes) { return fmt::format("{:.2f} MiB", static_cast<double>(bytes) / (1 << 20)); }
+
+}  // namespace
+
+std::string format_scene_summary(const Scene& scene) {
+  const SceneSummary s = summarize_scene(scene);
+  std::string out = fmt::format("scene {}\n", scene.name);
+  out += fmt::format("triangles {} ({} placed)\n", s.triangles, s.placed_triangles);
+  out += fmt::format("meshes {}\n", s.meshes);
+  out += fmt::format("instances {}\n", s.instances);
+  out += fmt::format("materials {} ({}; {} emissive)\n", scene.materials.size(), counts(s.materials_by_type),
+                     s.emissive_materials);
+  out += fmt::format("lights {} ({})\n", scene.lights.size(), counts(s.lights_by_type));
+  out += fmt::format("textures {} ({})\n", s.textures, mebibytes(s.texture_bytes));
+  for (const auto& t : scene.textures)
+    out += fmt::format("  texture {} {}x{}x{} {}\n", t.name, t.width, t.height, t.channels, mebibytes(t.memory_bytes()));
+  const auto camera_line = [](const Camera& c) {
+    return fmt::format("  camera {} {} fov {:.4g} deg{}\n", c.name.empty() ? "default" : c.name,
+                       c.aperture_radius > 0.0f ? "thin lens" : "pinhole", c.fov_degrees,
+                       c.f_number > 0.0f ? fmt::format(", f/{:.3g} {:.4g} s ISO {:.4g}", c.f_number, c.shutter_seconds, c.iso)
+                                         : std::string());
+  };
+  out += fmt::format("cameras {}\n", s.cameras);
+  if (scene.cameras.empty()) out += camera_line(scene.camera);
+  for (const auto& c : scene.cameras) out += camera_line(c);
+  out += fmt::format("resolution {}x{}\n", scene.default_width, scene.default_height);
+  out += fmt::format("warnings {}\n", scene.warnings.size());
+  for (const auto& w : scene.warnings) out += fmt::format("  warning: {}\n", w);
+  return out;
+}
+
+}  // namespace prism

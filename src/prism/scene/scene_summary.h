@@ -1,0 +1,29 @@
+#pragma once
+// What `prism info SCENE` reports about a loaded scene.
+#include <cstddef>
+#include <map>
+#include <string>
+
+#include "prism/scene/scene.h"
+
+namespace prism {
+
+struct SceneSummary {
+  std::size_t triangles = 0;          // in the meshes as stored (before instancing)
+  std::size_t placed_triangles = 0;   // after instancing
+  std::size_t meshes = 0, instances = 0, cameras = 0, textures = 0;
+  std::size_t texture_bytes = 0;
+  std::size_t emissive_materials = 0;
+  std::map<std::string, std::size_t> materials_by_type;  // "diffuse" → count
+  std::map<std::string, std::size_t> lights_by_type;     // "point" → count
+};
+
+SceneSummary summarize_scene(const Scene& scene);
+std::string_view material_type_name(MaterialType type);
+std::string_view light_type_name(LightType type);
+
+// Multi-line, human-readable report ending in a newline: counts, textures with their
+// size and memory, cameras, and every loader warning.
+std::string format_scene_summary(const Scene& scene);
+
+}  // namespace prism

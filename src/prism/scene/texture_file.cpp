@@ -1,0 +1,164 @@
+#include "prism/scene/texture_file.h"
+
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+#include <fmt/format.h>
+#include <stb_image.h>
+
+#include <array>
+#include <cstring>
+#include <fstream>
+#include <memory>
+#include <vector>
+
+#include "prism/color/transfer_functions.h"
+#include "prism/core/error.h"
+#include "prism/io/exr.h"
+
+namespace prism {
+namespace {
+
+struct StbFree {
+  void operator()(void* p) const { stbi_image_free(p); }
+};
+
+bool starts_with(std::span<const unsigned char> bytes, std::string_view magic) {
+  return bytes.size() >= magic.size() && std::memcmp(bytes.data(), magic.data(), magic.size()) == 0;
+}
+
+void check_dimensions(long width, long height, int max_dimension, std::string_view name) {
+  if (width <= 0 || height <= 0)
+    throw IoError(fmt::format("cannot read image '{}': invalid size {}x{}", name, width, height));
+  if (width > max_dimension || height > max_dimension)
+    throw IoError(fmt::format("cannot read image '{}': {}x{} pixels exceeds the limit of {}x{}", name, width, height,
+                              max_dimension, max_dimension));
+}
+
+// Decodes 8- or 16-bit codes to linear floats: colour channels through the sRGB EOTF when
+// asked, alpha (the 2nd of grey+alpha, the 4th of RGBA) always linearly.
+template <typename Code>
+void decode_codes(const Code* codes, TextureImage& image, TextureEncoding encoding) {
+  constexpr double kMaxCode = sizeof(Code) == 1 ? 255.0 : 65535.0;
+  std::vector<float> lut(static_cast<std::size_t>(kMaxCode) + 1);
+  for (std::size_t i = 0; i < lut.size(); ++i) {
+    const double v = static_cast<double>(i) / kMaxCode;
+    lut[i] = static_cast<float>(encoding == TextureEncoding::srgb ? color::srgb_decode(v) : v);
+  }
+  const int c = image.channels;
+  const bool has_alpha = c == 2 || c == 4;
+  image.texels.resize(static_cast<std::size_t>(image.width) * image.height * c);
+  for (std::size_t i = 0; i < image.texels.size(); ++i) {
+    const bool alpha = has_alpha && static_cast<int>(i % c) == c - 1;
+    image.texels[i] = alpha ? static_cast<float>(codes[i] / kMaxCode) : lut[codes[i]];
+  }
+}
+
+TextureImage decode_with_stb(std::span<const unsigned char> bytes, std::string_view name, TextureEncoding encoding,
+                             int max_dimension) {
+  if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
+    throw IoError(fmt::format("cannot read image '{}': file too large", name));
+  const auto* data = bytes.data();
+  const int size = static_cast<int>(bytes.size());
+  int width = 0, height = 0, channels = 0;
+  if (!stbi_info_from_memory(data, size, &width, &height, &channels))
+    throw IoError(fmt::format("cannot read image '{}': {}", name, stbi_failure_reason()));
+  check_dimensions(width, height, max_dimension, name);
+  TextureImage image;
+  image.name = std::string(name);
+  if (stbi_is_hdr_from_memory(data, size)) {
+    std::unique_ptr<float, StbFree> pixels(stbi_loadf_from_memory(data, size, &width, &height, &channels, 0));
+    if (!pixels) throw IoError(fmt::format("cannot read image '{}': {}", name, stbi_failure_reason()));
+    image.width = width, image.height = height, image.channels = channels;
+    image.texels.assign(pixels.get(), pixels.get() + static_cast<std::size_t>(width) * height * channels);
+  } else if (stbi_is_16_bit_from_memory(data, size)) {
+    std::unique_ptr<stbi_us, StbFree> pixels(stbi_load_16_from_memory(data, size, &width, &height, &channels, 0));
+    if (!pixels) throw IoError(fmt::format("cannot read image '{}': {}", name, stbi_failure_reason()));
+    image.width = width, image.height = height, image.channels = channels;
+    decode_codes(pixels.get(), image, encoding);
+  } else {
+    std::unique_ptr<stbi_uc, StbFree> pixels(stbi_load_from_memory(data, size, &width, &height, &channels, 0));
+    if (!pixels) throw IoError(fmt::format("cannot read image '{}': {}", name, stbi_failure_reason()));
+    image.width = width, image.height = height, image.channels = channels;
+    decode_codes(pixels.get(), image, encoding);
+  }
+  return image;
+}
+
+TextureImage read_openexr(const std::filesystem::path& path, int max_dimension) {
+  const std::string name = path.string();
+  try {
+    // Size check from the header alone; read_exr then reads the pixels.
+    Imf::InputFile in(path.c_str());
+    const Imath::Box2i dw = in.header().dataWindow();
+    check_dimensions(static_cast<long>(dw.max.x) - dw.min.x + 1, static_cast<long>(dw.max.y) - dw.min.y + 1,
+                     max_dimension, name);
+  } catch (const Error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw IoError(fmt::format("cannot read image '{}': {}", name, e.what()));
+  }
+  ExrFile exr = read_exr(path);
+  TextureImage image;
+  image.name = name;
+  image.width = exr.image.width;
+  image.height = exr.image.height;
+  image.channels = 3;
+  image.texels = std::move(exr.image.rgb);
+  return image;
+}
+
+std::vector<unsigned char> read_file_bytes(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw IoError(fmt::format("cannot read image '{}': {}", path.string(),
+                              std::filesystem::exists(path, ec) ? "not a regular file" : "no such file"));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(fmt::format("cannot read image '{}': cannot open it", path.string()));
+  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) throw IoError(fmt::format("cannot read image '{}': read error", path.string()));
+  return bytes;
+}
+
+}  // namespace
+
+ImageFileFormat detect_image_format(std::span<const unsigned char> head) {
+  if (starts_with(head, "\x89PNG\r\n\x1a\n")) return ImageFileFormat::png;
+  if (starts_with(head, "\xff\xd8\xff")) return ImageFileFormat::jpeg;
+  if (starts_with(head, "#?RADIANCE") || starts_with(head, "#?RGBE")) return ImageFileFormat::radiance_hdr;
+  if (starts_with(head, "\x76\x2f\x31\x01")) return ImageFileFormat::openexr;
+  return ImageFileFormat::unknown;
+}
+
+TextureImage decode_texture_memory(std::span<const unsigned char> bytes, std::string_view name,
+                                   TextureEncoding encoding, int max_dimension) {
+  switch (detect_image_format(bytes)) {
+    case ImageFileFormat::png:
+    case ImageFileFormat::jpeg:
+    case ImageFileFormat::radiance_hdr:
+      return decode_with_stb(bytes, name, encoding, max_dimension);
+    case ImageFileFormat::openexr:
+      throw IoError(fmt::format("cannot read image '{}': OpenEXR images are read from files only", name));
+    case ImageFileFormat::unknown:
+      break;
+  }
+  throw IoError(fmt::format("cannot read image '{}': not a PNG, JPEG, Radiance HDR or OpenEXR file (wrong magic)", name));
+}
+
+TextureImage read_texture_file(const std::filesystem::path& path, TextureEncoding encoding, int max_dimension) {
+  std::array<unsigned char, 16> head{};
+  {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+      throw IoError(fmt::format("cannot read image '{}': {}", path.string(),
+                                std::filesystem::exists(path, ec) ? "not a regular file" : "no such file"));
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw IoError(fmt::format("cannot read image '{}': cannot open it", path.string()));
+    in.read(reinterpret_cast<char*>(head.data()), head.size());
+    if (in.gcount() == 0) throw IoError(fmt::format("cannot read image '{}': the file is empty", path.string()));
+  }
+  if (detect_image_format(head) == ImageFileFormat::openexr) return read_openexr(path, max_dimension);
+  const std::vector<unsigned char> bytes = read_file_bytes(path);
+  return decode_texture_memory(bytes, path.string(), encoding, max_dimension);
+}
+
+}  // namespace prism

@@ -1,0 +1,33 @@
+#pragma once
+// Reading texture images from files or memory into linear floating-point texels.
+// Formats are recognised by their magic bytes, not the file name: PNG and JPEG (stb_image),
+// Radiance .hdr (stb_image's RGBE reader) and OpenEXR (prism::read_exr).
+#include <cstddef>
+#include <filesystem>
+#include <span>
+#include <string_view>
+
+#include "prism/scene/texture.h"
+
+namespace prism {
+
+// How 8/16-bit codes map to linear values. Colour textures (base colour, emission) are
+// sRGB-encoded by convention and decoded with the IEC 61966-2-1 EOTF at load time; data
+// textures (roughness/metallic, normals) are linear codes / (2^bits - 1). Float formats
+// (EXR, .hdr) are linear whatever is asked. Alpha is always linear.
+enum class TextureEncoding : std::uint8_t { srgb, linear };
+
+enum class ImageFileFormat : std::uint8_t { unknown, png, jpeg, radiance_hdr, openexr };
+ImageFileFormat detect_image_format(std::span<const unsigned char> head);
+
+// Throws IoError for a missing/unreadable/truncated/unrecognised file and for an image
+// wider or taller than `max_dimension` (checked from the header, before the pixels are
+// allocated).
+TextureImage read_texture_file(const std::filesystem::path& path, TextureEncoding encoding, int max_dimension);
+
+// The same for PNG, JPEG and .hdr data already in memory (EXR needs a file); `name` is
+// used in messages and as the texture's name.
+TextureImage decode_texture_memory(std::span<const unsigned char> bytes, std::string_view name,
+                                   TextureEncoding encoding, int max_dimension);
+
+}  // namespace prism

@@ -10,6 +10,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libopencolorio-dev  # ACES oracle in tests; `--ocio-config` display path (issue 6)
   libavif-dev         # AVIF HDR output (issue 6)
+  libtinyobjloader-dev  # OBJ + MTL loader (issue 5)
 )
 
 missing=()

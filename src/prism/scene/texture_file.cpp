@@ -5,7 +5,9 @@
 #include <fmt/format.h>
 #include <stb_image.h>
 
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <cstring>
 #include <fstream>
 #include <memory>
@@ -53,6 +55,49 @@ void decode_codes(const Code* codes, TextureImage& image, TextureEncoding encodi
   }
 }
 
+// stb_image reads past the end of its input as zeros, so a truncated .hdr or JPEG would
+// decode "successfully" with black pixels. Feeding it through callbacks lets us notice
+// that it asked for bytes the file does not have.
+class StbInput {
+ public:
+  explicit StbInput(std::span<const unsigned char> bytes) : bytes_(bytes) {}
+
+  template <typename Pixel>
+  std::unique_ptr<Pixel, StbFree> decode(Pixel* (*load)(const stbi_io_callbacks*, void*, int*, int*, int*, int),
+                                         int& width, int& height, int& channels) {
+    position_ = 0;
+    ran_past_end_ = false;
+    const stbi_io_callbacks callbacks{&StbInput::read, &StbInput::skip, &StbInput::eof};
+    std::unique_ptr<Pixel, StbFree> pixels(load(&callbacks, this, &width, &height, &channels, 0));
+    return pixels;
+  }
+  bool ran_past_end() const { return ran_past_end_; }
+
+ private:
+  static int read(void* user, char* data, int size) {
+    auto* self = static_cast<StbInput*>(user);
+    const std::size_t n = std::min(static_cast<std::size_t>(std::max(size, 0)), self->bytes_.size() - self->position_);
+    if (size > 0 && n == 0) self->ran_past_end_ = true;
+    std::memcpy(data, self->bytes_.data() + self->position_, n);
+    self->position_ += n;
+    return static_cast<int>(n);
+  }
+  static void skip(void* user, int n) {
+    auto* self = static_cast<StbInput*>(user);
+    const long target = static_cast<long>(self->position_) + n;
+    if (target > static_cast<long>(self->bytes_.size())) self->ran_past_end_ = true;
+    self->position_ = static_cast<std::size_t>(std::clamp(target, 0L, static_cast<long>(self->bytes_.size())));
+  }
+  static int eof(void* user) {
+    const auto* self = static_cast<StbInput*>(user);
+    return self->position_ >= self->bytes_.size() ? 1 : 0;
+  }
+
+  std::span<const unsigned char> bytes_;
+  std::size_t position_ = 0;
+  bool ran_past_end_ = false;
+};
+
 TextureImage decode_with_stb(std::span<const unsigned char> bytes, std::string_view name, TextureEncoding encoding,
                              int max_dimension) {
   if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
@@ -65,20 +110,23 @@ TextureImage decode_with_stb(std::span<const unsigned char> bytes, std::string_v
   check_dimensions(width, height, max_dimension, name);
   TextureImage image;
   image.name = std::string(name);
-  if (stbi_is_hdr_from_memory(data, size)) {
-    std::unique_ptr<float, StbFree> pixels(stbi_loadf_from_memory(data, size, &width, &height, &channels, 0));
+  StbInput input(bytes);
+  const auto check = [&](const void* pixels) {
     if (!pixels) throw IoError(fmt::format("cannot read image '{}': {}", name, stbi_failure_reason()));
+    if (input.ran_past_end()) throw IoError(fmt::format("cannot read image '{}': the file is truncated", name));
     image.width = width, image.height = height, image.channels = channels;
+  };
+  if (stbi_is_hdr_from_memory(data, size)) {
+    const auto pixels = input.decode(&stbi_loadf_from_callbacks, width, height, channels);
+    check(pixels.get());
     image.texels.assign(pixels.get(), pixels.get() + static_cast<std::size_t>(width) * height * channels);
   } else if (stbi_is_16_bit_from_memory(data, size)) {
-    std::unique_ptr<stbi_us, StbFree> pixels(stbi_load_16_from_memory(data, size, &width, &height, &channels, 0));
-    if (!pixels) throw IoError(fmt::format("cannot read image '{}': {}", name, stbi_failure_reason()));
-    image.width = width, image.height = height, image.channels = channels;
+    const auto pixels = input.decode(&stbi_load_16_from_callbacks, width, height, channels);
+    check(pixels.get());
     decode_codes(pixels.get(), image, encoding);
   } else {
-    std::unique_ptr<stbi_uc, StbFree> pixels(stbi_load_from_memory(data, size, &width, &height, &channels, 0));
-    if (!pixels) throw IoError(fmt::format("cannot read image '{}': {}", name, stbi_failure_reason()));
-    image.width = width, image.height = height, image.channels = channels;
+    const auto pixels = input.decode(&stbi_load_from_callbacks, width, height, channels);
+    check(pixels.get());
     decode_codes(pixels.get(), image, encoding);
   }
   return image;

@@ -1,0 +1,160 @@
+#include <gtest/gtest.h>
+
+#include "prism/core/error.h"
+#include "prism/io/png.h"
+#include "prism/scene/load_scene.h"
+#include "prism/scene/loaders/mtl_material.h"
+#include "prism/scene/loaders/obj_scene.h"
+#include "scene/loaders/loader_test_files.h"
+
+namespace prism {
+namespace {
+
+using test::error_of;
+
+constexpr std::string_view kQuadObj = R"(mtllib quad.mtl
+v 0 0 0
+v 1 0 0
+v 1 1 0
+v 0 1 0
+vt 0 0
+vt 1 0
+vt 1 1
+vt 0 1
+vn 0 0 2
+o quad
+usemtl red
+f 1/1/1 2/2/1 3/3/1 4/4/1
+)";
+
+constexpr std::string_view kMaterials = R"(newmtl red
+Kd 0.8 0.1 0.1
+newmtl gold
+Kd 0 0 0
+Ks 1 0.8 0.3
+Ns 50
+newmtl plastic
+Kd 0.2 0.2 0.8
+Ks 0.5 0.5 0.5
+Ns 1000
+newmtl glass
+illum 7
+Ni 1.52
+newmtl lamp
+Kd 0 0 0
+Ke 10 10 10
+newmtl leaf
+Kd 1 1 1
+d 0.25
+map_Kd leaf.png
+)";
+
+TEST(ObjLoader, TriangulatesPolygonsWithNormalsAndUvs) {
+  test::ScratchFolder dir;
+  dir.write("quad.mtl", kMaterials);
+  const auto obj = dir.write("quad.obj", kQuadObj);
+  write_png(dir / "leaf.png", EncodedImage{1, 1, 3, 8, {255, 128, 0}});
+  const Scene scene = load_scene(obj.string());
+  ASSERT_EQ(scene.meshes.size(), 1u);
+  const TriangleMesh& mesh = scene.meshes[0];
+  EXPECT_EQ(mesh.name, "quad");
+  EXPECT_EQ(mesh.triangle_count(), 2u);
+  ASSERT_EQ(mesh.positions.size(), 4u);
+  ASSERT_EQ(mesh.normals.size(), 4u);
+  ASSERT_EQ(mesh.uvs.size(), 4u);
+  EXPECT_FLOAT_EQ(mesh.normals[0].z, 1.0f);  // normalised
+  EXPECT_FLOAT_EQ(mesh.uvs[0].y, 1.0f);      // OBJ v = 0 (bottom) is Prism's v = 1
+  EXPECT_EQ(scene.materials[mesh.material].name, "red");
+  EXPECT_EQ(scene.materials.size(), 6u);  // every MTL material, used or not
+  EXPECT_GT(scene.camera.eye.z, 0.5f);    // a framing camera in front of the quad
+}
+
+TEST(ObjLoader, MapsMtlParametersToMaterials) {
+  test::ScratchFolder dir;
+  dir.write("quad.mtl", kMaterials);
+  write_png(dir / "leaf.png", EncodedImage{1, 1, 3, 8, {255, 128, 0}});
+  const Scene scene = load_scene(dir.write("quad.obj", kQuadObj).string());
+  const auto& m = scene.materials;
+  EXPECT_EQ(m[0].type, MaterialType::diffuse);
+  EXPECT_FLOAT_EQ(m[0].base_color.x, 0.8f);
+  EXPECT_EQ(m[1].type, MaterialType::conductor);
+  EXPECT_FLOAT_EQ(m[1].base_color.y, 0.8f);
+  EXPECT_NEAR(m[1].roughness, loaders::roughness_from_phong_exponent(50.0f), 1e-7f);
+  EXPECT_EQ(m[2].type, MaterialType::metallic_roughness);
+  EXPECT_LT(m[2].roughness, 0.25f);
+  EXPECT_EQ(m[3].type, MaterialType::dielectric);
+  EXPECT_FLOAT_EQ(m[3].ior, 1.52f);
+  EXPECT_TRUE(m[4].is_emissive());
+  EXPECT_NEAR(m[4].emission.luminance_nits, 10.0f, 1e-4f);  // Ke as Rec.709 radiance in nits
+  EXPECT_EQ(m[5].alpha_mode, AlphaMode::blend);
+  EXPECT_FLOAT_EQ(m[5].opacity, 0.25f);
+  ASSERT_EQ(m[5].base_color_texture, 0);
+  ASSERT_EQ(scene.textures.size(), 1u);
+  EXPECT_FLOAT_EQ(scene.textures[0].texels[0], 1.0f);
+  EXPECT_NEAR(scene.textures[0].texels[1], 0.2158605f, 1e-6f);  // sRGB 128 decoded
+}
+
+TEST(ObjLoader, PhongExponentToRoughness) {
+  // α = sqrt(2 / (Ns + 2)): Ns = 0 is α = 1; Ns = 198 is α = 0.1, r = sqrt(0.1).
+  EXPECT_FLOAT_EQ(loaders::roughness_from_phong_exponent(0.0f), 1.0f);
+  EXPECT_NEAR(loaders::roughness_from_phong_exponent(198.0f), std::sqrt(0.1f), 1e-6f);
+}
+
+TEST(ObjLoader, BadInputIsAOneLineError) {
+  test::ScratchFolder dir;
+  const auto load = [&](std::string_view text) { return load_scene(dir.write("m.obj", text).string()); };
+  std::string message = error_of<SceneError>([&] { load("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n"); });
+  EXPECT_NE(message.find("vertex index 7 is out of range"), std::string::npos) << message;
+  EXPECT_EQ(message.find('\n'), std::string::npos);
+  message = error_of<SceneError>([&] { load("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//4\n"); });
+  EXPECT_NE(message.find("normal index 4 is out of range"), std::string::npos) << message;
+  message = error_of<SceneError>([&] { load("v 0 0 0\nv 1e39 0 0\nv 0 1 0\nf 1 2 3\n"); });
+  EXPECT_NE(message.find("not finite"), std::string::npos) << message;
+  EXPECT_THROW(load("this is not an obj file\n\x01\x02\x03"), SceneError);  // no triangles
+  EXPECT_THROW(load(""), SceneError);
+  EXPECT_THROW(load_scene((dir / "missing.obj").string()), IoError);
+}
+
+TEST(ObjLoader, DropsZeroAreaTrianglesWithAWarning) {
+  test::ScratchFolder dir;
+  const Scene scene =
+      load_scene(dir.write("m.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 2 4\nf 1 1 3\n").string());
+  EXPECT_EQ(scene.triangle_count(), 1u);
+  bool warned = false;
+  for (const auto& w : scene.warnings) warned = warned || w.find("dropped 2 zero-area triangles") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
+
+TEST(ObjLoader, MaterialLibrariesAndTexturesMayNotLeaveTheFolder) {
+  test::ScratchFolder dir;
+  dir.write("secret.mtl", "newmtl x\nKd 1 1 1\n");
+  const auto obj = dir.write("inner/m.obj", "mtllib ../secret.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  EXPECT_NE(error_of<SceneError>([&] { load_scene(obj.string()); }).find("leads outside"), std::string::npos);
+  EXPECT_NO_THROW(load_scene(obj.string(), LoadOptions{.allow_external_paths = true}));
+  dir.write("inner/t.mtl", "newmtl x\nmap_Kd /etc/passwd\n");
+  const auto obj2 = dir.write("inner/t.obj", "mtllib t.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl x\nf 1 2 3\n");
+  EXPECT_NE(error_of<SceneError>([&] { load_scene(obj2.string()); }).find("absolute path"), std::string::npos);
+}
+
+TEST(ObjLoader, JsonSceneIncludesObjMeshesByFile) {
+  test::ScratchFolder dir;
+  dir.write("quad.mtl", kMaterials);
+  write_png(dir / "leaf.png", EncodedImage{1, 1, 3, 8, {255, 128, 0}});
+  dir.write("quad.obj", kQuadObj);
+  dir.write("scene.json", R"({"format": "prism-scene/1",
+    "materials": [{"name": "white", "type": "diffuse"}],
+    "meshes": [{"name": "a", "file": "quad.obj", "transform": {"translate": [0, 0, -1]}},
+               {"name": "b", "file": "quad.obj", "material": "white", "transform": {"scale": [-1, 1, 1]}},
+               {"name": "c", "file": "quad.obj"}]})");
+  const Scene scene = load_scene((dir / "scene.json").string());
+  ASSERT_EQ(scene.meshes.size(), 3u);
+  EXPECT_FLOAT_EQ(scene.meshes[0].positions[0].z, -1.0f);
+  EXPECT_EQ(scene.materials[scene.meshes[0].material].name, "red");
+  EXPECT_EQ(scene.materials[scene.meshes[1].material].name, "white");
+  // A mirroring transform keeps the front face: winding flipped, normals still +z.
+  EXPECT_FLOAT_EQ(scene.meshes[1].normals[0].z, 1.0f);
+  EXPECT_EQ(scene.textures.size(), 1u);  // leaf.png once, although two materials use it
+}
+
+}  // namespace
+}  // namespace prism

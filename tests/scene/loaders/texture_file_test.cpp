@@ -1,0 +1,118 @@
+#include <gtest/gtest.h>
+
+#include "prism/core/error.h"
+#include "prism/io/exr.h"
+#include "prism/io/png.h"
+#include "prism/scene/loaders/texture_cache.h"
+#include "prism/scene/texture_file.h"
+#include "scene/loaders/loader_test_files.h"
+
+namespace prism {
+namespace {
+
+using test::error_of;
+
+constexpr ExrChromaticities kRec709{0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f};
+
+TEST(TextureFile, PngDecodesSrgbColourAndLinearAlpha) {
+  test::ScratchFolder dir;
+  write_png(dir / "a.png", EncodedImage{2, 1, 4, 8, {0, 128, 255, 128, 255, 255, 255, 0}});
+  const TextureImage srgb = read_texture_file(dir / "a.png", TextureEncoding::srgb, 32768);
+  ASSERT_EQ(srgb.channels, 4);
+  EXPECT_EQ(srgb.width, 2);
+  EXPECT_FLOAT_EQ(srgb.texels[0], 0.0f);
+  EXPECT_NEAR(srgb.texels[1], 0.2158605f, 1e-6f);  // IEC 61966-2-1 decode of 128/255
+  EXPECT_FLOAT_EQ(srgb.texels[2], 1.0f);
+  EXPECT_NEAR(srgb.texels[3], 128.0f / 255.0f, 1e-7f);  // alpha is linear
+  const TextureImage linear = read_texture_file(dir / "a.png", TextureEncoding::linear, 32768);
+  EXPECT_NEAR(linear.texels[1], 128.0f / 255.0f, 1e-7f);
+  // 16-bit PNGs keep their precision.
+  write_png(dir / "b.png", EncodedImage{1, 1, 1, 16, {32768}});
+  const TextureImage sixteen = read_texture_file(dir / "b.png", TextureEncoding::linear, 32768);
+  EXPECT_NEAR(sixteen.texels[0], 32768.0f / 65535.0f, 1e-7f);
+}
+
+TEST(TextureFile, RadianceHdrAndExrAreLinearFloats) {
+  test::ScratchFolder dir;
+  // Uncompressed RGBE, value = mantissa · 2^(e − 136): (128, 64, 32) with e = 129 is
+  // (1, 0.5, 0.25).
+  std::string hdr = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 1\n";
+  hdr += std::string("\x80\x40\x20\x81", 4);
+  dir.write("a.hdr", hdr);
+  const TextureImage h = read_texture_file(dir / "a.hdr", TextureEncoding::srgb, 32768);
+  ASSERT_EQ(h.channels, 3);
+  EXPECT_NEAR(h.texels[0], 1.0f, 1e-6f);
+  EXPECT_NEAR(h.texels[1], 0.5f, 1e-6f);
+  EXPECT_NEAR(h.texels[2], 0.25f, 1e-6f);
+  write_exr(dir / "a.exr", ImageRgbF{1, 1, {2.0f, 3.0f, 4.0f}}, kRec709);
+  const TextureImage e = read_texture_file(dir / "a.exr", TextureEncoding::srgb, 32768);
+  EXPECT_EQ(e.texels, (std::vector<float>{2.0f, 3.0f, 4.0f}));
+}
+
+TEST(TextureFile, RefusesImagesLargerThanTheLimitBeforeDecoding) {
+  test::ScratchFolder dir;
+  write_png(dir / "a.png", EncodedImage{8, 8, 3, 8, std::vector<std::uint16_t>(8 * 8 * 3, 7)});
+  EXPECT_NE(error_of<IoError>([&] { read_texture_file(dir / "a.png", TextureEncoding::srgb, 4); })
+                .find("8x8 pixels exceeds the limit of 4x4"),
+            std::string::npos);
+  write_exr(dir / "a.exr", ImageRgbF{8, 8, std::vector<float>(8 * 8 * 3, 1.0f)}, kRec709);
+  EXPECT_THROW(read_texture_file(dir / "a.exr", TextureEncoding::srgb, 4), IoError);
+  // A PNG whose header claims 40000 × 1 pixels (the default limit is 32768): refused from
+  // the header alone, without the pixel data that would have to follow.
+  write_png(dir / "b.png", EncodedImage{1, 1, 3, 8, {1, 2, 3}});
+  std::string bytes = test::read_bytes(dir / "b.png");
+  bytes.replace(16, 4, std::string("\x00\x00\x9c\x40", 4));  // IHDR width, big-endian
+  dir.write("huge.png", bytes);
+  EXPECT_NE(error_of<IoError>([&] { read_texture_file(dir / "huge.png", TextureEncoding::srgb, 32768); })
+                .find("40000x1 pixels exceeds the limit"),
+            std::string::npos);
+}
+
+TEST(TextureFile, BadFilesAreIoErrors) {
+  test::ScratchFolder dir;
+  EXPECT_NE(error_of<IoError>([&] { read_texture_file(dir / "none.png", TextureEncoding::srgb, 32768); })
+                .find("no such file"),
+            std::string::npos);
+  dir.write("empty.png", "");
+  EXPECT_NE(error_of<IoError>([&] { read_texture_file(dir / "empty.png", TextureEncoding::srgb, 32768); })
+                .find("empty"),
+            std::string::npos);
+  dir.write("text.png", "GIF89a this is not what the name says");
+  EXPECT_NE(error_of<IoError>([&] { read_texture_file(dir / "text.png", TextureEncoding::srgb, 32768); })
+                .find("wrong magic"),
+            std::string::npos);
+  // Truncated files of each format.
+  write_png(dir / "full.png", EncodedImage{16, 16, 3, 8, std::vector<std::uint16_t>(16 * 16 * 3, 100)});
+  const std::string png = test::read_bytes(dir / "full.png");
+  dir.write("cut.png", png.substr(0, png.size() / 2));
+  EXPECT_THROW(read_texture_file(dir / "cut.png", TextureEncoding::srgb, 32768), IoError);
+  write_exr(dir / "full.exr", ImageRgbF{16, 16, std::vector<float>(16 * 16 * 3, 1.0f)}, kRec709);
+  const std::string exr = test::read_bytes(dir / "full.exr");
+  dir.write("cut.exr", exr.substr(0, exr.size() / 2));
+  EXPECT_THROW(read_texture_file(dir / "cut.exr", TextureEncoding::srgb, 32768), IoError);
+  dir.write("cut.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4 +X 4\n\x80\x40");
+  EXPECT_THROW(read_texture_file(dir / "cut.hdr", TextureEncoding::srgb, 32768), IoError);
+  dir.write("cut.jpg", std::string("\xff\xd8\xff\xe0\x00\x10JFIF", 10));
+  EXPECT_THROW(read_texture_file(dir / "cut.jpg", TextureEncoding::srgb, 32768), IoError);
+  std::filesystem::create_directories(dir / "folder.png");
+  EXPECT_THROW(read_texture_file(dir / "folder.png", TextureEncoding::srgb, 32768), IoError);
+}
+
+TEST(TextureFile, CacheLoadsEachFileOncePerEncodingAndAddressing) {
+  test::ScratchFolder dir;
+  write_png(dir / "a.png", EncodedImage{1, 1, 3, 8, {128, 128, 128}});
+  Scene scene;
+  loaders::TextureCache cache(scene, LoadOptions{});
+  const int a = cache.load(dir / "a.png", TextureEncoding::srgb);
+  EXPECT_EQ(cache.load(dir.path() / "." / "a.png", TextureEncoding::srgb), a);
+  const int linear = cache.load(dir / "a.png", TextureEncoding::linear);
+  EXPECT_NE(linear, a);
+  const int clamped = cache.load(dir / "a.png", TextureEncoding::srgb, TextureWrap::clamp, TextureWrap::clamp);
+  EXPECT_NE(clamped, a);
+  EXPECT_EQ(scene.textures.size(), 3u);
+  EXPECT_EQ(cache.files_read(), 3u);
+  EXPECT_EQ(scene.textures[static_cast<std::size_t>(clamped)].wrap_u, TextureWrap::clamp);
+}
+
+}  // namespace
+}  // namespace prism

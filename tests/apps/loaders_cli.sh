@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# Scene loading through the command line: `prism info SCENE` and `prism render` on good and
+# bad scene files: exit 0 or 1, one-line errors, never a crash or a hang.
+# Usage: loaders_cli.sh PATH_TO_PRISM
+set -u
+prism="$1"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+# expect_ok PATTERN ARGS...: exit 0 and stdout matching PATTERN.
+expect_ok() {
+  local pattern="$1"; shift
+  timeout 60 "$prism" "$@" >"$work/stdout" 2>"$work/stderr"
+  local rc=$?
+  [ "$rc" -eq 0 ] || fail "'$*': exit $rc (stderr: $(cat "$work/stderr"))"
+  grep -q -- "$pattern" "$work/stdout" || fail "'$*': stdout lacks '$pattern': $(cat "$work/stdout")"
+}
+
+# expect_error PATTERN ARGS...: exit 1 and exactly one stderr line "prism: error: ...PATTERN".
+expect_error() {
+  local pattern="$1"; shift
+  timeout 60 "$prism" "$@" >"$work/stdout" 2>"$work/stderr"
+  local rc=$?
+  [ "$rc" -eq 1 ] || fail "'$*': exit $rc, expected 1 (stderr: $(cat "$work/stderr"))"
+  [ "$(wc -l <"$work/stderr")" -eq 1 ] || fail "'$*': stderr is not one line: $(cat "$work/stderr")"
+  grep -q "^prism: error: .*$pattern" "$work/stderr" || fail "'$*': stderr '$(cat "$work/stderr")' lacks '$pattern'"
+}
+
+mkdir -p "$work/scene"
+cat >"$work/scene/good.json" <<'JSON'
+{"format": "prism-scene/1", "name": "good",
+ "materials": [{"name": "grey", "type": "diffuse"},
+               {"name": "lamp", "type": "diffuse", "emission": {"color": [1, 1, 1], "luminance_nits": 10}}],
+ "meshes": [{"name": "floor", "material": "grey", "positions": [-1,0,-1, -1,0,1, 1,0,1, 1,0,-1], "indices": [0,1,2, 0,2,3]},
+            {"name": "lamp", "material": "lamp", "positions": [-0.2,1,-0.2, 0.2,1,-0.2, 0.2,1,0.2, -0.2,1,0.2],
+             "indices": [0,1,2, 0,2,3]}],
+ "camera": {"eye": [0, 0.5, 3], "target": [0, 0.3, 0]}}
+JSON
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n' >"$work/scene/quad.obj"
+printf '{"format": "prism-scene/1",\n "materials": [{"name": "m" "type": "diffuse"}]}\n' >"$work/scene/malformed.json"
+sed 's/"luminance_nits": 10/"luminance_nits": "bright"/' "$work/scene/good.json" >"$work/scene/schema.json"
+sed 's/"indices": \[0,1,2, 0,2,3\]}\]/"indices": [0,1,2, 0,2,7]}]/' "$work/scene/good.json" >"$work/scene/badindex.json"
+sed 's/"type": "diffuse"}/"type": "diffuse", "base_color_texture": "..\/..\/..\/..\/..\/..\/etc\/passwd"}/' \
+  "$work/scene/good.json" >"$work/scene/escape.json"
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n' >"$work/scene/badindex.obj"
+head -c 20 "$work/scene/good.json" >"$work/scene/truncated.json"
+printf '\x89PNG\r\n\x1a\n garbage' >"$work/scene/garbage.json"
+
+expect_ok "built-in scenes: .*material-test" info
+expect_ok "^triangles 4 " info "$work/scene/good.json"
+expect_ok "materials 2 (2 diffuse; 1 emissive)" info "$work/scene/good.json"
+expect_ok "^triangles 2 " info "$work/scene/quad.obj"
+expect_ok "warning: .*no emissive material" info "$work/scene/quad.obj"
+expect_ok "^scene material-test" info material-test
+expect_ok "^scene dispersion-prism" info dispersion-prism
+expect_ok "rendered good 16x16" render "$work/scene/good.json" --spp 1 --width 16 --height 16 -o "$work/good.exr"
+[ -s "$work/good.exr" ] || fail "render of good.json wrote no image"
+expect_ok "rendered quad 16x16" render "$work/scene/quad.obj" --spp 1 --width 16 --height 16 -o "$work/quad.exr"
+expect_ok "rendered material-test 16x16" render material-test --spp 1 --width 16 --height 16 -o "$work/mt.exr"
+
+expect_error "malformed.json:2:34: malformed JSON" info "$work/scene/malformed.json"
+expect_error "malformed.json:2:34: malformed JSON" render "$work/scene/malformed.json" --spp 1 --width 16 --height 16 -o "$work/x.exr"
+expect_error "materials\[1\].emission.luminance_nits: expected a number" info "$work/scene/schema.json"
+expect_error "index 7 (at 5) is out of range" render "$work/scene/badindex.json" --spp 1 --width 16 --height 16 -o "$work/x.exr"
+expect_error "vertex index 9 is out of range" info "$work/scene/badindex.obj"
+expect_error "leads outside the scene's folder" info "$work/scene/escape.json"
+expect_error "leads outside the scene's folder" render "$work/scene/escape.json" --spp 1 --width 16 --height 16 -o "$work/x.exr"
+expect_error "wrong magic" info --allow-external-paths "$work/scene/escape.json"
+expect_error "truncated.json:1:21: malformed JSON" info "$work/scene/truncated.json"
+expect_error "garbage.json:1:1: malformed JSON" info "$work/scene/garbage.json"
+expect_error "no such file" info "$work/scene/missing.json"
+cp "$work/scene/good.json" "$work/scene/good.ply"
+expect_error "no loader for '.ply'" info "$work/scene/good.ply"
+[ ! -e "$work/x.exr" ] || fail "a failed render left $work/x.exr behind"
+
+if [ "$failures" -ne 0 ]; then echo "$failures failure(s)"; exit 1; fi
+echo "loaders CLI: all checks passed"

@@ -1,0 +1,35 @@
+// libFuzzer target: the texture image readers (PNG, JPEG, Radiance .hdr through stb_image;
+// OpenEXR through prism::read_exr, which needs a file). The size limit is lowered so that
+// headers claiming huge images are refused rather than exhausting the fuzzer's memory.
+#include <unistd.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <span>
+#include <string>
+
+#include "prism/core/error.h"
+#include "prism/scene/texture_file.h"
+
+namespace {
+constexpr int kMaxDimension = 2048;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::span<const unsigned char> bytes(data, size);
+  try {
+    if (prism::detect_image_format(bytes) == prism::ImageFileFormat::openexr) {
+      static const std::filesystem::path path =
+          std::filesystem::temp_directory_path() / ("prism_fuzz_image_" + std::to_string(::getpid()) + ".exr");
+      std::ofstream(path, std::ios::binary | std::ios::trunc).write(reinterpret_cast<const char*>(data),
+                                                                    static_cast<std::streamsize>(size));
+      prism::read_texture_file(path, prism::TextureEncoding::srgb, kMaxDimension);
+    } else {
+      prism::decode_texture_memory(bytes, "fuzz", prism::TextureEncoding::srgb, kMaxDimension);
+    }
+  } catch (const prism::Error&) {
+  }
+  return 0;
+}

@@ -42,8 +42,12 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
                                                const PinholeCamera& camera, const ColorContext<Mode>& colors,
                                                const PathSettings& settings, int width, int height, std::uint64_t seed,
                                                bool regenerate)
-    : scene_(scene), accel_(accel), lights_(lights), camera_(camera), colors_(colors), settings_(settings),
+    : paths_(std::make_unique<Paths>(static_cast<std::size_t>(width) * static_cast<std::size_t>(height))),
+      scene_(scene), accel_(accel), lights_(lights), camera_(camera), colors_(colors), settings_(settings),
       width_(width), height_(height), seed_(seed), regenerate_(regenerate) {}
+
+template <class Mode>
+WavefrontIntegrator<Mode>::~WavefrontIntegrator() = default;
 
 template <class Mode>
 void WavefrontIntegrator<Mode>::generate(Paths& p, std::uint32_t slot, std::uint32_t sample_index) const {
@@ -196,7 +200,7 @@ PassStatistics WavefrontIntegrator<Mode>::render_samples(Film& film, std::uint32
 template <class Mode>
 PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t first_sample, std::uint32_t count) {
   const auto slots = static_cast<std::uint32_t>(film.pixel_count());
-  Paths p(slots);
+  Paths& p = *paths_;
   std::vector<std::uint32_t> live(slots);
   for (std::uint32_t s = 0; s < slots; ++s) live[s] = s;
   parallel_for(slots, 4096, [&](std::size_t b, std::size_t e) {

@@ -11,6 +11,7 @@
 // pixel's samples in sample order. The image is therefore bitwise independent of thread
 // count and scheduling, and of how samples are grouped into passes.
 #include <atomic>
+#include <memory>
 #include <cstdint>
 #include <vector>
 
@@ -45,6 +46,7 @@ struct PassStatistics {
 template <class Mode>
 class WavefrontIntegrator {
  public:
+  ~WavefrontIntegrator();
   WavefrontIntegrator(const Scene& scene, const EmbreeAccel& accel, const LightSampler& lights,
                       const PinholeCamera& camera, const ColorContext<Mode>& colors, const PathSettings& settings,
                       int width, int height, std::uint64_t seed, bool regenerate = true);
@@ -60,6 +62,7 @@ class WavefrontIntegrator {
   void shade(Paths& paths, std::uint32_t slot) const;
   PassStatistics run_wave(Film& film, std::uint32_t first_sample, std::uint32_t count);
 
+  std::unique_ptr<Paths> paths_;  // allocated once, reused by every wave
   const Scene& scene_;
   const EmbreeAccel& accel_;
   const LightSampler& lights_;

@@ -128,6 +128,7 @@ void render_passes(const Scene& scene, const RenderSettings& settings, const Ren
     const double seconds = elapsed();
     result.pass_seconds.push_back(seconds - pass_start);
     result.pass_samples.push_back(count);
+    result.pass_live_paths.push_back(stats.live_paths_per_step);
     result.rays += stats.rays;
     result.shadow_rays += stats.shadow_rays;
     result.invalid_samples += stats.invalid_samples;

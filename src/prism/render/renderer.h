@@ -57,6 +57,9 @@ struct RenderResult {
   std::uint64_t rays = 0, shadow_rays = 0;
   std::vector<double> pass_seconds;
   std::vector<int> pass_samples;
+  // Per pass: live paths at each wavefront step (PassStatistics::live_paths_per_step),
+  // for measuring how full regeneration keeps the queues.
+  std::vector<std::vector<std::uint32_t>> pass_live_paths;
   StopReason stop_reason = StopReason::completed;
 };
 

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <memory>
@@ -132,8 +134,75 @@ TextureImage decode_with_stb(std::span<const unsigned char> bytes, std::string_v
   return image;
 }
 
-TextureImage read_openexr(const std::filesystem::path& path, int max_dimension) {
+std::int32_t read_le32(const unsigned char* p) {
+  return static_cast<std::int32_t>(static_cast<std::uint32_t>(p[0]) | static_cast<std::uint32_t>(p[1]) << 8 |
+                                   static_cast<std::uint32_t>(p[2]) << 16 | static_cast<std::uint32_t>(p[3]) << 24);
+}
+
+// Walks the OpenEXR header(s) (OpenEXR file layout: magic, version, then attributes
+// `name\0 type\0 int32 size, value` until an empty name) before OpenEXR does, because
+// OpenEXR 3.1 allocates an attribute's declared size, and the chunk offset table for the
+// declared data window, before noticing the file is shorter (found by the image-reader fuzz
+// target: a 610-byte file asking for 2 GB). Checks that every attribute fits in the file,
+// that the data window is within the size limit and that a tiled image's offset table
+// (8 bytes per level-0 tile) fits in the file.
+void check_openexr_header(std::span<const unsigned char> bytes, int max_dimension, std::string_view name) {
+  const auto corrupt = [&](std::string_view why) {
+    throw IoError(fmt::format("cannot read image '{}': corrupt or truncated OpenEXR header ({})", name, why));
+  };
+  if (bytes.size() < 8) corrupt("too short");
+  const bool multipart = (read_le32(bytes.data() + 4) & 0x1000) != 0;
+  std::size_t pos = 8;
+  const auto read_string = [&] {
+    const auto* begin = reinterpret_cast<const char*>(bytes.data() + pos);
+    const std::size_t n = ::strnlen(begin, std::min<std::size_t>(bytes.size() - pos, 256));
+    if (pos + n >= bytes.size() || n > 255) corrupt("unterminated attribute name");
+    pos += n + 1;
+    return std::string_view(begin, n);
+  };
+  for (int header = 0;; ++header) {
+    long width = 0, height = 0, tile_x = 0, tile_y = 0;
+    bool any = false;
+    for (;;) {
+      if (pos >= bytes.size()) corrupt("no end of header");
+      const std::string_view attribute = read_string();
+      if (attribute.empty()) break;
+      any = true;
+      const std::string_view type = read_string();
+      if (pos + 4 > bytes.size()) corrupt("attribute size missing");
+      const std::int32_t size = read_le32(bytes.data() + pos);
+      pos += 4;
+      if (size < 0 || static_cast<std::size_t>(size) > bytes.size() - pos)
+        corrupt(fmt::format("attribute '{}' claims {} bytes", attribute, size));
+      const unsigned char* value = bytes.data() + pos;
+      if (attribute == "dataWindow" && type == "box2i" && size == 16) {
+        width = static_cast<long>(read_le32(value + 8)) - read_le32(value) + 1;
+        height = static_cast<long>(read_le32(value + 12)) - read_le32(value + 4) + 1;
+      }
+      if (attribute == "tiles" && type == "tiledesc" && size >= 8) {
+        tile_x = static_cast<std::uint32_t>(read_le32(value));
+        tile_y = static_cast<std::uint32_t>(read_le32(value + 4));
+      }
+      pos += static_cast<std::size_t>(size);
+    }
+    if (!any) {
+      if (header == 0) corrupt("empty header");
+      return;  // the empty header that ends a multi-part file's headers
+    }
+    check_dimensions(width, height, max_dimension, name);
+    if (tile_x > 0 && tile_y > 0) {
+      const double tiles = std::ceil(static_cast<double>(width) / tile_x) * std::ceil(static_cast<double>(height) / tile_y);
+      if (8.0 * tiles > static_cast<double>(bytes.size())) corrupt("more tiles than the file can hold");
+    } else if (tile_x != 0 || tile_y != 0) {
+      corrupt("zero tile size");
+    }
+    if (!multipart) return;
+  }
+}
+
+TextureImage read_openexr(const std::filesystem::path& path, std::span<const unsigned char> bytes, int max_dimension) {
   const std::string name = path.string();
+  check_openexr_header(bytes, max_dimension, name);
   try {
     // Size check from the header alone; read_exr then reads the pixels.
     Imf::InputFile in(path.c_str());
@@ -204,8 +273,8 @@ TextureImage read_texture_file(const std::filesystem::path& path, TextureEncodin
     in.read(reinterpret_cast<char*>(head.data()), head.size());
     if (in.gcount() == 0) throw IoError(fmt::format("cannot read image '{}': the file is empty", path.string()));
   }
-  if (detect_image_format(head) == ImageFileFormat::openexr) return read_openexr(path, max_dimension);
   const std::vector<unsigned char> bytes = read_file_bytes(path);
+  if (detect_image_format(head) == ImageFileFormat::openexr) return read_openexr(path, bytes, max_dimension);
   return decode_texture_memory(bytes, path.string(), encoding, max_dimension);
 }
 

@@ -132,6 +132,15 @@ TEST(JsonScene, MalformedJsonReportsLineAndColumn) {
   EXPECT_NE(error_of<SceneError>([&] { parse(truncated); }).find("malformed JSON"), std::string::npos);
 }
 
+TEST(JsonScene, NumberTooLargeForADoubleIsMalformedJson) {
+  // Regression (fuzz_json_scene): nlohmann throws out_of_range 406, not parse_error, for a
+  // number that overflows a double; it escaped as an uncaught exception.
+  const std::string text = "{\"format\": \"prism-scene/1\",\n \"meters_per_unit\": 7590048281e8888888}";
+  const std::string message = error_of<SceneError>([&] { parse(text); });
+  EXPECT_NE(message.find("test.json:2:21: malformed JSON: "), std::string::npos) << message;
+  EXPECT_NE(message.find("number overflow"), std::string::npos) << message;
+}
+
 TEST(JsonScene, TextPositionCountsLinesAndColumns) {
   EXPECT_EQ(loaders::text_position("ab\ncd", 0).line, 1u);
   EXPECT_EQ(loaders::text_position("ab\ncd", 4).line, 2u);

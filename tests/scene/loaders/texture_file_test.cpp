@@ -116,3 +116,35 @@ TEST(TextureFile, CacheLoadsEachFileOncePerEncodingAndAddressing) {
 
 }  // namespace
 }  // namespace prism
+
+namespace prism {
+namespace {
+
+TEST(TextureFile, OpenExrHeaderClaimingMoreThanTheFileHoldsIsRefusedBeforeAllocating) {
+  // Regression (fuzz_image_readers): a 610-byte EXR whose string attribute declares ~2 GB;
+  // OpenEXR 3.1 allocated it before reading. Now refused by our own header walk.
+  const std::filesystem::path file =
+      std::filesystem::path(PRISM_SOURCE_DIR) / "tests/scene/loaders/data/fuzz_exr_huge_attribute.exr";
+  ASSERT_TRUE(std::filesystem::exists(file));
+  EXPECT_NE(error_of<IoError>([&] { read_texture_file(file, TextureEncoding::linear, 32768); })
+                .find("corrupt or truncated OpenEXR header"),
+            std::string::npos);
+}
+
+TEST(TextureFile, OpenExrDataWindowIsCheckedBeforeOpenExrSeesIt) {
+  test::ScratchFolder dir;
+  write_exr(dir / "a.exr", ImageRgbF{2, 2, std::vector<float>(12, 1.0f)}, kRec709);
+  std::string bytes = test::read_bytes(dir / "a.exr");
+  const std::size_t at = bytes.find("dataWindow");
+  ASSERT_NE(at, std::string::npos);
+  // name\0 "box2i"\0 size(4) then xMin yMin xMax yMax: make yMax 2^30.
+  const std::size_t y_max = at + std::string_view("dataWindow").size() + 1 + 6 + 4 + 12;
+  bytes.replace(y_max, 4, std::string("\x00\x00\x00\x40", 4));
+  dir.write("tall.exr", bytes);
+  EXPECT_NE(error_of<IoError>([&] { read_texture_file(dir / "tall.exr", TextureEncoding::linear, 32768); })
+                .find("exceeds the limit"),
+            std::string::npos);
+}
+
+}  // namespace
+}  // namespace prism

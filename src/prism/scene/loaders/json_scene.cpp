@@ -17,6 +17,10 @@ namespace {
 // column 7: syntax error while parsing ..."; keep only what follows the position.
 std::string parse_error_reason(const std::string& what) {
   const std::size_t column = what.find("column ");
+  if (column == std::string::npos) {  // "[json.exception.out_of_range.406] number overflow ..."
+    const std::size_t bracket = what.find("] ");
+    return bracket == std::string::npos ? what : what.substr(bracket + 2);
+  }
   const std::size_t colon = what.find(": ", column == std::string::npos ? 0 : column);
   return colon == std::string::npos ? what : what.substr(colon + 2);
 }
@@ -107,6 +111,15 @@ Scene parse_json_scene(std::string_view text, std::string_view source, const std
     // e.byte counts from 1 and points just past the offending character.
     const TextPosition p = text_position(text, e.byte > 0 ? e.byte - 1 : 0);
     throw SceneError(fmt::format("{}:{}:{}: malformed JSON: {}", source, p.line, p.column, parse_error_reason(e.what())));
+  } catch (const nlohmann::json::exception& e) {
+    // A number too large for a double (out_of_range 406) carries no byte position, only
+    // the token: locate its first occurrence (found by the JSON fuzz target).
+    const std::string what = e.what();
+    const std::size_t open = what.find('\''), close = what.rfind('\'');
+    const std::string token = open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
+    const std::size_t at = token.empty() ? std::string_view::npos : text.find(token);
+    const TextPosition p = text_position(text, at == std::string_view::npos ? 0 : at);
+    throw SceneError(fmt::format("{}:{}:{}: malformed JSON: {}", source, p.line, p.column, parse_error_reason(what)));
   }
   Scene scene;
   scene.name = std::string(default_name);

@@ -11,8 +11,8 @@ namespace prism {
 
 struct SurfaceInteraction {
   Vec3f position;
-  Vec3f geometric_normal;  // unit, on the side the ray came from
-  Frame shading;           // around the shading normal, on the same side
+  Vec3f geometric_normal;  // unit front-face normal (counter-clockwise winding), not flipped
+  Frame shading;           // around the shading normal, on the geometric normal's side
   Vec2f uv;
   std::uint32_t material = 0;
   bool front_face = true;        // the ray hit the counter-clockwise (front) side
@@ -35,8 +35,10 @@ inline SurfaceInteraction surface_interaction(const Scene& scene, const Hit& hit
   const Vec3f ng = normalize(cross(p1 - p0, p2 - p0));
   si.cos_wo_geometric = -dot(ng, ray.direction);
   si.front_face = si.cos_wo_geometric > 0.0f;
-  si.geometric_normal = si.front_face ? ng : -ng;
-  Vec3f ns = si.geometric_normal;
+  // Frames keep the mesh's orientation: dielectrics tell inside from outside by it, and
+  // the reflection BSDFs are two-sided.
+  si.geometric_normal = ng;
+  Vec3f ns = ng;
   if (!mesh.normals.empty()) {
     const Vec3f n = mesh.normals[i0] * b0 + mesh.normals[i1] * hit.u + mesh.normals[i2] * hit.v;
     const float len = length(n);
@@ -55,11 +57,12 @@ inline SurfaceInteraction surface_interaction(const Scene& scene, const Hit& hit
   return si;
 }
 
-// Offsets a ray origin off the surface along the normal, scaled to the coordinates'
-// magnitude so it stays above float rounding (about 2^-23 relative) at any scene scale.
-inline Vec3f offset_ray_origin(const Vec3f& p, const Vec3f& n_towards) {
+// Offsets a ray origin off the surface, to the side of `n` that `direction` leaves
+// towards, scaled to the coordinates' magnitude so it stays above float rounding (about
+// 2^-23 relative) at any scene scale.
+inline Vec3f offset_ray_origin(const Vec3f& p, const Vec3f& n, const Vec3f& direction) {
   const float magnitude = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 1.0f});
-  return p + n_towards * (magnitude * 1e-5f);
+  return p + (dot(direction, n) >= 0.0f ? n : -n) * (magnitude * 1e-5f);
 }
 
 }  // namespace prism

@@ -8,7 +8,7 @@
 #include "prism/core/frame.h"
 #include "prism/core/parallel.h"
 #include "prism/core/sample_stream.h"
-#include "prism/render/surface_bsdf.h"
+#include "prism/render/material_bsdf.h"
 #include "prism/render/surface_interaction.h"
 #include "prism/sampling/warps.h"
 
@@ -18,7 +18,7 @@ template <class Mode>
 struct WavefrontIntegrator<Mode>::Paths {
   explicit Paths(std::size_t n)
       : ray(n), throughput(n), radiance(n), wavelengths(n), rng(n), hit(n), hit_found(n), shadow_ray(n),
-        shadow_contribution(n), shadow_pending(n), prev_position(n), prev_pdf(n), prev_specular(n), depth(n),
+        shadow_contribution(n), shadow_pending(n), prev_position(n), prev_pdf(n), eta_scale(n), prev_specular(n), depth(n),
         finished(n), sample_index(n), sample_end(n) {}
   std::vector<Ray> ray;
   std::vector<Spectrum<Mode>> throughput, radiance;
@@ -31,6 +31,7 @@ struct WavefrontIntegrator<Mode>::Paths {
   std::vector<std::uint8_t> shadow_pending;
   std::vector<Vec3f> prev_position;
   std::vector<float> prev_pdf;             // solid-angle pdf of the direction that led here
+  std::vector<float> eta_scale;            // product of η² over refractions (for roulette)
   std::vector<std::uint8_t> prev_specular; // that direction came from a delta lobe
   std::vector<std::int32_t> depth;
   std::vector<std::uint8_t> finished;
@@ -43,7 +44,7 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
                                                const PathSettings& settings, int width, int height, std::uint64_t seed,
                                                bool regenerate)
     : paths_(std::make_unique<Paths>(static_cast<std::size_t>(width) * static_cast<std::size_t>(height))),
-      scene_(scene), accel_(accel), lights_(lights), camera_(camera), colors_(colors), settings_(settings),
+      tables_(scene.materials), scene_(scene), accel_(accel), lights_(lights), camera_(camera), colors_(colors), settings_(settings),
       width_(width), height_(height), seed_(seed), regenerate_(regenerate) {}
 
 template <class Mode>
@@ -63,6 +64,7 @@ void WavefrontIntegrator<Mode>::generate(Paths& p, std::uint32_t slot, std::uint
   p.radiance[slot] = Spectrum<Mode>(0.0f);
   p.depth[slot] = 0;
   p.prev_pdf[slot] = 0.0f;
+  p.eta_scale[slot] = 1.0f;
   p.prev_specular[slot] = 1;  // camera rays see emitters directly, unweighted
   p.finished[slot] = 0;
   p.sample_index[slot] = sample_index;
@@ -74,7 +76,7 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   Pcg32& rng = p.rng[slot];
   Spectrum<Mode>& beta = p.throughput[slot];
   Spectrum<Mode>& L = p.radiance[slot];
-  const Wavelengths<Mode>& wl = p.wavelengths[slot];
+  Wavelengths<Mode>& wl = p.wavelengths[slot];
   const Ray& ray = p.ray[slot];
   const bool use_nee = settings_.estimator != LightEstimator::bsdf_only && !lights_.empty();
   const bool weight_bsdf_hits = settings_.estimator == LightEstimator::mis;
@@ -110,7 +112,12 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     return;
   }
 
-  const SurfaceBsdf<Mode> bsdf = make_surface_bsdf<Mode>(material, colors_.base_color(si.material, wl));
+  const auto bsdf = make_bsdf<Mode>(material, si.material, colors_.base_color(si.material, wl), wl, tables_);
+  if constexpr (Mode::kSpectral) {
+    // Hero wavelength after a dispersive event (Wilkie et al. 2014): from here on only
+    // channel 0 carries an estimate; terminate once (pdf[1] = 0 marks it done).
+    if (Mode::kChannels > 1 && bsdf.is_dispersive() && wl.pdf[1] != 0.0f) ColorContext<Mode>::terminate_secondary(wl);
+  }
   const Vec3f wo_local = si.shading.to_local(-ray.direction);
 
   if (use_nee && !bsdf.is_specular()) {
@@ -118,20 +125,20 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     const Vec2f u_light(rng.next_float(), rng.next_float());
     if (const auto ls = lights_.sample(si.position, u_select, u_light)) {
       const Vec3f wi_local = si.shading.to_local(ls->wi);
-      // Both the geometric and the shading side must agree, or light leaks through edges.
-      if (dot(ls->wi, si.geometric_normal) > 0.0f && wi_local.z > 0.0f) {
+      // The geometric and the shading side must agree, or light leaks through edges.
+      if ((dot(ls->wi, si.geometric_normal) > 0.0f) == (wi_local.z > 0.0f) && ls->pdf > 0.0f) {
         const Spectrum<Mode> f = bsdf.eval(wo_local, wi_local);
-        if (!f.is_black() && ls->pdf > 0.0f) {
+        if (!f.is_black()) {
           float w = 1.0f;
           if (!ls->is_delta && settings_.estimator == LightEstimator::mis)
             w = power_heuristic(ls->pdf, bsdf.pdf(wo_local, wi_local));
-          const Vec3f origin = offset_ray_origin(si.position, si.geometric_normal);
+          const Vec3f origin = offset_ray_origin(si.position, si.geometric_normal, ls->wi);
           float t_max;
           Vec3f dir = ls->wi;
           if (std::isinf(ls->distance)) {
             t_max = std::numeric_limits<float>::infinity();
           } else {
-            const Vec3f target = ls->is_delta ? ls->position : offset_ray_origin(ls->position, -ls->wi);
+            const Vec3f target = ls->is_delta ? ls->position : offset_ray_origin(ls->position, ls->normal, -ls->wi);
             const Vec3f segment = target - origin;
             const float len = length(segment);
             dir = segment / len;
@@ -139,7 +146,7 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
           }
           p.shadow_ray[slot] = Ray{origin, dir, 0.0f, t_max};
           p.shadow_contribution[slot] =
-              beta * f * colors_.emission(ls->emitter, wl) * (wi_local.z * ls->scale * w / ls->pdf);
+              beta * f * colors_.emission(ls->emitter, wl) * (std::abs(wi_local.z) * ls->scale * w / ls->pdf);
           p.shadow_pending[slot] = 1;
         }
       }
@@ -149,35 +156,39 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   const float u_lobe = rng.next_float();
   const Vec2f u_dir(rng.next_float(), rng.next_float());
   const auto bs = bsdf.sample(wo_local, u_lobe, u_dir);
-  if (!bs || bs->pdf <= 0.0f) {
+  if (!bs || bs->pdf <= 0.0f || bs->f.is_black()) {
     p.finished[slot] = 1;
     return;
   }
   const Vec3f wi = si.shading.to_world(bs->wi);
-  const bool transmits = dot(wi, si.geometric_normal) < 0.0f;
-  if (transmits) {  // reflection-only BSDFs: a shading-normal direction below the surface
+  // A direction on the other geometric side than its shading side says it is on would
+  // pass through the mesh (shading-normal artefact): end the path there.
+  if ((dot(wi, si.geometric_normal) > 0.0f) != (bs->wi.z > 0.0f)) {
     p.finished[slot] = 1;
     return;
   }
   beta *= bs->f * (std::abs(bs->wi.z) / bs->pdf);
+  p.eta_scale[slot] *= bs->eta * bs->eta;
   p.prev_pdf[slot] = bs->pdf;
   p.prev_specular[slot] = bs->is_specular;
   p.prev_position[slot] = si.position;
   p.depth[slot] += 1;
 
   // Russian roulette (Arvo & Kirk 1990): survive with probability max throughput,
-  // dividing by it keeps the estimator unbiased.
+  // dividing by it keeps the estimator unbiased. Radiance crossing into a denser medium
+  // is scaled by 1/η²; the decision uses the throughput without that factor (pbrt-v4's
+  // etaScale) so refraction alone does not kill paths.
   if (p.depth[slot] >= settings_.russian_roulette_depth) {
     float max_beta = 0.0f;
     for (int i = 0; i < Mode::kChannels; ++i) max_beta = std::max(max_beta, beta[i]);
-    const float survive = std::min(1.0f, max_beta);
+    const float survive = std::min(1.0f, max_beta * p.eta_scale[slot]);
     if (rng.next_float() >= survive) {
       p.finished[slot] = 1;
       return;
     }
     beta *= 1.0f / survive;
   }
-  p.ray[slot] = Ray{offset_ray_origin(si.position, si.geometric_normal), wi};
+  p.ray[slot] = Ray{offset_ray_origin(si.position, si.geometric_normal, wi), wi};
 }
 
 template <class Mode>

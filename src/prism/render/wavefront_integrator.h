@@ -18,6 +18,7 @@
 #include "prism/accel/embree_accel.h"
 #include "prism/render/color_context.h"
 #include "prism/render/film.h"
+#include "prism/render/material_bsdf.h"
 #include "prism/scene/camera_rays.h"
 #include "prism/scene/light_sampler.h"
 #include "prism/scene/scene.h"
@@ -63,6 +64,7 @@ class WavefrontIntegrator {
   PassStatistics run_wave(Film& film, std::uint32_t first_sample, std::uint32_t count);
 
   std::unique_ptr<Paths> paths_;  // allocated once, reused by every wave
+  MaterialTables tables_;
   const Scene& scene_;
   const EmbreeAccel& accel_;
   const LightSampler& lights_;

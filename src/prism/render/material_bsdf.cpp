@@ -1,0 +1,98 @@
+#include "prism/render/material_bsdf.h"
+
+#include <algorithm>
+
+namespace prism {
+
+MaterialTables::MaterialTables(const std::vector<Material>& materials) {
+  for (const Material& m : materials) {
+    if ((m.type == MaterialType::conductor) && m.conductor_fresnel == ConductorFresnel::complex_ior)
+      conductors_.emplace_back(bsdf::conductor_ior(m.conductor_name));  // UsageError for unknown metals
+    else
+      conductors_.emplace_back(std::nullopt);
+  }
+}
+
+double dielectric_ior(const Material& m, double wavelength_nm) {
+  const auto& c = m.dispersion_coefficients;
+  switch (m.dispersion) {
+    case DispersionModel::cauchy: return bsdf::CauchyIor{c[0], c[1]}(wavelength_nm);
+    case DispersionModel::sellmeier: {
+      bsdf::SellmeierIor s;
+      for (int i = 0; i < 3; ++i) {
+        s.b[i] = c[static_cast<std::size_t>(i)];
+        s.c_um2[i] = c[static_cast<std::size_t>(i + 3)];
+      }
+      return s(wavelength_nm);
+    }
+    case DispersionModel::none: break;
+  }
+  return m.ior;
+}
+
+namespace {
+
+bsdf::MicrofacetType microfacet_type(MicrofacetModel m) {
+  switch (m) {
+    case MicrofacetModel::beckmann: return bsdf::MicrofacetType::beckmann;
+    case MicrofacetModel::blinn_phong: return bsdf::MicrofacetType::blinn_phong;
+    case MicrofacetModel::ggx: break;
+  }
+  return bsdf::MicrofacetType::ggx;
+}
+
+// The wavelength each channel stands for.
+template <class Mode>
+float channel_wavelength_nm(const Wavelengths<Mode>& w, int channel) {
+  if constexpr (Mode::kSpectral) return w.wavelength_nm[static_cast<std::size_t>(channel)];
+  else return kRgbRepresentativeWavelengthsNm[static_cast<std::size_t>(channel)];
+}
+
+}  // namespace
+
+template <class Mode>
+bsdf::Bsdf<Mode::kChannels> make_bsdf(const Material& m, std::uint32_t material_index, const Spectrum<Mode>& base,
+                                      const Wavelengths<Mode>& w, const MaterialTables& tables) {
+  constexpr int N = Mode::kChannels;
+  // glTF and pbrt give perceptual roughness r; the microfacet α is r² (Burley 2012).
+  const float alpha = m.roughness * m.roughness;
+  const auto distribution = bsdf::MicrofacetDistribution::isotropic(microfacet_type(m.microfacet), alpha);
+  switch (m.type) {
+    case MaterialType::mirror: return {bsdf::SpecularReflection<N>{base}};
+    case MaterialType::conductor: {
+      if (const bsdf::ConductorIor* ior = tables.conductor(material_index)) {
+        color::SampledSpectrum<N> eta, k;
+        for (int c = 0; c < N; ++c) {
+          const double nm = channel_wavelength_nm<Mode>(w, c);
+          eta[c] = static_cast<float>(ior->eta(nm));
+          k[c] = static_cast<float>(ior->k(nm));
+        }
+        return {bsdf::RoughConductor<N>{distribution, bsdf::ConductorFresnel<N>::complex_ior(eta, k)}};
+      }
+      return {bsdf::RoughConductor<N>{distribution, bsdf::ConductorFresnel<N>::schlick(base)}};
+    }
+    case MaterialType::dielectric: {
+      color::SampledSpectrum<N> eta;
+      for (int c = 0; c < N; ++c) {
+        const double nm = Mode::kSpectral ? channel_wavelength_nm<Mode>(w, c) : kDLineWavelengthNm;
+        eta[c] = static_cast<float>(dielectric_ior(m, nm));
+      }
+      return {bsdf::Dielectric<N>{eta, distribution}};
+    }
+    case MaterialType::metallic_roughness:
+      return {bsdf::MetallicRoughness<N>::from_roughness(base, std::clamp(m.metallic, 0.0f, 1.0f), m.roughness)};
+    case MaterialType::diffuse: break;
+  }
+  return {bsdf::Lambertian<N>{base}};
+}
+
+template bsdf::Bsdf<3> make_bsdf<SpectralMode<3>>(const Material&, std::uint32_t, const Spectrum<SpectralMode<3>>&,
+                                                   const Wavelengths<SpectralMode<3>>&, const MaterialTables&);
+template bsdf::Bsdf<4> make_bsdf<SpectralMode<4>>(const Material&, std::uint32_t, const Spectrum<SpectralMode<4>>&,
+                                                   const Wavelengths<SpectralMode<4>>&, const MaterialTables&);
+template bsdf::Bsdf<8> make_bsdf<SpectralMode<8>>(const Material&, std::uint32_t, const Spectrum<SpectralMode<8>>&,
+                                                   const Wavelengths<SpectralMode<8>>&, const MaterialTables&);
+template bsdf::Bsdf<3> make_bsdf<RgbMode>(const Material&, std::uint32_t, const Spectrum<RgbMode>&,
+                                          const Wavelengths<RgbMode>&, const MaterialTables&);
+
+}  // namespace prism

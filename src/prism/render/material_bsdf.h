@@ -1,0 +1,43 @@
+#pragma once
+// From a scene Material to the bsdf/ module's BSDF at one shading point, for one path's
+// wavelengths (spectral) or the working space's channels (RGB).
+//
+// RGB transport has no wavelengths, so spectral material data is evaluated at
+// representative wavelengths: complex IORs of metals at 630, 532 and 465 nm (the
+// dominant wavelengths of Rec.709-like primaries), and a dispersive glass at its d-line
+// index n(587.6 nm) in every channel — dispersion needs spectral transport.
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "prism/bsdf/bsdf.h"
+#include "prism/bsdf/ior.h"
+#include "prism/render/transport_mode.h"
+#include "prism/scene/material.h"
+
+namespace prism {
+
+// Per-material data resolved once per render (measured metal tables).
+class MaterialTables {
+ public:
+  explicit MaterialTables(const std::vector<Material>& materials);
+  const bsdf::ConductorIor* conductor(std::uint32_t material) const {
+    return conductors_[material] ? &*conductors_[material] : nullptr;
+  }
+
+ private:
+  std::vector<std::optional<bsdf::ConductorIor>> conductors_;
+};
+
+inline constexpr std::array<float, 3> kRgbRepresentativeWavelengthsNm = {630.0f, 532.0f, 465.0f};
+inline constexpr float kDLineWavelengthNm = 587.56f;
+
+// Index of refraction of a dielectric material at one wavelength.
+double dielectric_ior(const Material& m, double wavelength_nm);
+
+template <class Mode>
+bsdf::Bsdf<Mode::kChannels> make_bsdf(const Material& material, std::uint32_t material_index,
+                                      const Spectrum<Mode>& base_color, const Wavelengths<Mode>& wavelengths,
+                                      const MaterialTables& tables);
+
+}  // namespace prism

@@ -1,0 +1,20 @@
+#include "suites.h"
+
+namespace prism::bench {
+
+const std::vector<SuiteEntry>& all_suites() {
+  static const std::vector<SuiteEntry> suites{
+      {"limit", "raw Embree incoherent rays/s vs the renderer's rays/s (efficiency), Cornell box", run_limit_suite},
+      {"throughput", "samples/s and Mrays/s, Cornell box 512^2 spectral and RGB, median of --repeat", run_throughput_suite},
+      {"steadiness", "pass-time spread with path regeneration on vs off", run_steadiness_suite},
+      {"convergence", "relMSE vs time/spp and chromaticity error vs spp per wavelength strategy", run_convergence_suite},
+      {"efficiency", "1/(time x relMSE) on the 512^2 Cornell box as a ratio to pbrt-v4's figure quoted in issue 8",
+       run_efficiency_suite},
+      {"display", "4K exposure+ACES SDR and 1000-nit PQ, Mpixels/s vs OpenColorIO's CPU processor", run_display_suite},
+      {"scaling", "samples/s with 1 and 2 threads (parallel efficiency)", run_scaling_suite},
+      {"startup", "scene build + BVH build time and peak RSS for a generated large mesh", run_startup_suite},
+  };
+  return suites;
+}
+
+}  // namespace prism::bench

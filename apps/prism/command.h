@@ -14,6 +14,7 @@ void add_info_command(CLI::App& root, Action& action);
 void add_merge_command(CLI::App& root, Action& action);
 void add_color_command(CLI::App& root, Action& action);
 void add_tonemap_command(CLI::App& root, Action& action);
+void add_view_command(CLI::App& root, Action& action);
 void add_bench_command(CLI::App& root, Action& action);
 
 }  // namespace prism::cli

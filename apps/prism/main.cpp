@@ -30,6 +30,7 @@ int main(int argc, char** argv) {
   prism::cli::add_merge_command(app, action);
   prism::cli::add_color_command(app, action);
   prism::cli::add_tonemap_command(app, action);
+  prism::cli::add_view_command(app, action);
   prism::cli::add_bench_command(app, action);
 
   try {

@@ -1,0 +1,35 @@
+// `prism view`: the interactive viewer (src/prism/viewer/, docs/viewer.md).
+#include <memory>
+
+#include "command.h"
+#include "prism/viewer/viewer_app.h"
+
+namespace prism::cli {
+
+void add_view_command(CLI::App& root, Action& action) {
+  auto o = std::make_shared<viewer::ViewerOptions>();
+  CLI::App* cmd = root.add_subcommand("view", "Open a scene in the interactive viewer (progressive rendering, live camera "
+                                              "and display controls)");
+  cmd->add_option("scene", o->scene, "Built-in scene name or scene file")->capture_default_str();
+  cmd->add_option("--frames", o->frames,
+                  "Render this many passes, then exit (with --screenshot: write what the window shows first)");
+  cmd->add_option("--screenshot", o->screenshot, "With --frames: PNG of the window, UI included");
+  cmd->add_option("--ev100", o->ev100, "Initial exposure (EV100); default: auto exposure");
+  cmd->add_option("--odt", o->odt, "Initial output transform (see prism tonemap --help)")->capture_default_str();
+  cmd->add_option("--mode", o->mode, "Initial transport: spectral or rgb")->capture_default_str();
+  cmd->add_option("--samples-per-pass", o->samples_per_pass, "Samples per pixel per displayed pass")
+      ->capture_default_str();
+  cmd->add_option("--max-depth", o->max_depth, "Maximum number of bounces")->capture_default_str();
+  cmd->add_option("--threads", o->threads, "Render threads (default: all cores)");
+  cmd->add_option("--resolution-scale", o->resolution_scale, "Film size as a fraction of the window, 0.125..1")
+      ->capture_default_str();
+  cmd->add_option("--width", o->window_width, "Window width (screen coordinates)")->capture_default_str();
+  cmd->add_option("--height", o->window_height, "Window height (screen coordinates)")->capture_default_str();
+  cmd->add_flag("--log-events", o->log_events,
+                "Print one line per event (restart, camera, pass, screenshot, UI frame times) on stdout");
+  cmd->add_flag("--allow-external-paths", o->allow_external_paths,
+                "Let the scene file refer to files outside its own folder");
+  cmd->callback([o, &action] { action = [o] { return viewer::run_viewer(*o); }; });
+}
+
+}  // namespace prism::cli

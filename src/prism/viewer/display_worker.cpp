@@ -1,0 +1,163 @@
+// The display thread of the viewer (display_worker.h). Every colour decision is made by
+// prism::display; this file only picks which of its functions to call and packs bytes.
+#include "prism/viewer/display_worker.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <exception>
+
+#include "prism/core/error.h"
+#include "prism/display/chromaticity_diagram.h"
+#include "prism/display/luminance_view.h"
+#include "prism/display/raster.h"
+
+namespace prism::viewer {
+namespace {
+
+void to_rgba8(const EncodedImage& image, DisplayFrame& out) {
+  out.width = image.width;
+  out.height = image.height;
+  out.rgba.assign(static_cast<std::size_t>(image.width) * image.height * 4, 255);
+  const int shift = image.bit_depth - 8;
+  for (std::size_t i = 0; i < static_cast<std::size_t>(image.width) * image.height; ++i)
+    for (int c = 0; c < 3; ++c)
+      out.rgba[4 * i + c] = static_cast<std::uint8_t>(image.samples[image.channels * i + c] >> shift);
+}
+
+// scRGB code values are linear and unbounded: the window shows them clipped to [0, 1], as
+// an SDR monitor would show the signal (HDR presentation is not part of this viewer).
+void float_codes_to_rgba8(const display::DisplayImage& image, DisplayFrame& out) {
+  out.width = image.width;
+  out.height = image.height;
+  out.rgba.assign(static_cast<std::size_t>(image.width) * image.height * 4, 255);
+  for (std::size_t i = 0; i < static_cast<std::size_t>(image.width) * image.height; ++i)
+    for (int c = 0; c < 3; ++c)
+      out.rgba[4 * i + c] = static_cast<std::uint8_t>(std::clamp(image.code[3 * i + c], 0.0f, 1.0f) * 255.0f + 0.5f);
+}
+
+void show(const display::DisplayImage& image, std::uint64_t seed, DisplayFrame& out) {
+  if (display::is_float_encoding(image.encoding)) float_codes_to_rgba8(image, out);
+  else to_rgba8(display::quantise_display_image(image, 8, seed), out);
+}
+
+void fill_frame(const DisplayJob& job, DisplayFrame& out) {
+  const ImageRgbF& film = job.film->film;
+  const color::ColorSpace& space = job.film->film_space;
+  display::DisplaySettings s = resolved_display_settings(job.controls);
+  // The overlay must match the output size, round(film size / render scale).
+  const auto output_size = [&](int n) { return static_cast<int>(std::lround(n / s.render_scale)); };
+  const bool composite_ui = job.ui_rgba && hdr_output(job.controls) &&
+                            job.ui_rgba->width == output_size(film.width) &&
+                            job.ui_rgba->height == output_size(film.height);
+  if (composite_ui)
+    s.overlay = display::make_ui_overlay(*job.ui_rgba, job.controls.ui_nits, job.controls.ui_blend_power);
+  auto image = std::make_shared<display::DisplayImage>(display::apply_display_pipeline(film, space, s));
+  out.content_light = content_light_level(image->nits);
+  out.image = image;
+  using display::DebugView;
+  switch (job.controls.view) {
+    case DebugView::none:
+      show(*image, s.dither_seed, out);
+      out.ui_composited = composite_ui;
+      return;
+    case DebugView::gamut_clip: {
+      display::DisplayImage marked = *image;
+      display::mark_gamut_clip(marked);
+      show(marked, s.dither_seed, out);
+      out.ui_composited = composite_ui;
+      return;
+    }
+    case DebugView::sdr_hdr_split:
+      if (!hdr_output(job.controls)) throw UsageError("the SDR/HDR split view needs an HDR ODT");
+      show(display::sdr_hdr_split_view(film, space, s, job.controls.sdr_white_nits), s.dither_seed, out);
+      out.ui_composited = composite_ui;
+      return;
+    case DebugView::luminance: {
+      const std::vector<float> y = display::luminance_nits(film.rgb, space);
+      to_rgba8(display::canvas_to_srgb8(display::luminance_false_colour_view(y, film.width, film.height,
+                                                                             display::luminance_scale_for(y))), out);
+      return;
+    }
+    case DebugView::luminance_display: {
+      const std::vector<float> y = display::luminance_nits(image->nits, color::parse_color_space(image->primaries));
+      to_rgba8(display::canvas_to_srgb8(display::luminance_false_colour_view(y, image->width, image->height,
+                                                                             display::luminance_scale_for(y))), out);
+      return;
+    }
+    case DebugView::chromaticity: {
+      const color::ColorSpace shown =
+          s.display_primaries ? *s.display_primaries : color::color_space(display::odt_description(s.odt).display_space);
+      to_rgba8(display::canvas_to_srgb8(display::chromaticity_diagram(film, space, shown)), out);
+      return;
+    }
+    case DebugView::normal:
+      throw UsageError("the normal view needs a shading-normal AOV, which the interactive film does not keep");
+  }
+}
+
+}  // namespace
+
+DisplayFrame compute_display_frame(const DisplayJob& job) {
+  const auto start = std::chrono::steady_clock::now();
+  DisplayFrame out;
+  out.film_serial = job.film->serial;
+  out.controls_version = job.controls_version;
+  try {
+    fill_frame(job, out);
+  } catch (const std::exception& e) {
+    out.error = e.what();
+    if (out.rgba.empty() && out.image) show(*out.image, job.controls.settings.dither_seed, out);
+  }
+  out.display_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return out;
+}
+
+DisplayWorker::DisplayWorker() : worker_([this] { run(); }) {}
+
+DisplayWorker::~DisplayWorker() {
+  {
+    std::lock_guard lock(mutex_);
+    quit_ = true;
+  }
+  wake_.notify_all();
+  worker_.join();
+}
+
+void DisplayWorker::submit(DisplayJob job) {
+  {
+    std::lock_guard lock(mutex_);
+    pending_ = std::move(job);
+  }
+  wake_.notify_all();
+}
+
+std::shared_ptr<const DisplayFrame> DisplayWorker::latest() const {
+  std::lock_guard lock(mutex_);
+  return latest_;
+}
+
+bool DisplayWorker::busy() const {
+  std::lock_guard lock(mutex_);
+  return working_ || pending_.has_value();
+}
+
+void DisplayWorker::run() {
+  for (;;) {
+    DisplayJob job;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] { return quit_ || pending_.has_value(); });
+      if (quit_) return;
+      job = std::move(*pending_);
+      pending_.reset();
+      working_ = true;
+    }
+    auto frame = std::make_shared<const DisplayFrame>(compute_display_frame(job));
+    std::lock_guard lock(mutex_);
+    latest_ = std::move(frame);
+    working_ = false;
+  }
+}
+
+}  // namespace prism::viewer

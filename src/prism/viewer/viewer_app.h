@@ -1,0 +1,29 @@
+#pragma once
+// `prism view`: the interactive viewer's entry point (see docs/viewer.md).
+#include <optional>
+#include <string>
+
+namespace prism::viewer {
+
+struct ViewerOptions {
+  std::string scene = "cornell-box";
+  bool allow_external_paths = false;
+  int window_width = 1280, window_height = 720;
+  int frames = 0;                  // > 0: render this many passes, then exit (headless use)
+  std::string screenshot;          // with frames: write what the window shows (PNG)
+  std::optional<double> ev100;     // initial exposure; none: auto exposure
+  std::string odt = "srgb-100nit";
+  std::string mode = "spectral";   // spectral | rgb
+  int samples_per_pass = 1;
+  int max_depth = 8;
+  int threads = 0;
+  double resolution_scale = 1.0;
+  bool log_events = false;         // one line per event on stdout (tests, scripting)
+};
+
+// Opens the window and runs until it is closed (or `frames` passes are done). Returns the
+// exit status. Throws NoDisplayError (viewer_window.h) without a display, and the library's
+// typed errors for bad scenes or options.
+int run_viewer(const ViewerOptions& options);
+
+}  // namespace prism::viewer

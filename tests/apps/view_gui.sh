@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# GUI test (CTest label gui): `prism view --frames N --screenshot` under Xvfb with Mesa's
+# software OpenGL. The screenshot has the window's size, is not blank, and a higher
+# --ev100 gives a darker image. Usage: view_gui.sh PATH/TO/prism
+set -u
+prism="$1"
+source "$(dirname "$0")/view_xvfb.bash"
+start_xvfb
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"; kill "$XVFB_PID" 2>/dev/null; wait "$XVFB_PID" 2>/dev/null' EXIT
+
+shot() {  # EV100 → prints the screenshot's mean code value
+  local log="$tmp/log_$1.txt"
+  if ! timeout 300 "$prism" view cornell-box --frames 4 --screenshot "$tmp/shot_$1.png" --ev100 "$1" \
+       --log-events >"$log" 2>"$tmp/err_$1.txt"; then
+    echo "FAIL: prism view --ev100 $1 failed: $(cat "$tmp/err_$1.txt")" >&2; exit 1
+  fi
+  grep -o 'mean=[0-9.]*' "$log" | cut -d= -f2
+}
+
+bright=$(shot 1)
+dark=$(shot 4)
+for ev in 1 4; do
+  size=$(png_size "$tmp/shot_$ev.png")
+  [ "$size" = "1280x720" ] || { echo "FAIL: screenshot is $size, expected 1280x720"; exit 1; }
+  bytes=$(stat -c %s "$tmp/shot_$ev.png")
+  [ "$bytes" -gt 20000 ] || { echo "FAIL: screenshot of $bytes bytes looks blank"; exit 1; }
+  grep -q 'spp=4 ' "$tmp/log_$ev.txt" || { echo "FAIL: no 4th pass in the log"; exit 1; }
+done
+sd=$(grep -o 'stddev=[0-9.]*' "$tmp/log_1.txt" | cut -d= -f2)
+awk -v s="$sd" 'BEGIN { exit !(s > 0.02) }' || { echo "FAIL: screenshot is flat (stddev $sd)"; exit 1; }
+awk -v b="$bright" -v d="$dark" 'BEGIN { exit !(b > d + 0.002) }' ||
+  { echo "FAIL: --ev100 4 mean $dark is not darker than --ev100 1 mean $bright"; exit 1; }
+echo "ok: mean code value $bright at EV100 1, $dark at EV100 4"

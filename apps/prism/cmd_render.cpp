@@ -11,13 +11,13 @@
 #include <fmt/ranges.h>
 
 #include "command.h"
+#include "display_options.h"
 #include "progress_reporter.h"
 #include "prism/color/chromatic_adaptation.h"
 #include "prism/color/color_space.h"
 #include "prism/color/wavelength_sampling.h"
 #include "prism/core/error.h"
 #include "prism/core/version.h"
-#include "prism/display/clamp_srgb_encode.h"
 #include "prism/io/atomic_file.h"
 #include "prism/io/exr.h"
 #include "prism/io/png.h"
@@ -47,7 +47,9 @@ struct RenderOptions {
   std::string working_space = "srgb";
   bool no_wavelength_stratification = false;
   int samples_per_pass = 0;
+  bool max_depth_given = false;
   std::string exr_space = "working";
+  DisplayCliOptions display;
   std::string sample_range;  // "START:END"
   std::string checkpoint;
   double checkpoint_every_seconds = 60.0;
@@ -73,13 +75,13 @@ void apply_sample_range(const std::string& text, RenderSettings& settings) {
     throw UsageError(fmt::format("--sample-range '{}' is empty or negative", text));
 }
 
-enum class OutputFormat { exr, png };
+enum class OutputFormat { exr, display };
 
 OutputFormat output_format(const std::filesystem::path& path) {
   const std::string ext = path.extension().string();
   if (ext == ".exr" || ext == ".EXR") return OutputFormat::exr;
-  if (ext == ".png" || ext == ".PNG") return OutputFormat::png;
-  throw UsageError(fmt::format("unknown output extension '{}' in '{}' (supported: .exr, .png)", ext, path.string()));
+  if (ext == ".png" || ext == ".PNG" || ext == ".avif" || ext == ".AVIF") return OutputFormat::display;
+  throw UsageError(fmt::format("unknown output extension '{}' in '{}' (supported: .exr, .png, .avif)", ext, path.string()));
 }
 
 LightEstimator parse_estimator(const std::string& name) {
@@ -122,7 +124,7 @@ ImageRgbF film_image(const Film& film, const color::ColorSpace& film_space, cons
 
 void write_outputs(const std::vector<std::filesystem::path>& outputs, const RenderResult& result,
                    const std::string& scene_name, const RenderSettings& settings, std::uint64_t fingerprint,
-                   const RenderOptions& o) {
+                   const RenderOptions& o, const DisplayCliOptions& display) {
   const color::ColorSpace& working = color::color_space(settings.transport.working_space);
   for (const auto& path : outputs) {
     if (output_format(path) == OutputFormat::exr) {
@@ -140,7 +142,8 @@ void write_outputs(const std::vector<std::filesystem::path>& outputs, const Rend
       const color::ColorSpace& space = o.exr_space == "film" ? result.film_space : working;
       write_exr(path, film_image(result.film, result.film_space, space), chromaticities_of(space), meta);
     } else {
-      write_png(path, clamp_srgb_encode(film_image(result.film, result.film_space, color::color_space("srgb")), 8));
+      // Display-referred outputs go through the display pipeline (exposure, ACES, encoding).
+      write_display_output(path, film_image(result.film, result.film_space, working), working, display);
     }
   }
 }
@@ -178,10 +181,32 @@ int run_render(const RenderOptions& o) {
   // Check everything that can be checked before spending time on the render.
   for (const auto& p : outputs) output_format(p);
   const Scene scene = load_scene(o.scene, LoadOptions{.allow_external_paths = o.allow_external_paths});
+  // A scene camera's physical exposure applies unless the command line sets one.
+  DisplayCliOptions display = o.display;
+  if (!display.ev100 && !display.f_number && !display.auto_exposure && scene.camera.f_number > 0.0f &&
+      scene.camera.shutter_seconds > 0.0f) {
+    display.f_number = scene.camera.f_number;
+    display.shutter_s = scene.camera.shutter_seconds;
+    display.iso = scene.camera.iso;
+  }
   if (o.outputs.empty()) outputs = {scene.name + ".exr", scene.name + ".png"};
-  for (const auto& p : outputs) check_writable_output(p);
+  for (const auto& p : outputs) {
+    if (output_format(p) == OutputFormat::display)
+      validate_display_output(p, display);  // bad display options fail before rendering
+    else
+      check_writable_output(p);
+  }
   settings.width = o.width > 0 ? o.width : scene.default_width;
   settings.height = o.height > 0 ? o.height : scene.default_height;
+  if (o.spp_given == false && o.sample_range.empty() && scene.default_spp > 0) settings.samples_per_pixel = scene.default_spp;
+  if (!o.max_depth_given && scene.default_max_depth > 0) settings.path.max_depth = scene.default_max_depth;
+  // --render-scale: render a fraction of the pixels; display outputs are upscaled back.
+  if (!(o.display.render_scale > 0.0 && o.display.render_scale <= 1.0))
+    throw UsageError("--render-scale must be in (0, 1]");
+  if (o.display.render_scale < 1.0) {
+    settings.width = std::max(1, static_cast<int>(std::lround(settings.width * o.display.render_scale)));
+    settings.height = std::max(1, static_cast<int>(std::lround(settings.height * o.display.render_scale)));
+  }
   if (!o.sample_range.empty()) {
     if (o.spp_given) throw UsageError("give either --spp or --sample-range, not both");
     apply_sample_range(o.sample_range, settings);
@@ -223,7 +248,7 @@ int run_render(const RenderOptions& o) {
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
 
-  write_outputs(outputs, result, scene.name, settings, fingerprint, o);
+  write_outputs(outputs, result, scene.name, settings, fingerprint, o, display);
 
   const double samples = static_cast<double>(result.passes_done) * result.film.pixel_count();
   std::vector<std::string> written;
@@ -289,6 +314,7 @@ void add_render_command(CLI::App& root, Action& action) {
                   "EXR pixel space: working (the working space's RGB) or film (CIE XYZ relative to E for spectral "
                   "renders); chromaticities always say which")
       ->capture_default_str();
+  add_display_options(cmd, options->display);
   cmd->add_option("--sample-range", options->sample_range,
                   "Render only sample indices START..END-1 (e.g. 0:32), for splitting one image over several "
                   "machines; combine the EXRs with `prism merge`. Replaces --spp");
@@ -305,6 +331,7 @@ void add_render_command(CLI::App& root, Action& action) {
   cmd->callback([options, cmd, &action] {
     options->threads_given = cmd->count("--threads") > 0;
     options->spp_given = cmd->count("--spp") > 0;
+    options->max_depth_given = cmd->count("--max-depth") > 0;
     action = [options] { return run_render(*options); };
   });
 }

@@ -45,7 +45,7 @@ struct RenderOptions {
   std::string wavelength_sampling = "cosh3";
   std::string upsampling = "jakob-hanika";
   std::string working_space = "srgb";
-  bool no_wavelength_stratification = false;
+  bool wavelength_stratification = false;
   int samples_per_pass = 0;
   bool max_depth_given = false;
   std::string exr_space = "working";
@@ -157,7 +157,7 @@ int run_render(const RenderOptions& o) {
   settings.transport.kind = o.mode == "rgb" ? TransportKind::rgb : TransportKind::spectral;
   settings.transport.wavelengths = o.wavelengths;
   settings.transport.wavelength_strategy = color::parse_wavelength_strategy(o.wavelength_sampling);
-  settings.transport.stratify_first_wavelengths = !o.no_wavelength_stratification;
+  settings.transport.stratify_first_wavelengths = o.wavelength_stratification;
   if (o.upsampling != "jakob-hanika" && o.upsampling != "mallett-yuksel")
     throw UsageError(fmt::format("unknown --upsampling '{}' (jakob-hanika, mallett-yuksel)", o.upsampling));
   settings.transport.upsampling = o.upsampling == "mallett-yuksel" ? Upsampling::mallett_yuksel : Upsampling::jakob_hanika;
@@ -299,9 +299,10 @@ void add_render_command(CLI::App& root, Action& action) {
   cmd->add_option("--wavelength-sampling", options->wavelength_sampling,
                   "Spectral: hero (uniform, Wilkie 2014), cosh (Radziszewski 2009) or cosh3 (three cosh lobes)")
       ->capture_default_str();
-  cmd->add_flag("--no-wavelength-stratification", options->no_wavelength_stratification,
-                "Spectral: draw every sample's wavelengths independently (default: nine strata, the first sample of "
-                "a pixel near 600/535/445 nm)");
+  cmd->add_flag("--wavelength-stratification", options->wavelength_stratification,
+                "Spectral: stratify samples' wavelengths in nine strata so a pixel's first sample lands near "
+                "600/535/445 nm (the seed renderer's fast-colour preview); biased by up to one stratum's share "
+                "until the pixel's sample count is a multiple of nine");
   cmd->add_option("--upsampling", options->upsampling,
                   "Spectral: reflectance upsampling, jakob-hanika (2019) or mallett-yuksel (2019)")
       ->capture_default_str();

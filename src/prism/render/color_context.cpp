@@ -102,9 +102,10 @@ Vec3d ColorContext<SpectralMode<N>>::to_film(const Spectrum<Mode>& value, const 
 }
 
 template <int N>
-void ColorContext<SpectralMode<N>>::terminate_secondary(Wavelengths<Mode>& w) {
+void ColorContext<SpectralMode<N>>::terminate_secondary(Wavelengths<Mode>& w) const {
   for (int i = 1; i < N; ++i) w.pdf[i] = 0.0f;
-  w.pdf[0] /= static_cast<float>(N);
+  const double p0 = color::wavelength_slot_pdf(settings_.wavelength_strategy, 0, w.wavelength_nm[0]);
+  w.pdf[0] = static_cast<float>(p0 / N);
 }
 
 template class ColorContext<SpectralMode<3>>;

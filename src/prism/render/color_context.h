@@ -44,10 +44,13 @@ class ColorContext<SpectralMode<N>> {
   // Emitted radiance (or intensity / illuminance for delta lights) of an emitter.
   Spectrum<Mode> emission(std::uint32_t emitter, const Wavelengths<Mode>& w) const;
   Vec3d to_film(const Spectrum<Mode>& value, const Wavelengths<Mode>& w) const;
-  // Keeps only the hero wavelength after a dispersive event (pbrt-v4's TerminateSecondary):
-  // the other channels' pdfs become 0 and the hero's is divided by N, so the estimator
-  // (1/N) Σ f/p stays unbiased with one wavelength.
-  static void terminate_secondary(Wavelengths<Mode>& w);
+  // Keeps only channel 0's wavelength after a dispersive event (hero wavelength, Wilkie
+  // et al. 2014): the other channels' pdfs become 0 and channel 0's estimate must become
+  // the one-sample estimator f(λ0)/p0(λ0), with p0 the density λ0 was actually drawn with
+  // (slot 0's technique). Stored as pdf = p0/N because the film averages over N channels.
+  // For hero sampling p0 equals the stored pdf (pbrt-v4's TerminateSecondary divides it by
+  // N); for cosh3 the stored balance-heuristic pdf is not λ0's density and must be replaced.
+  void terminate_secondary(Wavelengths<Mode>& w) const;
 
  private:
   TransportSettings settings_;
@@ -67,7 +70,7 @@ class ColorContext<RgbMode> {
   Spectrum<Mode> base_color(std::uint32_t material, const Wavelengths<Mode>&) const { return base_colors_[material]; }
   Spectrum<Mode> emission(std::uint32_t emitter, const Wavelengths<Mode>&) const { return emitters_[emitter]; }
   Vec3d to_film(const Spectrum<Mode>& value, const Wavelengths<Mode>&) const { return {value[0], value[1], value[2]}; }
-  static void terminate_secondary(Wavelengths<Mode>&) {}
+  void terminate_secondary(Wavelengths<Mode>&) const {}
 
  private:
   Mat3 srgb_to_working_;

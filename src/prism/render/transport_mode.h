@@ -16,7 +16,10 @@ struct TransportSettings {
   TransportKind kind = TransportKind::spectral;
   int wavelengths = 4;  // spectral: 3, 4 or 8
   color::WavelengthStrategy wavelength_strategy = color::WavelengthStrategy::cosh3;
-  bool stratify_first_wavelengths = true;  // the seed's nine strata, first sample near 600/535/445 nm
+  // The seed renderer's nine strata (first sample of a pixel near 600/535/445 nm). Off by
+  // default: a pixel whose sample count is not a multiple of nine is biased by up to one
+  // stratum's share (decaying as 1/spp), see color/wavelength_sampling.h.
+  bool stratify_first_wavelengths = false;
   Upsampling upsampling = Upsampling::jakob_hanika;
   std::string working_space = "srgb";  // rgb: the transport space; spectral: the output space
 };

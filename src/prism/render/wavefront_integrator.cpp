@@ -116,7 +116,7 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   if constexpr (Mode::kSpectral) {
     // Hero wavelength after a dispersive event (Wilkie et al. 2014): from here on only
     // channel 0 carries an estimate; terminate once (pdf[1] = 0 marks it done).
-    if (Mode::kChannels > 1 && bsdf.is_dispersive() && wl.pdf[1] != 0.0f) ColorContext<Mode>::terminate_secondary(wl);
+    if (Mode::kChannels > 1 && bsdf.is_dispersive() && wl.pdf[1] != 0.0f) colors_.terminate_secondary(wl);
   }
   const Vec3f wo_local = si.shading.to_local(-ray.direction);
 

@@ -43,10 +43,10 @@ plot_lines() {  # column_x column_y
 
 common="set terminal pngcairo size 900,600 font 'sans,11'; set logscale xy; set grid; set key top right"
 gnuplot -e "$common; set output '$out/convergence-relmse-spp.png';
-  set title 'Cornell box ${size}², spectral (4 λ): relative MSE vs spp (reference ${ref} spp)';
+  set title 'Cornell box ${size}², spectral, strategy-N wavelengths: relative MSE vs spp (reference 2 × ${ref} spp)';
   set xlabel 'samples per pixel'; set ylabel 'relMSE'; plot $(plot_lines 1 3)"
 gnuplot -e "$common; set output '$out/convergence-relmse-time.png';
-  set title 'Cornell box ${size}², spectral (4 λ): relative MSE vs render time';
+  set title 'Cornell box ${size}², spectral, strategy-N wavelengths: relative MSE vs render time';
   set xlabel 'seconds'; set ylabel 'relMSE'; plot $(plot_lines 2 3)"
 gnuplot -e "$common; set output '$out/convergence-chromaticity.png';
   set title 'Back-wall chromaticity error vs spp (mean per-pixel CIE xy distance to the reference)';

@@ -11,6 +11,7 @@ packages=(
   libopencolorio-dev  # ACES oracle in tests; `--ocio-config` display path (issue 6)
   libavif-dev         # AVIF HDR output (issue 6)
   libtinyobjloader-dev  # OBJ + MTL loader (issue 5)
+  libtinygltf-dev     # glTF 2.0 loader (issue 5)
   libglfw3-dev        # viewer window (issue 7)
   libimgui-dev        # viewer UI; its GLFW/OpenGL3 backends' sources are compiled in (issue 7)
   libgl-dev           # viewer OpenGL (issue 7)

@@ -10,8 +10,10 @@
 #include "prism/core/error.h"
 #include "prism/scene/builtin_scenes.h"
 #include "prism/scene/loaders/embedded_scenes.h"
+#include "prism/scene/loaders/gltf_scene.h"
 #include "prism/scene/loaders/json_scene.h"
 #include "prism/scene/loaders/obj_scene.h"
+#include "prism/scene/loaders/pbrt_scene.h"
 
 namespace prism {
 
@@ -39,7 +41,9 @@ Scene load_scene(std::string_view name_or_path, const LoadOptions& options) {
                  [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   if (extension == ".json") return loaders::load_json_scene(path, options);
   if (extension == ".obj") return loaders::load_obj_scene(path, options);
-  throw SceneError(fmt::format("cannot read scene '{}': no loader for '{}' files (supported: .json, .obj)",
+  if (extension == ".pbrt") return loaders::load_pbrt_scene(path, options);
+  if (extension == ".gltf" || extension == ".glb") return loaders::load_gltf_scene(path, options);
+  throw SceneError(fmt::format("cannot read scene '{}': no loader for '{}' files (supported: .json, .obj, .pbrt, .gltf, .glb)",
                                path.string(), path.extension().string()));
 }
 

@@ -1,0 +1,47 @@
+#pragma once
+// Internal to the glTF loader: turning a parsed tinygltf::Model into a Scene.
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "prism/scene/loaders/tinygltf_config.h"
+
+#include "prism/scene/load_options.h"
+#include "prism/scene/loaders/texture_cache.h"
+#include "prism/scene/scene.h"
+#include "prism/scene/texture_file.h"
+
+namespace prism::loaders {
+
+class GltfBuilder {
+ public:
+  GltfBuilder(const tinygltf::Model& model, std::string source, const std::filesystem::path& dir,
+              const LoadOptions& options);
+  Scene build();
+
+ private:
+  void check_extensions();
+  void build_materials();
+  Material make_material(const tinygltf::Material& m, int index);
+  int texture(const tinygltf::TextureInfo& info, TextureEncoding encoding, const std::string& where);
+  int texture(int texture_index, const tinygltf::ExtensionMap& extensions, TextureEncoding encoding, const std::string& where);
+  void visit_node(int node, const Transform& parent, int depth);
+  const std::vector<std::uint32_t>& mesh_primitives(int mesh);
+  void add_camera(const tinygltf::Camera& camera, const Transform& to_world, const std::string& name);
+  void add_light(int light, const Transform& to_world);
+  [[noreturn]] void fail(const std::string& message) const;
+
+  const tinygltf::Model& model_;
+  std::string source_;
+  std::filesystem::path dir_;
+  LoadOptions options_;
+  Scene scene_;
+  TextureCache cache_;
+  std::map<std::pair<int, TextureEncoding>, int> image_textures_;
+  std::map<int, std::vector<std::uint32_t>> meshes_;  // glTF mesh → Prism mesh per primitive
+  int default_material_ = -1;
+  std::vector<std::string> warnings_;
+};
+
+}  // namespace prism::loaders

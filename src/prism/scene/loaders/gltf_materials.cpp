@@ -1,0 +1,165 @@
+// glTF 2.0 materials → Prism materials: PBR metallic-roughness with textures, emission
+// (KHR_materials_emissive_strength), transmission + ior (→ dielectric), texture
+// transforms and alpha modes. Mapping in docs/scene-formats.md.
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "prism/core/error.h"
+#include "prism/scene/emission.h"
+#include "prism/scene/loaders/gltf_builder.h"
+#include "prism/scene/loaders/path_safety.h"
+
+namespace prism::loaders {
+namespace {
+
+double number(const tinygltf::Value& object, const char* key, double fallback) {
+  if (!object.IsObject() || !object.Has(key)) return fallback;
+  const auto& v = object.Get(key);
+  return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
+}
+
+const tinygltf::Value* extension(const tinygltf::ExtensionMap& map, const char* name) {
+  const auto it = map.find(name);
+  return it == map.end() ? nullptr : &it->second;
+}
+
+TextureWrap wrap_mode(int mode) {
+  if (mode == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE) return TextureWrap::clamp;
+  if (mode == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT) return TextureWrap::mirror;
+  return TextureWrap::repeat;
+}
+
+Vec3f factor3(const std::vector<double>& v, Vec3f fallback) {
+  if (v.size() < 3) return fallback;
+  return Vec3f(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
+}
+
+}  // namespace
+
+int GltfBuilder::texture(const tinygltf::TextureInfo& info, TextureEncoding encoding, const std::string& where) {
+  if (info.index < 0) return -1;
+  if (info.texCoord != 0) warnings_.push_back(fmt::format("glTF: {}: texCoord {} used as TEXCOORD_0", where, info.texCoord));
+  return texture(info.index, info.extensions, encoding, where);
+}
+
+int GltfBuilder::texture(int index, const tinygltf::ExtensionMap& extensions, TextureEncoding encoding,
+                         const std::string& where) {
+  if (index < 0 || index >= static_cast<int>(model_.textures.size())) fail(fmt::format("{}: texture {} does not exist", where, index));
+  const tinygltf::Texture& t = model_.textures[index];
+  if (t.source < 0 || t.source >= static_cast<int>(model_.images.size())) fail(fmt::format("{}: texture {} has no image", where, index));
+  TextureWrap wrap_s = TextureWrap::repeat, wrap_t = TextureWrap::repeat;
+  if (t.sampler >= 0 && t.sampler < static_cast<int>(model_.samplers.size())) {
+    wrap_s = wrap_mode(model_.samplers[t.sampler].wrapS);
+    wrap_t = wrap_mode(model_.samplers[t.sampler].wrapT);
+  }
+  int result = -1;
+  const auto key = std::make_pair(t.source, encoding);
+  if (const auto it = image_textures_.find(key); it != image_textures_.end()) {
+    result = it->second;
+  } else {
+    const tinygltf::Image& image = model_.images[t.source];
+    const std::string name = !image.uri.empty() && image.uri.rfind("data:", 0) != 0
+                                 ? image.uri
+                                 : fmt::format("{}#image{}", source_, t.source);
+    if (image.image.empty()) fail(fmt::format("{}: image {} has no data", where, t.source));
+    TextureImage decoded = decode_texture_memory(image.image, name, encoding, options_.max_texture_dimension);
+    scene_.textures.push_back(std::move(decoded));
+    result = static_cast<int>(scene_.textures.size() - 1);
+    image_textures_[key] = result;
+  }
+  const TextureImage& base = scene_.textures[result];
+  float offset_u = 0.0f, offset_v = 0.0f, scale_u = 1.0f, scale_v = 1.0f, rotation = 0.0f;
+  if (const tinygltf::Value* tt = extension(extensions, "KHR_texture_transform")) {
+    if (tt->Has("offset") && tt->Get("offset").ArrayLen() == 2) {
+      offset_u = static_cast<float>(tt->Get("offset").Get(0).GetNumberAsDouble());
+      offset_v = static_cast<float>(tt->Get("offset").Get(1).GetNumberAsDouble());
+    }
+    if (tt->Has("scale") && tt->Get("scale").ArrayLen() == 2) {
+      scale_u = static_cast<float>(tt->Get("scale").Get(0).GetNumberAsDouble());
+      scale_v = static_cast<float>(tt->Get("scale").Get(1).GetNumberAsDouble());
+    }
+    rotation = static_cast<float>(number(*tt, "rotation", 0.0));
+    if (tt->Has("texCoord")) warnings_.push_back(fmt::format("glTF: {}: KHR_texture_transform texCoord ignored", where));
+  }
+  if (base.wrap_u == wrap_s && base.wrap_v == wrap_t && offset_u == 0.0f && offset_v == 0.0f && scale_u == 1.0f &&
+      scale_v == 1.0f && rotation == 0.0f)
+    return result;
+  TextureImage copy = base;  // the same texels with other addressing
+  copy.wrap_u = wrap_s;
+  copy.wrap_v = wrap_t;
+  copy.offset_u = offset_u, copy.offset_v = offset_v, copy.scale_u = scale_u, copy.scale_v = scale_v;
+  copy.rotation_radians = rotation;
+  if (!std::isfinite(offset_u + offset_v + scale_u + scale_v + rotation))
+    fail(fmt::format("{}: KHR_texture_transform values are not finite", where));
+  scene_.textures.push_back(std::move(copy));
+  return static_cast<int>(scene_.textures.size() - 1);
+}
+
+Material GltfBuilder::make_material(const tinygltf::Material& src, int index) {
+  const std::string where = fmt::format("materials[{}]", index);
+  Material m;
+  m.name = src.name.empty() ? where : src.name;
+  m.type = MaterialType::metallic_roughness;
+  const auto& pbr = src.pbrMetallicRoughness;
+  m.base_color = factor3(pbr.baseColorFactor, Vec3f(1.0f));
+  m.opacity = pbr.baseColorFactor.size() == 4 ? static_cast<float>(pbr.baseColorFactor[3]) : 1.0f;
+  m.metallic = static_cast<float>(pbr.metallicFactor);
+  m.roughness = static_cast<float>(pbr.roughnessFactor);
+  if (!std::isfinite(m.metallic) || !std::isfinite(m.roughness) || !std::isfinite(m.opacity) ||
+      !std::isfinite(m.base_color.x + m.base_color.y + m.base_color.z))
+    fail(fmt::format("{}: factors must be finite", where));
+  m.metallic = std::clamp(m.metallic, 0.0f, 1.0f);
+  m.roughness = std::clamp(m.roughness, 0.0f, 1.0f);
+  m.opacity = std::clamp(m.opacity, 0.0f, 1.0f);
+  m.base_color_texture = texture(pbr.baseColorTexture, TextureEncoding::srgb, where + ".baseColorTexture");
+  m.metallic_roughness_texture =
+      texture(pbr.metallicRoughnessTexture, TextureEncoding::linear, where + ".metallicRoughnessTexture");
+  if (src.alphaMode == "MASK") m.alpha_mode = AlphaMode::mask;
+  else if (src.alphaMode == "BLEND") m.alpha_mode = AlphaMode::blend;
+  m.alpha_cutoff = static_cast<float>(src.alphaCutoff);
+
+  // Emission: glTF's emissive factor is a linear colour; KHR_materials_emissive_strength
+  // multiplies it. We map emissive (1, 1, 1) at strength 1 to a luminance of 1 nit, so the
+  // luminance is the factor's CIE Y times the strength (documented in scene-formats.md).
+  const Vec3f emissive = factor3(src.emissiveFactor, Vec3f(0.0f));
+  double strength = 1.0;
+  if (const tinygltf::Value* e = extension(src.extensions, "KHR_materials_emissive_strength"))
+    strength = number(*e, "emissiveStrength", 1.0);
+  if (!(strength >= 0.0) || !std::isfinite(strength)) fail(fmt::format("{}: emissiveStrength must be ≥ 0", where));
+  if (max_component(emissive) > 0.0f) {
+    m.emission.color = emissive;
+    m.emission.luminance_nits = static_cast<float>(relative_luminance(emissive, ColorPickerSpace::srgb) * strength);
+    m.emission.texture = texture(src.emissiveTexture, TextureEncoding::srgb, where + ".emissiveTexture");
+    m.emission.two_sided = src.doubleSided;
+  }
+
+  const tinygltf::Value* transmission = extension(src.extensions, "KHR_materials_transmission");
+  const tinygltf::Value* ior = extension(src.extensions, "KHR_materials_ior");
+  if (ior) {
+    const double eta = number(*ior, "ior", 1.5);
+    if (!(eta >= 1.0 && eta <= 10.0) && eta != 0.0) fail(fmt::format("{}: ior must be between 1 and 10", where));
+    m.ior = static_cast<float>(eta == 0.0 ? 1.5 : eta);
+  }
+  if (transmission) {
+    m.transmission = static_cast<float>(std::clamp(number(*transmission, "transmissionFactor", 0.0), 0.0, 1.0));
+    if (m.transmission > 0.0f) {
+      // A transmissive glTF material becomes Prism's dielectric, tinted by the base colour.
+      m.type = MaterialType::dielectric;
+      m.thin_walled = extension(src.extensions, "KHR_materials_volume") == nullptr;
+      if (m.transmission < 1.0f || m.metallic > 0.0f)
+        warnings_.push_back(fmt::format("glTF: {}: partial transmission/metallic mixed into a dielectric", where));
+    }
+  }
+  if (src.normalTexture.index >= 0 || src.occlusionTexture.index >= 0) {
+    // Occlusion is meaningless for a path tracer; normal maps are not applied yet.
+  }
+  return m;
+}
+
+void GltfBuilder::build_materials() {
+  for (std::size_t i = 0; i < model_.materials.size(); ++i)
+    scene_.materials.push_back(make_material(model_.materials[i], static_cast<int>(i)));
+}
+
+}  // namespace prism::loaders

@@ -1,0 +1,137 @@
+// pbrt-v4 lights → Prism lights in photometric units. pbrt-v4 normalises every light
+// spectrum to unit luminance before applying `scale` (an RGB colour keeps its own
+// luminance), so a colour's CIE Y times `scale` is taken as candela (point, spot), lux
+// (distant) or nits (infinite, area lights). `power` is taken in the same photometric
+// scale (lumens).
+#include <cmath>
+#include <numbers>
+
+#include <fmt/format.h>
+
+#include "prism/core/error.h"
+#include "prism/scene/emission.h"
+#include "prism/scene/loaders/pbrt_builder.h"
+
+namespace prism::loaders {
+namespace {
+
+struct LightColor {
+  Vec3f color{1.0f};
+  float luminance = 1.0f;
+};
+
+LightColor light_color(const PbrtParams& p, std::string_view name, std::vector<std::string>& approximations) {
+  LightColor c;
+  const Vec3f rgb = p.get_color(name, PbrtSpectrumUse::illuminant, approximations).value_or(Vec3f(1.0f));
+  const double scale = p.get_float("scale", 1.0);
+  if (!(scale >= 0.0)) p.fail(*p.find("scale"), "must not be negative");
+  c.color = rgb;
+  c.luminance = static_cast<float>(relative_luminance(rgb, ColorPickerSpace::srgb) * scale);
+  return c;
+}
+
+double optional_power(const PbrtParams& p) {
+  const double power = p.get_float("power", -1.0);
+  if (p.has("power") && !(power >= 0.0)) p.fail(*p.find("power"), "must not be negative");
+  return power;
+}
+
+}  // namespace
+
+void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
+  if (!state_.ctm.is_affine()) throw SceneError(fmt::format("{}:{}: LightSource: the transform is projective", p.source, p.line));
+  const Transform t = state_.ctm.to_transform();
+  Light light;
+  light.name = fmt::format("{}-{}", type, p.line);
+  if (type == "point" || type == "spot") {
+    const LightColor c = light_color(p, "I", approximations_);
+    light.type = type == "point" ? LightType::point : LightType::spot;
+    light.color = c.color;
+    light.intensity = c.luminance;
+    light.position = t.apply_point(p.get_point3("from").value_or(Vec3f(0.0f)));
+    double solid_angle = 4.0 * std::numbers::pi;
+    if (type == "spot") {
+      const Vec3f to = t.apply_point(p.get_point3("to").value_or(Vec3f(0.0f, 0.0f, 1.0f)));
+      const Vec3f axis = to - light.position;
+      if (!(length(axis) > 0.0f)) throw SceneError(fmt::format("{}:{}: spot light: \"from\" equals \"to\"", p.source, p.line));
+      light.direction = normalize(axis);
+      const double cone = p.get_float("coneangle", 30.0), delta = p.get_float("conedelta", 5.0);
+      if (!(cone > 0.0 && cone <= 180.0) || !(delta >= 0.0))
+        throw SceneError(fmt::format("{}:{}: spot light: coneangle must be in (0, 180] and conedelta ≥ 0", p.source, p.line));
+      light.spot_outer_angle_degrees = static_cast<float>(cone);
+      light.spot_inner_angle_degrees = static_cast<float>(std::max(cone - delta, 0.0));
+      // pbrt-v4's spot power normalisation: the smoothstep falloff integrates to
+      // 2π (1 − (cos inner + cos outer) / 2).
+      const double ci = std::cos(light.spot_inner_angle_degrees * std::numbers::pi / 180.0);
+      const double co = std::cos(cone * std::numbers::pi / 180.0);
+      solid_angle = 2.0 * std::numbers::pi * (1.0 - 0.5 * (ci + co));
+    }
+    const double power = optional_power(p);
+    if (power >= 0.0) light.intensity = static_cast<float>(power / std::max(solid_angle, 1e-12));
+  } else if (type == "distant") {
+    const LightColor c = light_color(p, "L", approximations_);
+    light.type = LightType::directional;
+    light.color = c.color;
+    light.intensity = c.luminance;
+    const Vec3f from = p.get_point3("from").value_or(Vec3f(0.0f));
+    const Vec3f to = p.get_point3("to").value_or(Vec3f(0.0f, 0.0f, 1.0f));
+    const Vec3f d = t.apply_vector(to - from);
+    if (!(length(d) > 0.0f)) throw SceneError(fmt::format("{}:{}: distant light: \"from\" equals \"to\"", p.source, p.line));
+    light.direction = normalize(d);
+    const double lux = p.get_float("illuminance", -1.0);
+    if (p.has("illuminance")) {
+      if (!(lux >= 0.0)) p.fail(*p.find("illuminance"), "must not be negative");
+      light.intensity = static_cast<float>(lux);
+    }
+  } else if (type == "infinite") {
+    light.type = LightType::environment;
+    const std::string file = p.get_string("filename", "");
+    if (!file.empty()) {
+      if (p.has("L")) throw SceneError(fmt::format("{}:{}: infinite light: give \"L\" or \"filename\", not both", p.source, p.line));
+      light.environment_texture = textures_->load(resolve(p, "filename", file), TextureEncoding::linear);
+      light.intensity = static_cast<float>(p.get_float("scale", 1.0));
+      approximations_.push_back(fmt::format(
+          "infinite light (line {}): the image is read as equirectangular (pbrt-v4 uses equal-area octahedral maps)",
+          p.line));
+    } else {
+      const LightColor c = light_color(p, "L", approximations_);
+      light.color = c.color;
+      light.intensity = c.luminance;
+    }
+    light.environment_to_world = t;
+    if (p.has("illuminance")) ignore("infinite light \"illuminance\"", p);
+    p.find("portal");
+    for (const Light& l : scene_.lights)
+      if (l.type == LightType::environment) {
+        ignore("second infinite light", p);
+        return;
+      }
+  } else {
+    ignore(fmt::format("LightSource \"{}\"", type), p);
+    for (const auto& param : p.params) param.used = true;
+    return;
+  }
+  note_unused(fmt::format("LightSource \"{}\"", type), p);
+  scene_.lights.push_back(std::move(light));
+}
+
+void PbrtBuilder::area_light_source(const std::string& type, const PbrtParams& p) {
+  if (type != "diffuse") {
+    ignore(fmt::format("AreaLightSource \"{}\"", type), p);
+    for (const auto& param : p.params) param.used = true;
+    return;
+  }
+  const LightColor c = light_color(p, "L", approximations_);
+  PbrtAreaLight light;
+  light.color = c.color;
+  light.luminance_nits = c.luminance;
+  light.two_sided = p.get_bool("twosided", false);
+  const double power = optional_power(p);
+  if (power >= 0.0) light.power = power;
+  if (p.has("filename")) ignore("AreaLightSource \"filename\"", p);
+  note_unused("AreaLightSource", p);
+  state_.area_light = light;
+  ++area_light_id_;
+}
+
+}  // namespace prism::loaders

@@ -1,0 +1,180 @@
+// pbrt-v4 materials and textures → Prism materials (mapping in docs/scene-formats.md).
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "prism/bsdf/ior.h"
+#include "prism/core/error.h"
+#include "prism/scene/loaders/pbrt_builder.h"
+
+namespace prism::loaders {
+namespace {
+
+// pbrt's roughness parameter → Prism's perceptual roughness r (α = r²). With
+// remaproughness pbrt uses α = sqrt(roughness); without it α = roughness.
+float prism_roughness(double pbrt_roughness, bool remap) {
+  const double alpha = remap ? std::sqrt(pbrt_roughness) : pbrt_roughness;
+  return static_cast<float>(std::sqrt(std::clamp(alpha, 0.0, 1.0)));
+}
+
+// "metal-Au-eta" → "Au" when it names a metal Prism has tables for.
+std::string metal_name(const std::string& spectrum) {
+  for (const char* metal : {"Au", "Ag", "Cu", "Al"})
+    if (spectrum == fmt::format("metal-{}-eta", metal) || spectrum == fmt::format("metal-{}-k", metal)) return metal;
+  return {};
+}
+
+const std::string* named_spectrum(const PbrtParams& p, std::string_view name) {
+  const PbrtParam* param = p.find(name);
+  if (!param || param->type != "spectrum" || param->strings.size() != 1) return nullptr;
+  return &param->strings[0];
+}
+
+}  // namespace
+
+std::optional<Vec3f> PbrtBuilder::reflectance(const PbrtParams& p, std::string_view name, int& texture) {
+  const PbrtParam* param = p.find(name);
+  if (!param) return std::nullopt;
+  if (param->type == "texture") {
+    const std::string tex = p.get_string(name, "");
+    const auto it = named_textures_.find(tex);
+    if (it == named_textures_.end()) p.fail(*param, fmt::format("unknown texture '{}'", tex));
+    texture = it->second.image;
+    return it->second.value;
+  }
+  return p.get_color(name, PbrtSpectrumUse::reflectance, approximations_);
+}
+
+void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, const std::string& name) {
+  Material m;
+  m.name = name.empty() ? fmt::format("{}-{}", type, p.line) : name;
+  const bool remap = p.get_bool("remaproughness", true);
+  const auto roughness = [&]() {
+    const double r = p.get_float("roughness", 0.0);
+    const double u = p.get_float("uroughness", r), v = p.get_float("vroughness", r);
+    if (r < 0 || u < 0 || v < 0) throw SceneError(fmt::format("{}:{}: roughness must not be negative", p.source, p.line));
+    if (u != v) approximations_.push_back(fmt::format("Material line {}: anisotropic roughness as its mean", p.line));
+    if (p.has("roughness") && p.find("roughness")->type == "texture")
+      p.fail(*p.find("roughness"), "textured roughness is not supported");
+    return prism_roughness(0.5 * (u + v), remap);
+  };
+  std::string effective = type;
+  if (type == "coateddiffuse" || type == "diffusetransmission" || type == "subsurface") {
+    approximations_.push_back(fmt::format("Material \"{}\" (line {}) as diffuse", type, p.line));
+    effective = "diffuse";
+  } else if (type == "coatedconductor") {
+    approximations_.push_back(fmt::format("Material \"coatedconductor\" (line {}) as conductor", p.line));
+    effective = "conductor";
+  } else if (type == "thindielectric") {
+    m.thin_walled = true;
+    effective = "dielectric";
+  }
+  if (effective == "diffuse") {
+    m.type = MaterialType::diffuse;
+    m.base_color = reflectance(p, "reflectance", m.base_color_texture).value_or(Vec3f(0.5f));
+    if (type != "diffuse")
+      for (const char* n : {"roughness", "interface.roughness", "thickness", "albedo", "g"}) p.find(n);
+  } else if (effective == "conductor") {
+    m.type = MaterialType::conductor;
+    m.roughness = roughness();
+    if (auto r = reflectance(p, "reflectance", m.base_color_texture)) {
+      m.conductor_fresnel = ConductorFresnel::schlick;
+      m.base_color = *r;
+    } else {
+      const std::string* eta = named_spectrum(p, "eta");
+      const std::string* k = named_spectrum(p, "k");
+      std::string metal = eta ? metal_name(*eta) : "Cu";
+      if (k && metal_name(*k) != metal) metal.clear();
+      if ((p.has("eta") && !eta) || (p.has("k") && !k) || metal.empty()) {
+        approximations_.push_back(fmt::format("conductor (line {}) eta/k not a named metal of Au/Ag/Cu/Al: copper used", p.line));
+        metal = "Cu";
+      }
+      m.conductor_fresnel = ConductorFresnel::complex_ior;
+      m.conductor_name = metal;
+      m.base_color = Vec3f(1.0f);
+    }
+  } else if (effective == "dielectric") {
+    m.type = MaterialType::dielectric;
+    m.roughness = roughness();
+    m.base_color = Vec3f(1.0f);
+    if (const std::string* eta = named_spectrum(p, "eta")) {
+      if (*eta == "glass-BK7") {
+        const bsdf::SellmeierIor bk7 = bsdf::sellmeier_bk7();
+        m.dispersion = DispersionModel::sellmeier;
+        for (int i = 0; i < 3; ++i) {
+          m.dispersion_coefficients[i] = static_cast<float>(bk7.b[i]);
+          m.dispersion_coefficients[3 + i] = static_cast<float>(bk7.c_um2[i]);
+        }
+        m.ior = static_cast<float>(bk7(587.56));
+      } else {
+        approximations_.push_back(fmt::format("dielectric (line {}) eta \"{}\" as 1.5", p.line, *eta));
+        m.ior = 1.5f;
+      }
+    } else {
+      const double eta_value = p.get_float("eta", 1.5);
+      if (!(eta_value > 0.0) || eta_value > 10.0) p.fail(*p.find("eta"), "must be between 0 and 10");
+      m.ior = static_cast<float>(eta_value);
+    }
+  } else if (type == "interface") {
+    ignore("Material \"interface\" (treated as diffuse)", p);
+    m.base_color = Vec3f(0.5f);
+  } else {
+    ignore(fmt::format("Material \"{}\" (treated as diffuse 0.5)", type), p);
+    m.base_color = Vec3f(0.5f);
+    for (const auto& param : p.params) param.used = true;
+  }
+  note_unused(fmt::format("Material \"{}\"", type), p);
+  scene_.materials.push_back(std::move(m));
+  const int index = static_cast<int>(scene_.materials.size() - 1);
+  if (name.empty()) {
+    state_.material = index;
+  } else {
+    named_materials_[name] = index;
+  }
+}
+
+void PbrtBuilder::texture(const std::string& name, const std::string& value_type, const std::string& klass,
+                          const PbrtParams& p) {
+  PbrtTexture t;
+  if (value_type != "spectrum" && value_type != "float")
+    throw SceneError(fmt::format("{}:{}: Texture '{}': type must be \"spectrum\" or \"float\"", p.source, p.line, name));
+  if (value_type == "float") ignore(fmt::format("float Texture '{}'", name), p);
+  if (klass == "constant") {
+    t.value = p.get_color("value", PbrtSpectrumUse::reflectance, approximations_).value_or(Vec3f(1.0f));
+  } else if (klass == "imagemap") {
+    const std::string file = p.get_string("filename", "");
+    if (file.empty()) throw SceneError(fmt::format("{}:{}: Texture '{}': imagemap needs a filename", p.source, p.line, name));
+    const std::string encoding = p.get_string("encoding", "sRGB");
+    const std::string wrap = p.get_string("wrap", "repeat");
+    TextureWrap w = TextureWrap::repeat;
+    if (wrap == "clamp" || wrap == "black") w = TextureWrap::clamp;
+    else if (wrap == "octahedralsphere") w = TextureWrap::mirror;
+    else if (wrap != "repeat") p.fail(*p.find("wrap"), "expected repeat, clamp, black or octahedralsphere");
+    if (wrap == "black") approximations_.push_back(fmt::format("Texture '{}' wrap \"black\" as clamp", name));
+    const TextureEncoding enc = encoding == "linear" ? TextureEncoding::linear : TextureEncoding::srgb;
+    if (encoding != "linear" && encoding != "sRGB")
+      approximations_.push_back(fmt::format("Texture '{}' encoding \"{}\" as sRGB", name, encoding));
+    t.image = textures_->load(resolve(p, "filename", file), enc, w, w);
+    const double su = p.get_float("uscale", 1.0), sv = p.get_float("vscale", 1.0);
+    const double du = p.get_float("udelta", 0.0), dv = p.get_float("vdelta", 0.0);
+    if (su != 1.0 || sv != 1.0 || du != 0.0 || dv != 0.0) {
+      TextureImage copy = scene_.textures[t.image];
+      copy.scale_u = static_cast<float>(su);
+      copy.scale_v = static_cast<float>(sv);
+      copy.offset_u = static_cast<float>(du);
+      copy.offset_v = static_cast<float>(dv);
+      scene_.textures.push_back(std::move(copy));
+      t.image = static_cast<int>(scene_.textures.size() - 1);
+    }
+    const double scale = p.get_float("scale", 1.0);
+    t.value = Vec3f(static_cast<float>(scale));
+    for (const char* n : {"filter", "maxanisotropy", "invert"}) p.find(n);
+  } else {
+    ignore(fmt::format("Texture \"{}\" '{}' (treated as constant 1)", klass, name), p);
+    for (const auto& param : p.params) param.used = true;
+  }
+  note_unused(fmt::format("Texture '{}'", name), p);
+  named_textures_[name] = t;
+}
+
+}  // namespace prism::loaders

@@ -1,0 +1,194 @@
+#include "prism/scene/loaders/pbrt_params.h"
+
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "prism/color/color_space.h"
+#include "prism/color/spectrum.h"
+#include "prism/core/error.h"
+
+namespace prism::loaders {
+namespace {
+
+bool is_string_type(std::string_view t) { return t == "string" || t == "texture" || t == "bool"; }
+
+// XYZ (relative) → linear Rec.709.
+Vec3f xyz_to_srgb(const Vec3d& xyz) {
+  const Vec3d rgb = color::color_space("srgb").xyz_to_rgb * xyz;
+  return Vec3f(static_cast<float>(std::max(rgb.x, 0.0)), static_cast<float>(std::max(rgb.y, 0.0)),
+               static_cast<float>(std::max(rgb.z, 0.0)));
+}
+
+template <typename F>
+Vec3f spectrum_color(const F& f, PbrtSpectrumUse use) {
+  const Vec3d xyz = color::spectrum_to_xyz(f);
+  if (use == PbrtSpectrumUse::illuminant) return xyz.y > 0.0 ? xyz_to_srgb(xyz / xyz.y) : Vec3f(0.0f);
+  const double white = color::spectrum_to_xyz([](double) { return 1.0; }).y;
+  return xyz_to_srgb(xyz / white);
+}
+
+}  // namespace
+
+double parse_pbrt_number(const PbrtTokenizer& tokens, const PbrtToken& token) {
+  double value = 0.0;
+  const char* first = token.text.data();
+  const char* last = first + token.text.size();
+  if (first != last && *first == '+') ++first;
+  const auto [ptr, ec] = std::from_chars(first, last, value);
+  if (ec != std::errc() || ptr != last || !std::isfinite(value))
+    tokens.fail(token.line, fmt::format("expected a number, found '{}'", token.text));
+  return value;
+}
+
+PbrtParams read_pbrt_params(PbrtTokenizer& tokens, int directive_line) {
+  PbrtParams list;
+  list.source = tokens.source();
+  list.line = directive_line;
+  while (tokens.peek().kind == PbrtTokenKind::string) {
+    const PbrtToken decl = tokens.next();
+    std::istringstream words(decl.text);
+    PbrtParam p;
+    std::string extra;
+    if (!(words >> p.type >> p.name) || (words >> extra))
+      tokens.fail(decl.line, fmt::format("expected a parameter declaration \"type name\", found \"{}\"", decl.text));
+    p.line = decl.line;
+    const auto add_value = [&](const PbrtToken& v) {
+      if (v.kind == PbrtTokenKind::string) {
+        p.strings.push_back(v.text);
+      } else if (v.kind == PbrtTokenKind::word && (v.text == "true" || v.text == "false")) {
+        p.strings.push_back(v.text);
+      } else if (v.kind == PbrtTokenKind::word) {
+        p.numbers.push_back(parse_pbrt_number(tokens, v));
+      } else {
+        tokens.fail(v.line, fmt::format("expected a value for parameter '{}'", p.name));
+      }
+    };
+    if (tokens.peek().kind == PbrtTokenKind::open_bracket) {
+      tokens.next();
+      while (tokens.peek().kind != PbrtTokenKind::close_bracket) {
+        if (tokens.peek().kind == PbrtTokenKind::end) tokens.fail(decl.line, fmt::format("unterminated '[' for parameter '{}'", p.name));
+        add_value(tokens.next());
+      }
+      tokens.next();
+    } else {
+      add_value(tokens.next());
+    }
+    if (!p.numbers.empty() && !p.strings.empty())
+      tokens.fail(decl.line, fmt::format("parameter '{}' mixes numbers and strings", p.name));
+    if (is_string_type(p.type) && !p.numbers.empty())
+      tokens.fail(decl.line, fmt::format("parameter '{}' of type {} needs string values", p.name, p.type));
+    list.params.push_back(std::move(p));
+  }
+  return list;
+}
+
+void PbrtParams::fail(const PbrtParam& p, std::string_view message) const {
+  throw SceneError(fmt::format("{}:{}: parameter '{}': {}", source, p.line, p.name, message));
+}
+
+const PbrtParam* PbrtParams::find(std::string_view name) const {
+  for (const auto& p : params)
+    if (p.name == name) {
+      p.used = true;
+      return &p;
+    }
+  return nullptr;
+}
+
+double PbrtParams::get_float(std::string_view name, double fallback) const {
+  const PbrtParam* p = find(name);
+  if (!p) return fallback;
+  if (p->numbers.size() != 1) fail(*p, "expected one number");
+  return p->numbers[0];
+}
+
+int PbrtParams::get_int(std::string_view name, int fallback) const {
+  const double v = get_float(name, fallback);
+  if (v != std::floor(v) || std::abs(v) > 2e9) fail(*find(name), "expected an integer");
+  return static_cast<int>(v);
+}
+
+bool PbrtParams::get_bool(std::string_view name, bool fallback) const {
+  const PbrtParam* p = find(name);
+  if (!p) return fallback;
+  if (p->strings.size() != 1 || (p->strings[0] != "true" && p->strings[0] != "false")) fail(*p, "expected true or false");
+  return p->strings[0] == "true";
+}
+
+std::string PbrtParams::get_string(std::string_view name, std::string fallback) const {
+  const PbrtParam* p = find(name);
+  if (!p) return fallback;
+  if (p->strings.size() != 1) fail(*p, "expected one string");
+  return p->strings[0];
+}
+
+std::vector<double> PbrtParams::get_numbers(std::string_view name) const {
+  const PbrtParam* p = find(name);
+  if (!p) return {};
+  if (!p->strings.empty()) fail(*p, "expected numbers");
+  return p->numbers;
+}
+
+std::optional<Vec3f> PbrtParams::get_point3(std::string_view name) const {
+  const PbrtParam* p = find(name);
+  if (!p) return std::nullopt;
+  if (p->numbers.size() != 3) fail(*p, "expected three numbers");
+  return Vec3f(static_cast<float>(p->numbers[0]), static_cast<float>(p->numbers[1]), static_cast<float>(p->numbers[2]));
+}
+
+std::optional<Vec3f> PbrtParams::get_color(std::string_view name, PbrtSpectrumUse use,
+                                           std::vector<std::string>& approximations) const {
+  const PbrtParam* p = find(name);
+  if (!p) return std::nullopt;
+  const auto where = [&] { return fmt::format("'{}' (line {})", p->name, p->line); };
+  if (p->type == "rgb") {
+    if (p->numbers.size() != 3) fail(*p, "expected three numbers");
+    for (double v : p->numbers)
+      if (v < 0.0) fail(*p, "colour components must not be negative");
+    return Vec3f(static_cast<float>(p->numbers[0]), static_cast<float>(p->numbers[1]), static_cast<float>(p->numbers[2]));
+  }
+  if (p->type == "float") {
+    if (p->numbers.size() != 1 || p->numbers[0] < 0.0) fail(*p, "expected one non-negative number");
+    return Vec3f(static_cast<float>(p->numbers[0]));
+  }
+  if (p->type == "blackbody") {
+    if (p->numbers.size() != 1 || !(p->numbers[0] > 0.0) || p->numbers[0] > 1e6) fail(*p, "expected a temperature in kelvin");
+    approximations.push_back(fmt::format("{} blackbody {} K as its sRGB colour", where(), p->numbers[0]));
+    const color::BlackbodySpectrum bb(p->numbers[0], true);
+    return spectrum_color([&](double nm) { return bb(nm); }, use);
+  }
+  if (p->type == "spectrum") {
+    if (!p->strings.empty()) {
+      if (p->strings.size() != 1) fail(*p, "expected one spectrum name");
+      approximations.push_back(fmt::format("{} named spectrum \"{}\" as a grey", where(), p->strings[0]));
+      return use == PbrtSpectrumUse::illuminant ? Vec3f(1.0f) : Vec3f(0.5f);
+    }
+    const auto& v = p->numbers;
+    if (v.size() < 4 || v.size() % 2 != 0) fail(*p, "expected (wavelength, value) pairs");
+    for (std::size_t i = 0; i < v.size(); i += 2)
+      if ((i > 0 && v[i] <= v[i - 2]) || v[i + 1] < 0.0) fail(*p, "wavelengths must increase and values be non-negative");
+    approximations.push_back(fmt::format("{} sampled spectrum as its sRGB colour", where()));
+    const auto f = [&](double nm) {
+      if (nm <= v.front()) return v[1];
+      if (nm >= v[v.size() - 2]) return v.back();
+      std::size_t i = 0;
+      while (v[i + 2] < nm) i += 2;
+      const double t = (nm - v[i]) / (v[i + 2] - v[i]);
+      return v[i + 1] + t * (v[i + 3] - v[i + 1]);
+    };
+    return spectrum_color(f, use);
+  }
+  fail(*p, fmt::format("type '{}' is not a colour (rgb, spectrum, blackbody)", p->type));
+}
+
+std::vector<std::string> PbrtParams::unused() const {
+  std::vector<std::string> names;
+  for (const auto& p : params)
+    if (!p.used) names.push_back(fmt::format("\"{}\" (line {})", p.name, p.line));
+  return names;
+}
+
+}  // namespace prism::loaders

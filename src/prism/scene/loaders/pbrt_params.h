@@ -1,0 +1,55 @@
+#pragma once
+// Parameter lists of pbrt-v4 directives: `"type name" value` or `"type name" [values]`.
+// Lookups mark a parameter used, so the loader can warn about every parameter it ignored.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "prism/core/vec.h"
+#include "prism/scene/loaders/pbrt_tokenizer.h"
+
+namespace prism::loaders {
+
+struct PbrtParam {
+  std::string type, name;
+  std::vector<double> numbers;
+  std::vector<std::string> strings;  // string, texture, bool ("true"/"false") and named spectra
+  int line = 0;
+  mutable bool used = false;
+};
+
+// How a spectrum is approximated by an RGB colour: reflectances under equal energy
+// (white = 1), illuminants normalised to luminance 1 as pbrt-v4 normalises light spectra.
+enum class PbrtSpectrumUse { reflectance, illuminant };
+
+class PbrtParams {
+ public:
+  std::vector<PbrtParam> params;
+  std::string source;  // file name, for messages
+  int line = 0;        // the directive's line
+
+  const PbrtParam* find(std::string_view name) const;
+  bool has(std::string_view name) const { return find(name) != nullptr; }
+  double get_float(std::string_view name, double fallback) const;
+  int get_int(std::string_view name, int fallback) const;
+  bool get_bool(std::string_view name, bool fallback) const;
+  std::string get_string(std::string_view name, std::string fallback) const;
+  std::vector<double> get_numbers(std::string_view name) const;  // empty when absent
+  std::optional<Vec3f> get_point3(std::string_view name) const;
+  // rgb / spectrum / blackbody / float parameters as a linear Rec.709 colour. Spectra are
+  // approximated; each approximation is described in `approximations`.
+  std::optional<Vec3f> get_color(std::string_view name, PbrtSpectrumUse use,
+                                 std::vector<std::string>& approximations) const;
+  // Names of parameters no lookup asked for, with their lines ("name (line 4)").
+  std::vector<std::string> unused() const;
+
+  [[noreturn]] void fail(const PbrtParam& p, std::string_view message) const;
+};
+
+// Reads parameters until the next token is not a quoted string.
+PbrtParams read_pbrt_params(PbrtTokenizer& tokens, int directive_line);
+
+// Parses a bare word as a number; throws SceneError at `line` otherwise.
+double parse_pbrt_number(const PbrtTokenizer& tokens, const PbrtToken& token);
+
+}  // namespace prism::loaders

@@ -1,0 +1,89 @@
+#include "prism/scene/loaders/pbrt_tokenizer.h"
+
+#include <fmt/format.h>
+
+#include "prism/core/error.h"
+
+namespace prism::loaders {
+
+PbrtTokenizer::PbrtTokenizer(std::string_view text, std::string source) : text_(text), source_(std::move(source)) {}
+
+void PbrtTokenizer::fail(int line, std::string_view message) const {
+  throw SceneError(fmt::format("{}:{}: {}", source_, line, message));
+}
+
+const PbrtToken& PbrtTokenizer::peek() {
+  if (!has_lookahead_) {
+    lookahead_ = scan();
+    has_lookahead_ = true;
+  }
+  return lookahead_;
+}
+
+PbrtToken PbrtTokenizer::next() {
+  if (has_lookahead_) {
+    has_lookahead_ = false;
+    return std::move(lookahead_);
+  }
+  return scan();
+}
+
+PbrtToken PbrtTokenizer::scan() {
+  const auto is_space = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; };
+  while (pos_ < text_.size()) {
+    const char c = text_[pos_];
+    if (c == '\n') {
+      ++line_;
+      ++pos_;
+    } else if (is_space(c)) {
+      ++pos_;
+    } else if (c == '#') {
+      while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+    } else {
+      break;
+    }
+  }
+  PbrtToken token;
+  token.line = line_;
+  if (pos_ >= text_.size()) return token;
+  const char c = text_[pos_];
+  if (c == '[' || c == ']') {
+    token.kind = c == '[' ? PbrtTokenKind::open_bracket : PbrtTokenKind::close_bracket;
+    token.text = std::string(1, c);
+    ++pos_;
+    return token;
+  }
+  if (c == '"') {
+    token.kind = PbrtTokenKind::string;
+    ++pos_;
+    while (true) {
+      if (pos_ >= text_.size()) fail(token.line, "unterminated string");
+      const char s = text_[pos_++];
+      if (s == '"') break;
+      if (s == '\n') fail(token.line, "newline inside a string");
+      if (s == '\\') {
+        if (pos_ >= text_.size()) fail(token.line, "unterminated string");
+        const char e = text_[pos_++];
+        switch (e) {
+          case 'n': token.text += '\n'; break;
+          case 't': token.text += '\t'; break;
+          case '\\': token.text += '\\'; break;
+          case '"': token.text += '"'; break;
+          default: fail(line_, fmt::format("unknown escape '\\{}' in a string", e));
+        }
+      } else {
+        token.text += s;
+      }
+    }
+    return token;
+  }
+  token.kind = PbrtTokenKind::word;
+  const std::size_t start = pos_;
+  while (pos_ < text_.size() && !is_space(text_[pos_]) && text_[pos_] != '"' && text_[pos_] != '[' &&
+         text_[pos_] != ']' && text_[pos_] != '#')
+    ++pos_;
+  token.text = std::string(text_.substr(start, pos_ - start));
+  return token;
+}
+
+}  // namespace prism::loaders

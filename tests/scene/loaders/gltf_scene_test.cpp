@@ -1,0 +1,237 @@
+// glTF 2.0 loader tests on documents generated here (no model files from ../shared).
+#include "prism/scene/loaders/gltf_scene.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <numbers>
+
+#include "loader_test_files.h"
+#include "prism/core/error.h"
+#include "prism/io/png.h"
+#include "prism/scene/emission.h"
+#include "prism/scene/load_scene.h"
+
+namespace prism::loaders {
+namespace {
+
+std::string base64(const std::string& bytes) {
+  static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  std::size_t i = 0;
+  for (; i + 2 < bytes.size(); i += 3) {
+    const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) | (static_cast<unsigned char>(bytes[i + 1]) << 8) |
+                       static_cast<unsigned char>(bytes[i + 2]);
+    out += {k[v >> 18], k[(v >> 12) & 63], k[(v >> 6) & 63], k[v & 63]};
+  }
+  if (i + 1 == bytes.size()) {
+    const unsigned v = static_cast<unsigned char>(bytes[i]) << 16;
+    out += {k[v >> 18], k[(v >> 12) & 63], '=', '='};
+  } else if (i + 2 == bytes.size()) {
+    const unsigned v = (static_cast<unsigned char>(bytes[i]) << 16) | (static_cast<unsigned char>(bytes[i + 1]) << 8);
+    out += {k[v >> 18], k[(v >> 12) & 63], k[(v >> 6) & 63], '='};
+  }
+  return out;
+}
+
+template <typename T>
+void append(std::string& s, std::initializer_list<T> values) {
+  for (T v : values) s.append(reinterpret_cast<const char*>(&v), sizeof(T));
+}
+
+// A unit quad in the xy plane: positions (48 B), uvs (32 B), ushort indices (12 B).
+std::string quad_buffer() {
+  std::string b;
+  append<float>(b, {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0});
+  append<float>(b, {0, 1, 1, 1, 1, 0, 0, 0});
+  append<std::uint16_t>(b, {0, 1, 2, 0, 2, 3});
+  return b;
+}
+
+// The JSON of a document around quad_buffer(); `buffer_uri` empty: GLB's binary chunk.
+std::string quad_document(const std::string& buffer_uri, const std::string& extra_top = "",
+                          const std::string& materials = R"([{"pbrMetallicRoughness": {"baseColorFactor": [0.5, 0.25, 1, 1], "metallicFactor": 0.3, "roughnessFactor": 0.6}}])") {
+  const std::string uri = buffer_uri.empty() ? "" : R"("uri": ")" + buffer_uri + R"(", )";
+  return R"({"asset": {"version": "2.0"}, )" + extra_top + R"(
+  "buffers": [{)" + uri + R"("byteLength": 92}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 32},
+                  {"buffer": 0, "byteOffset": 80, "byteLength": 12}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3", "min": [0,0,0], "max": [1,1,0]},
+                {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC2"},
+                {"bufferView": 2, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+  "meshes": [{"name": "quad", "primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1}, "indices": 2, "material": 0}]}],
+  "materials": )" + materials + R"(,
+  "cameras": [{"type": "perspective", "perspective": {"yfov": 0.5, "aspectRatio": 2.0, "znear": 0.1}}],
+  "nodes": [{"mesh": 0, "translation": [10, 0, 0]},
+            {"children": [2], "rotation": [0, 0, 0.7071068, 0.7071068]},
+            {"mesh": 0, "scale": [2, 2, 2]},
+            {"camera": 0, "translation": [0, 0, 5]}],
+  "scenes": [{"nodes": [0, 1, 3]}]
+})";
+}
+
+std::string glb(const std::string& json, const std::string& bin) {
+  std::string j = json, b = bin;
+  while (j.size() % 4) j += ' ';
+  while (b.size() % 4) b += '\0';
+  std::string out = "glTF";
+  append<std::uint32_t>(out, {2, static_cast<std::uint32_t>(12 + 8 + j.size() + 8 + b.size())});
+  append<std::uint32_t>(out, {static_cast<std::uint32_t>(j.size()), 0x4E4F534Au});
+  out += j;
+  append<std::uint32_t>(out, {static_cast<std::uint32_t>(b.size()), 0x004E4942u});
+  out += b;
+  return out;
+}
+
+Scene parse(const std::string& text, const std::filesystem::path& dir = {}, LoadOptions options = {}) {
+  return parse_gltf_scene({reinterpret_cast<const unsigned char*>(text.data()), text.size()}, "test.gltf", dir, options);
+}
+
+std::string parse_error(const std::string& text, const std::filesystem::path& dir = {}) {
+  return test::error_of<SceneError>([&] { parse(text, dir); });
+}
+
+const std::string kDataUri = "data:application/octet-stream;base64,";
+
+TEST(GltfLoader, NodeHierarchyInstancesAndCamera) {
+  const Scene s = parse(quad_document(kDataUri + base64(quad_buffer())));
+  ASSERT_EQ(s.meshes.size(), 1u);  // one mesh, shared
+  ASSERT_EQ(s.instances.size(), 2u);
+  EXPECT_EQ(s.meshes[0].triangle_count(), 2u);
+  EXPECT_EQ(s.meshes[0].uvs.size(), 4u);
+  EXPECT_EQ(s.instances[0].object_to_world.apply_point(Vec3f(1, 0, 0)), Vec3f(11, 0, 0));
+  const Vec3f p = s.instances[1].object_to_world.apply_point(Vec3f(1, 0, 0));  // scale 2, then 90° about z
+  EXPECT_NEAR(p.x, 0.0f, 1e-5f);
+  EXPECT_NEAR(p.y, 2.0f, 1e-5f);
+  EXPECT_EQ(s.camera.eye, Vec3f(0, 0, 5));
+  EXPECT_EQ(s.camera.target, Vec3f(0, 0, 4));
+  EXPECT_NEAR(s.camera.fov_degrees, 0.5 * 180.0 / std::numbers::pi, 1e-4);  // landscape: vertical is shorter
+  EXPECT_EQ(s.default_width, 1024);
+  const Material& m = s.materials[0];
+  EXPECT_EQ(m.type, MaterialType::metallic_roughness);
+  EXPECT_EQ(m.base_color, Vec3f(0.5f, 0.25f, 1.0f));
+  EXPECT_FLOAT_EQ(m.metallic, 0.3f);
+  EXPECT_FLOAT_EQ(m.roughness, 0.6f);
+}
+
+TEST(GltfLoader, BinaryGlbAndExternalBuffer) {
+  const Scene s = parse(glb(quad_document(""), quad_buffer()));
+  EXPECT_EQ(s.instances.size(), 2u);
+  test::ScratchFolder dir;
+  dir.write("quad.bin", quad_buffer());
+  const auto file = dir.write("quad.gltf", quad_document("quad.bin"));
+  EXPECT_EQ(load_scene(file.string()).meshes.size(), 1u);
+}
+
+TEST(GltfLoader, UriEscapingTheFolderIsRefused) {
+  test::ScratchFolder dir;
+  dir.write("outside.bin", quad_buffer());
+  std::filesystem::create_directories(dir / "scene");
+  for (const std::string& uri : std::vector<std::string>{"../outside.bin", "..%2Foutside.bin"}) {
+    const std::string message = parse_error(quad_document(uri), dir / "scene");
+    EXPECT_NE(message.find("outside the scene's folder"), std::string::npos) << uri << ": " << message;
+  }
+  // tinygltf reads an absolute uri below the base folder, where it does not exist.
+  EXPECT_NE(parse_error(quad_document((dir / "outside.bin").string()), dir / "scene").find("test.gltf: "), std::string::npos);
+  LoadOptions allow;
+  allow.allow_external_paths = true;
+  EXPECT_EQ(parse(quad_document("../outside.bin"), dir / "scene", allow).meshes.size(), 1u);
+}
+
+TEST(GltfLoader, MaterialsExtensionsAndLights) {
+  test::ScratchFolder dir;
+  EncodedImage png;
+  png.width = png.height = 2;
+  png.channels = 4;
+  png.bit_depth = 8;
+  png.samples = {255, 0, 0, 255, 0, 255, 0, 255, 0, 0, 255, 255, 255, 255, 255, 0};
+  write_png(dir / "albedo.png", png);
+  dir.write("quad.bin", quad_buffer());
+  const std::string materials = R"([
+    {"pbrMetallicRoughness": {"baseColorTexture": {"index": 0, "extensions": {"KHR_texture_transform": {"offset": [0.5, 0], "scale": [2, 2], "rotation": 0.25}}}},
+     "alphaMode": "MASK", "alphaCutoff": 0.3,
+     "emissiveFactor": [1, 0.5, 0.25], "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 10}}},
+    {"extensions": {"KHR_materials_transmission": {"transmissionFactor": 1}, "KHR_materials_ior": {"ior": 1.45}}}])";
+  const std::string top = R"("extensionsUsed": ["KHR_texture_transform", "KHR_materials_emissive_strength", "KHR_materials_transmission",
+       "KHR_materials_ior", "KHR_lights_punctual", "EXT_fancy_thing"],
+    "extensionsRequired": ["KHR_texture_transform"],
+    "textures": [{"source": 0, "sampler": 0}], "samplers": [{"wrapS": 33071, "wrapT": 33648}], "images": [{"uri": "albedo.png"}],
+    "extensions": {"KHR_lights_punctual": {"lights": [
+      {"type": "point", "intensity": 100, "color": [1, 0.5, 0.5]},
+      {"type": "spot", "intensity": 50, "spot": {"innerConeAngle": 0.1, "outerConeAngle": 0.5}},
+      {"type": "directional", "intensity": 1000}]}},)";
+  std::string doc = quad_document("quad.bin", top, materials);
+  const std::string nodes_end = R"({"camera": 0, "translation": [0, 0, 5]}])";
+  doc.replace(doc.find(nodes_end), nodes_end.size(),
+              R"({"camera": 0, "translation": [0, 0, 5]}, {"translation": [1, 2, 3], "extensions": {"KHR_lights_punctual": {"light": 0}}},
+                 {"extensions": {"KHR_lights_punctual": {"light": 1}}}, {"extensions": {"KHR_lights_punctual": {"light": 2}}}])");
+  doc.replace(doc.find(R"("nodes": [0, 1, 3])"), 18, R"("nodes": [0, 1, 3, 4, 5, 6])");
+  const Scene s = parse(doc, dir.path());
+  const Material& textured = s.materials[0];
+  ASSERT_GE(textured.base_color_texture, 0);
+  const TextureImage& t = s.textures[textured.base_color_texture];
+  EXPECT_EQ(t.width, 2);
+  EXPECT_FLOAT_EQ(t.offset_u, 0.5f);
+  EXPECT_FLOAT_EQ(t.scale_v, 2.0f);
+  EXPECT_FLOAT_EQ(t.rotation_radians, 0.25f);
+  EXPECT_EQ(t.wrap_u, TextureWrap::clamp);
+  EXPECT_EQ(t.wrap_v, TextureWrap::mirror);
+  EXPECT_EQ(textured.alpha_mode, AlphaMode::mask);
+  EXPECT_FLOAT_EQ(textured.alpha_cutoff, 0.3f);
+  EXPECT_NEAR(textured.emission.luminance_nits, 10.0 * relative_luminance(Vec3f(1, 0.5f, 0.25f), ColorPickerSpace::srgb), 1e-4);
+  const Material& glass = s.materials[1];
+  EXPECT_EQ(glass.type, MaterialType::dielectric);
+  EXPECT_FLOAT_EQ(glass.ior, 1.45f);
+  EXPECT_TRUE(glass.thin_walled);
+  ASSERT_EQ(s.lights.size(), 3u);
+  EXPECT_EQ(s.lights[0].type, LightType::point);
+  EXPECT_FLOAT_EQ(s.lights[0].intensity, 100.0f);
+  EXPECT_EQ(s.lights[0].position, Vec3f(1, 2, 3));
+  EXPECT_EQ(s.lights[1].type, LightType::spot);
+  EXPECT_NEAR(s.lights[1].spot_outer_angle_degrees, 0.5 * 180.0 / std::numbers::pi, 1e-4);
+  EXPECT_EQ(s.lights[1].direction, Vec3f(0, 0, -1));
+  EXPECT_EQ(s.lights[2].type, LightType::directional);
+  EXPECT_FLOAT_EQ(s.lights[2].intensity, 1000.0f);
+  int extension_warnings = 0;
+  for (const auto& w : s.warnings) extension_warnings += w.find("EXT_fancy_thing") != std::string::npos;
+  EXPECT_EQ(extension_warnings, 1);
+}
+
+TEST(GltfLoader, BadInputIsAOneLineError) {
+  const std::string good_uri = kDataUri + base64(quad_buffer());
+  const std::string doc = quad_document(good_uri);
+  const auto with = [&](const std::string& from, const std::string& to) {
+    std::string d = doc;
+    const auto at = d.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    return d.replace(at, from.size(), to);
+  };
+  const std::pair<std::string, std::string> cases[] = {
+      {"{", "test.gltf: "},
+      {"not json at all", "test.gltf: "},
+      {with(R"("asset": {"version": "2.0"}, )", R"("asset": {"version": "2.0"}, "extensionsRequired": ["KHR_draco_mesh_compression"], )"),
+       "required extension(s) not supported: KHR_draco_mesh_compression"},
+      {with(R"("count": 6)", R"("count": 600)"), "accessor 2"},
+      {with(R"("count": 4, "type": "VEC3")", R"("count": 40, "type": "VEC3")"), "accessor 0"},
+      {with(R"("byteOffset": 80)", R"("byteOffset": 88)"), "test.gltf: "},
+      {with(R"("nodes": [0, 1, 3])", R"("nodes": [0, 1, 3, 99])"), "node 99 does not exist"},
+      {with(R"("children": [2])", R"("children": [1])"), "deeper than"},
+      {with(R"("material": 0)", R"("material": 7)"), "material 7 does not exist"},
+      {with(R"("yfov": 0.5)", R"("yfov": 4)"), "yfov"},
+      {with(R"("type": "VEC2")", R"("type": "VEC3")"), "wrong type"},
+      {glb(quad_document(""), quad_buffer()).substr(0, 40), "test.gltf: "},
+      {std::string("glTF\x02\0\0\0\xff\xff\xff\x7f", 12), "test.gltf: "},
+  };
+  for (const auto& [text, expected] : cases) {
+    const std::string message = parse_error(text);
+    EXPECT_NE(message.find(expected), std::string::npos) << text.substr(0, 80) << " → " << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+  // Every truncation of a GLB fails cleanly.
+  const std::string binary = glb(quad_document(""), quad_buffer());
+  for (std::size_t n = 0; n < binary.size(); n += 7) EXPECT_THROW(parse(binary.substr(0, n)), SceneError) << n;
+}
+
+}  // namespace
+}  // namespace prism::loaders

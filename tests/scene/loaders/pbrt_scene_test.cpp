@@ -1,0 +1,278 @@
+#include "prism/scene/loaders/pbrt_scene.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "loader_test_files.h"
+#include "prism/core/error.h"
+#include "prism/scene/builtin_scenes.h"
+#include "prism/scene/emission.h"
+#include "prism/scene/load_scene.h"
+
+namespace prism::loaders {
+namespace {
+
+const std::filesystem::path kScenes = std::filesystem::path(PRISM_SOURCE_DIR) / "data/scenes";
+
+Scene parse(std::string_view text, const std::filesystem::path& dir = {}) {
+  return parse_pbrt_scene(text, "test.pbrt", dir);
+}
+
+std::string parse_error(std::string_view text, const std::filesystem::path& dir = {}) {
+  return test::error_of<SceneError>([&] { parse(text, dir); });
+}
+
+constexpr std::string_view kTriangle =
+    "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 2]\n";
+
+TEST(PbrtLoader, CornellBoxMatchesBuiltIn) {
+  const Scene pbrt = load_scene((kScenes / "cornell-box.pbrt").string());
+  const Scene builtin = make_builtin_scene("cornell-box");
+  EXPECT_EQ(pbrt.triangle_count(), builtin.triangle_count());
+  EXPECT_NEAR(length(pbrt.camera.eye - builtin.camera.eye), 0.0f, 1e-3f);
+  EXPECT_NEAR(length(normalize(pbrt.camera.target - pbrt.camera.eye) - normalize(builtin.camera.target - builtin.camera.eye)), 0.0f, 1e-5f);
+  EXPECT_NEAR(length(pbrt.camera.up - builtin.camera.up), 0.0f, 1e-5f);
+  EXPECT_FLOAT_EQ(pbrt.camera.fov_degrees, builtin.camera.fov_degrees);
+  EXPECT_EQ(pbrt.default_width, 512);
+  EXPECT_EQ(pbrt.default_height, 512);
+  EXPECT_EQ(pbrt.default_spp, 64);
+  EXPECT_EQ(pbrt.default_max_depth, 5);
+  // Every built-in reflectance appears in the pbrt scene, and the one emitter matches.
+  for (const Material& b : builtin.materials) {
+    bool found = false;
+    for (const Material& p : pbrt.materials)
+      found |= p.type == MaterialType::diffuse && p.base_color == b.base_color && p.is_emissive() == b.is_emissive();
+    EXPECT_TRUE(found) << b.name;
+  }
+  int emitters = 0;
+  for (const Material& m : pbrt.materials)
+    if (m.is_emissive()) {
+      ++emitters;
+      EXPECT_EQ(m.emission.color, Vec3f(17.0f, 12.0f, 4.0f));
+      EXPECT_FLOAT_EQ(m.emission.luminance_nits, builtin.materials[3].emission.luminance_nits);
+      EXPECT_FALSE(m.emission.two_sided);
+    }
+  EXPECT_EQ(emitters, 1);
+  // The light's triangles face down, as the built-in's.
+  for (const TriangleMesh& mesh : pbrt.meshes)
+    if (pbrt.materials[mesh.material].is_emissive()) {
+      const Vec3f& a = mesh.positions[mesh.indices[0]];
+      const Vec3f n = cross(mesh.positions[mesh.indices[1]] - a, mesh.positions[mesh.indices[2]] - a);
+      EXPECT_LT(n.y, 0.0f);
+    }
+  for (const auto& w : pbrt.warnings) EXPECT_EQ(w.find("mirrored"), std::string::npos) << w;
+}
+
+TEST(PbrtLoader, GlossyVariantMapsMaterials) {
+  const Scene s = load_scene((kScenes / "cornell-box-glossy.pbrt").string());
+  int gold = 0, glass = 0, aluminium = 0;
+  for (const Material& m : s.materials) {
+    if (m.type == MaterialType::conductor && m.conductor_name == "Au") {
+      ++gold;
+      EXPECT_EQ(m.conductor_fresnel, ConductorFresnel::complex_ior);
+      EXPECT_NEAR(m.roughness, std::sqrt(0.1f), 1e-6f);  // α = sqrt(0.01) = 0.1, r = sqrt(α)
+    }
+    if (m.type == MaterialType::conductor && m.conductor_name == "Al") {
+      ++aluminium;
+      EXPECT_NEAR(m.roughness, std::sqrt(0.2f), 1e-6f);  // no remap: α = 0.2
+    }
+    if (m.type == MaterialType::dielectric) {
+      ++glass;
+      EXPECT_EQ(m.dispersion, DispersionModel::sellmeier);
+      EXPECT_NEAR(m.ior, 1.5168f, 1e-3f);
+    }
+  }
+  EXPECT_EQ(gold, 1);
+  EXPECT_EQ(glass, 1);
+  EXPECT_EQ(aluminium, 1);
+}
+
+TEST(PbrtLoader, TransformsInstancesAndNamedMaterials) {
+  const Scene s = parse(std::string(R"(
+WorldBegin
+MakeNamedMaterial "m" "string type" "diffuse" "rgb reflectance" [0.2 0.3 0.4]
+ObjectBegin "tri"
+  NamedMaterial "m"
+)") + std::string(kTriangle) + R"(
+ObjectEnd
+AttributeBegin
+  Translate 10 0 0
+  ObjectInstance "tri"
+AttributeEnd
+AttributeBegin
+  Rotate 90 0 0 1
+  Scale 2 2 2
+  ObjectInstance "tri"
+AttributeEnd
+ConcatTransform [1 0 0 0  0 1 0 0  0 0 1 0  0 0 5 1]
+)" + std::string(kTriangle));
+  ASSERT_EQ(s.meshes.size(), 2u);
+  ASSERT_EQ(s.instances.size(), 3u);  // the world triangle + two placements
+  EXPECT_EQ(s.meshes[1].positions[1], Vec3f(1, 0, 5));  // the world mesh, transform baked in
+  EXPECT_EQ(s.instances[0].mesh, 1u);
+  EXPECT_EQ(s.instances[1].object_to_world.apply_point(Vec3f(1, 0, 0)), Vec3f(11, 0, 0));
+  const Vec3f r = s.instances[2].object_to_world.apply_point(Vec3f(1, 0, 0));
+  EXPECT_NEAR(r.x, 0.0f, 1e-5f);
+  EXPECT_NEAR(r.y, 2.0f, 1e-5f);
+  EXPECT_EQ(s.materials[s.meshes[0].material].base_color, Vec3f(0.2f, 0.3f, 0.4f));
+}
+
+TEST(PbrtLoader, MaterialMappings) {
+  const auto material_of = [](std::string_view decl) {
+    const Scene s = parse("WorldBegin\n" + std::string(decl) + "\n" + std::string(kTriangle));
+    return std::make_pair(s.materials[s.meshes[0].material], s.warnings);
+  };
+  auto [schlick, w1] = material_of(R"(Material "conductor" "rgb reflectance" [0.9 0.8 0.7] "float roughness" 0.25 "bool remaproughness" false)");
+  EXPECT_EQ(schlick.conductor_fresnel, ConductorFresnel::schlick);
+  EXPECT_EQ(schlick.base_color, Vec3f(0.9f, 0.8f, 0.7f));
+  EXPECT_FLOAT_EQ(schlick.roughness, 0.5f);
+  auto [copper, w2] = material_of(R"(Material "conductor")");
+  EXPECT_EQ(copper.conductor_name, "Cu");
+  EXPECT_FLOAT_EQ(copper.roughness, 0.0f);
+  auto [glass, w3] = material_of(R"(Material "dielectric" "float eta" 1.33)");
+  EXPECT_EQ(glass.type, MaterialType::dielectric);
+  EXPECT_FLOAT_EQ(glass.ior, 1.33f);
+  EXPECT_EQ(glass.dispersion, DispersionModel::none);
+  auto [coated, w4] = material_of(R"(Material "coateddiffuse" "rgb reflectance" [0.5 0.1 0.1] "float roughness" 0.1)");
+  EXPECT_EQ(coated.type, MaterialType::diffuse);
+  ASSERT_EQ(w4.size(), 1u);
+  EXPECT_NE(w4[0].find("coateddiffuse"), std::string::npos);
+  auto [bb, w5] = material_of(R"(Material "diffuse" "blackbody reflectance" 6500)");
+  EXPECT_GT(bb.base_color.x, 0.0f);
+  EXPECT_NE(w5[0].find("blackbody"), std::string::npos);
+}
+
+TEST(PbrtLoader, LightsInPhotometricUnits) {
+  const Scene s = parse(std::string(R"(
+WorldBegin
+LightSource "point" "rgb I" [1 1 1] "float scale" 10 "point3 from" [0 5 0]
+LightSource "point" "float power" 100
+LightSource "spot" "point3 from" [0 0 0] "point3 to" [0 -1 0] "float coneangle" 40 "float conedelta" 10
+LightSource "distant" "point3 from" [0 1 0] "point3 to" [0 0 0] "float illuminance" 1000
+LightSource "infinite" "rgb L" [0.5 0.5 0.5]
+AttributeBegin
+  AreaLightSource "diffuse" "rgb L" [2 2 2] "bool twosided" true
+)") + std::string(kTriangle) + "AttributeEnd\n" +
+                        R"(AttributeBegin
+  AreaLightSource "diffuse" "float power" 3.14159265
+)" + std::string(kTriangle) + "AttributeEnd\n");
+  ASSERT_EQ(s.lights.size(), 5u);
+  EXPECT_EQ(s.lights[0].type, LightType::point);
+  EXPECT_NEAR(s.lights[0].intensity, 10.0f, 1e-4f);
+  EXPECT_EQ(s.lights[0].position, Vec3f(0, 5, 0));
+  EXPECT_NEAR(s.lights[1].intensity, 100.0 / (4.0 * 3.14159265), 1e-3);
+  EXPECT_EQ(s.lights[2].type, LightType::spot);
+  EXPECT_FLOAT_EQ(s.lights[2].spot_outer_angle_degrees, 40.0f);
+  EXPECT_FLOAT_EQ(s.lights[2].spot_inner_angle_degrees, 30.0f);
+  EXPECT_EQ(s.lights[2].direction, Vec3f(0, -1, 0));
+  EXPECT_EQ(s.lights[3].type, LightType::directional);
+  EXPECT_FLOAT_EQ(s.lights[3].intensity, 1000.0f);
+  EXPECT_EQ(s.lights[3].direction, Vec3f(0, -1, 0));
+  EXPECT_EQ(s.lights[4].type, LightType::environment);
+  EXPECT_NEAR(s.lights[4].intensity, 0.5f, 1e-4f);
+  const Material& two_sided = s.materials[s.meshes[0].material];
+  EXPECT_TRUE(two_sided.emission.two_sided);
+  EXPECT_NEAR(two_sided.emission.luminance_nits, 2.0f, 1e-4f);
+  // power π on a triangle of area 1/2, one side: L = Φ / (π A) = 2.
+  EXPECT_NEAR(s.materials[s.meshes[1].material].emission.luminance_nits, 2.0f, 1e-4f);
+}
+
+TEST(PbrtLoader, ShapesSphereBilinearAndPly) {
+  test::ScratchFolder dir;
+  dir.write("quad.ply",
+            "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
+            "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");
+  const Scene s = parse(R"(
+WorldBegin
+Shape "sphere" "float radius" 2
+Shape "bilinearmesh" "point3 P" [0 0 0 1 0 0 0 1 0 1 1 0]
+Shape "plymesh" "string filename" "quad.ply"
+)",
+                        dir.path());
+  ASSERT_EQ(s.meshes.size(), 3u);
+  for (const Vec3f& p : s.meshes[0].positions) EXPECT_NEAR(length(p), 2.0f, 1e-4f);
+  EXPECT_EQ(s.meshes[1].triangle_count(), 2u);
+  const auto& b = s.meshes[1];
+  const Vec3f n = cross(b.positions[b.indices[1]] - b.positions[b.indices[0]], b.positions[b.indices[2]] - b.positions[b.indices[0]]);
+  EXPECT_GT(n.z, 0.0f);  // (p10 − p00) × (p01 − p00) = +z
+  EXPECT_EQ(s.meshes[2].triangle_count(), 2u);
+  EXPECT_NE(parse_error(R"(WorldBegin Shape "plymesh" "string filename" "../quad.ply")", dir.path()).find("test.pbrt:1"),
+            std::string::npos);
+}
+
+TEST(PbrtLoader, IncludeResolvesInsideTheFolderOnly) {
+  test::ScratchFolder dir;
+  dir.write("geometry/tri.pbrt", kTriangle);
+  const auto scene = dir.write("scene.pbrt", "WorldBegin\nInclude \"geometry/tri.pbrt\"\nImport \"geometry/tri.pbrt\"\n");
+  EXPECT_EQ(load_pbrt_scene(scene).meshes.size(), 2u);
+  const auto escape = dir.write("escape.pbrt", "WorldBegin\nInclude \"/etc/passwd\"\n");
+  EXPECT_NE(test::error_of<SceneError>([&] { load_pbrt_scene(escape); }).find("escape.pbrt:2"), std::string::npos);
+  const auto self = dir.write("self.pbrt", "Include \"self.pbrt\"\n");
+  EXPECT_NE(test::error_of<SceneError>([&] { load_pbrt_scene(self); }).find("nested more than"), std::string::npos);
+  const auto bad = dir.write("geometry/bad.pbrt", "\n\nShape \"trianglemesh\" \"point3 P\" [0 0]\n");
+  const auto outer = dir.write("outer.pbrt", "Include \"geometry/bad.pbrt\"\n");
+  EXPECT_NE(test::error_of<SceneError>([&] { load_pbrt_scene(outer); }).find("bad.pbrt:3:"), std::string::npos);
+}
+
+TEST(PbrtLoader, UnsupportedFeaturesInOneWarning) {
+  const Scene s = parse(std::string(R"(
+Option "bool disablepixeljitter" true
+PixelFilter "gaussian"
+Sampler "halton" "integer pixelsamples" 8 "string randomization" "owen"
+WorldBegin
+MakeNamedMedium "fog" "string type" "homogeneous"
+LightSource "goniometric" "string filename" "x.exr"
+Shape "curve" "point3 P" [0 0 0 1 1 1 2 2 2 3 3 3]
+Material "hair"
+)") + std::string(kTriangle));
+  int ignored = 0;
+  for (const auto& w : s.warnings)
+    if (w.find("ignored") != std::string::npos) {
+      ++ignored;
+      for (const char* what : {"PixelFilter (line 3)", "randomization", "MakeNamedMedium (line 6)", "goniometric",
+                               "curve", "hair", "Option"})
+        EXPECT_NE(w.find(what), std::string::npos) << what << " in " << w;
+    }
+  EXPECT_EQ(ignored, 1);
+  EXPECT_EQ(s.default_spp, 8);
+}
+
+TEST(PbrtLoader, BadInputIsAFileLineError) {
+  const std::pair<std::string_view, std::string_view> cases[] = {
+      {"WorldBegin\n\"oops\"", "test.pbrt:2: expected a directive"},
+      {"Frobnicate 1 2", "test.pbrt:1: unknown directive 'Frobnicate'"},
+      {"\nLookAt 0 0 0 0 0 0 0 1 0", "test.pbrt:2: LookAt"},
+      {"Translate 1 2", "test.pbrt:1: Translate expects 3 numbers"},
+      {"Translate 1 2 x", "test.pbrt:1: expected a number"},
+      {"Camera \"perspective\" \"float fov\" [ 1 2", "unterminated '['"},
+      {"Camera \"perspective\" \"float fov\" 200", "test.pbrt:1: parameter 'fov'"},
+      {"Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 5]", "out of range"},
+      {"Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1]", "multiple of 3"},
+      {"Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 -1]", "out of range"},
+      {"Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 2.5]", "out of range"},
+      {"Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 1e999]", "expected a number"},
+      {"AttributeEnd", "without a matching begin"},
+      {"AttributeBegin", "without AttributeEnd"},
+      {"NamedMaterial \"nope\"", "unknown named material"},
+      {"ObjectInstance \"nope\"", "unknown object"},
+      {"Shape \"trianglemesh\" \"P\" [0]", "expected a parameter declaration"},
+      {"Shape \"x\" \"string s\" [1]", "needs string values"},
+      {"Material \"diffuse\" \"rgb reflectance\" [1 -1 1]", "must not be negative"},
+      {"Material \"diffuse\" \"texture reflectance\" \"nope\"", "unknown texture"},
+      {"Shape \"plymesh\" \"string filename\" \"a.ply\"", "test.pbrt:1: filename"},
+      {"\"unterminated", "unterminated string"},
+      {"WorldBegin WorldBegin", "a second WorldBegin"},
+      {"Scale 0 0 0\nShape \"sphere\"", "test.pbrt:2: Shape: the transform is singular"},
+      {"MakeNamedMaterial \"x\" \"rgb reflectance\" [1 1 1]", "has no \"string type\""},
+      {"Texture \"t\" \"spectrum\" \"imagemap\"", "needs a filename"},
+  };
+  for (const auto& [text, expected] : cases) {
+    const std::string message = parse_error(text);
+    EXPECT_NE(message.find(expected), std::string::npos) << text << " → " << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+}  // namespace
+}  // namespace prism::loaders

@@ -22,7 +22,9 @@
 #include "prism/io/exr.h"
 #include "prism/io/png.h"
 #include "prism/render/checkpoint.h"
+#include "prism/render/memory_estimate.h"
 #include "prism/render/renderer.h"
+#include "prism/scene/camera_json.h"
 #include "prism/scene/load_scene.h"
 
 namespace prism::cli {
@@ -49,12 +51,14 @@ struct RenderOptions {
   int samples_per_pass = 0;
   bool max_depth_given = false;
   std::string exr_space = "working";
+  std::string camera_json;
   DisplayCliOptions display;
   std::string sample_range;  // "START:END"
   std::string checkpoint;
   double checkpoint_every_seconds = 60.0;
   std::string resume;
   bool spp_given = false;
+  std::string memory_limit;  // BYTES or SIZE with K/M/G/T; empty: 90 % of physical memory
 };
 
 // Parses "START:END" (END exclusive) into first_sample / samples_per_pixel.
@@ -180,7 +184,8 @@ int run_render(const RenderOptions& o) {
   for (const auto& n : names) outputs.emplace_back(n);
   // Check everything that can be checked before spending time on the render.
   for (const auto& p : outputs) output_format(p);
-  const Scene scene = load_scene(o.scene, LoadOptions{.allow_external_paths = o.allow_external_paths});
+  Scene scene = load_scene(o.scene, LoadOptions{.allow_external_paths = o.allow_external_paths});
+  if (!o.camera_json.empty()) scene.camera = read_camera_json(o.camera_json, scene.camera);
   // A scene camera's physical exposure applies unless the command line sets one.
   DisplayCliOptions display = o.display;
   if (!display.ev100 && !display.f_number && !display.auto_exposure && scene.camera.f_number > 0.0f &&
@@ -212,6 +217,8 @@ int run_render(const RenderOptions& o) {
     apply_sample_range(o.sample_range, settings);
   }
   validate_render_settings(settings);
+  if (!o.memory_limit.empty()) settings.memory_limit_bytes = parse_memory_size(o.memory_limit);
+  check_render_memory(scene, settings, settings.memory_limit_bytes);  // before any film is allocated
   const std::uint64_t fingerprint = image_fingerprint(scene, settings);
 
   // Resuming: the checkpoint must come from the same scene and settings. It keeps being
@@ -315,6 +322,9 @@ void add_render_command(CLI::App& root, Action& action) {
                   "EXR pixel space: working (the working space's RGB) or film (CIE XYZ relative to E for spectral "
                   "renders); chromaticities always say which")
       ->capture_default_str();
+  cmd->add_option("--camera-json", options->camera_json,
+                  "Camera from a JSON snippet {\"eye\", \"target\", \"up\", \"fov_degrees\"} (as `prism view` saves it); "
+                  "missing fields keep the scene camera's values");
   add_display_options(cmd, options->display);
   cmd->add_option("--sample-range", options->sample_range,
                   "Render only sample indices START..END-1 (e.g. 0:32), for splitting one image over several "
@@ -327,6 +337,9 @@ void add_render_command(CLI::App& root, Action& action) {
   cmd->add_option("--resume", options->resume,
                   "Continue from a checkpoint of the same scene and settings up to --spp; the result is identical "
                   "to an uninterrupted render. The checkpoint keeps being updated unless --checkpoint is given");
+  cmd->add_option("--memory-limit", options->memory_limit,
+                  "Refuse a render whose estimated memory (film, path pool, textures, meshes) exceeds this many "
+                  "bytes; suffixes K, M, G, T (binary), e.g. 8G. Default: 90 % of physical memory");
   cmd->add_flag("--allow-external-paths", options->allow_external_paths,
                 "Let the scene file refer to files outside its own folder (absolute paths, '..')");
   cmd->callback([options, cmd, &action] {

@@ -64,9 +64,19 @@ for sig in INT TERM; do
   grep -q "interrupted" "$work/stdout" || fail "SIG$sig: no interruption notice: $(cat "$work/stdout")"
 done
 
+# --camera-json moves the camera: a different view gives a different image; a malformed
+# file is a one-line error.
+rm -rf "$work/out"; mkdir -p "$work/out"
+printf '{"eye": [278, 273, -400], "target": [278, 100, 0]}' >"$work/cam.json"
+"$prism" render cornell-box --width 16 --height 16 --spp 1 -o "$work/out/a.exr" >/dev/null 2>&1 || fail "render a"
+"$prism" render cornell-box --width 16 --height 16 --spp 1 --camera-json "$work/cam.json" -o "$work/out/b.exr" >/dev/null 2>&1 || fail "render with --camera-json"
+cmp -s "$work/out/a.exr" "$work/out/b.exr" && fail "--camera-json did not change the image"
+printf '{"eye": [1, 2' >"$work/bad.json"
+expect_error 1 "bad.json" render cornell-box --camera-json "$work/bad.json" -o "$work/out/c.exr"
+
 # --help documents every option of render.
 "$prism" render --help >"$work/help" 2>&1 || fail "render --help exited non-zero"
-for opt in --output --spp --max-depth --seed --threads --time-limit --width --height --estimator; do
+for opt in --output --spp --max-depth --seed --threads --time-limit --width --height --estimator --mode --wavelengths --wavelength-sampling --upsampling --working-space --camera-json --checkpoint --resume --sample-range --odt --ev100; do
   grep -q -- "$opt" "$work/help" || fail "render --help does not document $opt"
 done
 "$prism" info >"$work/info" || fail "info failed"

@@ -16,5 +16,6 @@ void add_color_command(CLI::App& root, Action& action);
 void add_tonemap_command(CLI::App& root, Action& action);
 void add_view_command(CLI::App& root, Action& action);
 void add_bench_command(CLI::App& root, Action& action);
+void add_generate_command(CLI::App& root, Action& action);
 
 }  // namespace prism::cli

@@ -5,6 +5,7 @@
 #include "loader_test_files.h"
 #include "prism/core/error.h"
 #include "prism/scene/load_scene.h"
+#include "prism/scene/loaders/gltf_writer.h"
 #include "prism/scene/loaders/scene_writers.h"
 #include "prism/scene/scene_summary.h"
 
@@ -60,6 +61,26 @@ TEST(AtriumGenerator, RoundTripsThroughJsonAndPbrt) {
     ASSERT_EQ(loaded.lights.size(), 1u);
     EXPECT_NEAR(loaded.lights[0].intensity, original.lights[0].intensity, 1e-3f) << name;
   }
+}
+
+TEST(AtriumGenerator, RoundTripsThroughGlb) {
+  test::ScratchFolder dir;
+  const Scene original = generate_atrium(20'000);
+  write_scene_glb(original, dir / "atrium.glb");
+  const Scene loaded = load_scene((dir / "atrium.glb").string());
+  EXPECT_EQ(loaded.triangle_count(), original.triangle_count());
+  const SceneSummary s = summarize_scene(loaded);
+  EXPECT_EQ(s.materials_by_type.at("dielectric"), 1u);
+  EXPECT_EQ(s.emissive_materials, 1u);
+  for (const Material& m : loaded.materials)
+    if (m.is_emissive()) {
+      EXPECT_NEAR(m.emission.luminance_nits, 40.0f, 1e-2f);
+    }
+  EXPECT_NEAR(length(loaded.camera.eye - original.camera.eye), 0.0f, 1e-4f);
+  EXPECT_NEAR(length(normalize(loaded.camera.target - loaded.camera.eye) -
+                     normalize(original.camera.target - original.camera.eye)),
+              0.0f, 1e-4f);
+  EXPECT_NEAR(loaded.camera.fov_degrees, original.camera.fov_degrees, 1e-3f);
 }
 
 }  // namespace

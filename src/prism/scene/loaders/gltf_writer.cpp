@@ -1,0 +1,147 @@
+#include "prism/scene/loaders/gltf_writer.h"
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "prism/core/error.h"
+#include "prism/io/atomic_file.h"
+#include "prism/scene/emission.h"
+
+namespace prism::loaders {
+namespace {
+
+using nlohmann::json;
+
+// Approximate linear sRGB normal-incidence reflectance of the metals Prism names, for
+// viewers that only know metallic-roughness (Prism reads them back as metallic_roughness).
+Vec3f metal_f0(const std::string& name) {
+  if (name == "Au") return {1.0f, 0.78f, 0.34f};
+  if (name == "Ag") return {0.97f, 0.96f, 0.91f};
+  if (name == "Cu") return {0.96f, 0.64f, 0.54f};
+  return {0.91f, 0.92f, 0.92f};  // Al
+}
+
+class BinaryChunk {
+ public:
+  // Appends raw data as a buffer view + accessor; returns the accessor index.
+  int add(json& doc, const void* data, std::size_t bytes, std::size_t count, const char* type, int component_type,
+          int target, const json& extra = json::object()) {
+    while (bin_.size() % 4) bin_.push_back('\0');
+    const std::size_t offset = bin_.size();
+    bin_.append(static_cast<const char*>(data), bytes);
+    doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", bytes}, {"target", target}});
+    json accessor = {{"bufferView", doc["bufferViews"].size() - 1}, {"componentType", component_type},
+                     {"count", count}, {"type", type}};
+    accessor.update(extra);
+    doc["accessors"].push_back(accessor);
+    return static_cast<int>(doc["accessors"].size() - 1);
+  }
+  std::string& bytes() { return bin_; }
+
+ private:
+  std::string bin_;
+};
+
+json material_json(const Material& m) {
+  json j = {{"name", m.name}};
+  json pbr = {{"baseColorFactor", {m.base_color.x, m.base_color.y, m.base_color.z, m.opacity}},
+              {"metallicFactor", 0.0}, {"roughnessFactor", m.roughness}};
+  switch (m.type) {
+    case MaterialType::diffuse: pbr["roughnessFactor"] = 1.0; break;
+    case MaterialType::mirror: pbr["metallicFactor"] = 1.0, pbr["roughnessFactor"] = 0.0; break;
+    case MaterialType::conductor: {
+      pbr["metallicFactor"] = 1.0;
+      if (m.conductor_fresnel == ConductorFresnel::complex_ior) {
+        const Vec3f f0 = metal_f0(m.conductor_name);
+        pbr["baseColorFactor"] = {f0.x, f0.y, f0.z, 1.0};
+      }
+      break;
+    }
+    case MaterialType::dielectric:
+      j["extensions"]["KHR_materials_transmission"] = {{"transmissionFactor", 1.0}};
+      j["extensions"]["KHR_materials_ior"] = {{"ior", m.ior}};
+      break;
+    case MaterialType::metallic_roughness: pbr["metallicFactor"] = m.metallic; break;
+  }
+  j["pbrMetallicRoughness"] = pbr;
+  if (m.is_emissive()) {
+    // Prism reads emissive (1, 1, 1) × strength 1 as 1 nit: scale the colour to Y = 1.
+    const double y = relative_luminance(m.emission.color, ColorPickerSpace::srgb);
+    const Vec3f c = m.emission.color / static_cast<float>(std::max(y, 1e-12));
+    const float peak = std::max(max_component(c), 1.0f);  // emissiveFactor is limited to [0, 1]
+    j["emissiveFactor"] = {c.x / peak, c.y / peak, c.z / peak};
+    j["extensions"]["KHR_materials_emissive_strength"] = {{"emissiveStrength", m.emission.luminance_nits * peak}};
+    if (m.emission.two_sided) j["doubleSided"] = true;
+  }
+  return j;
+}
+
+}  // namespace
+
+void write_scene_glb(const Scene& scene, const std::filesystem::path& path) {
+  if (!scene.textures.empty() || !scene.instances.empty()) throw UsageError("glTF writer: textures and instances are not supported");
+  for (const Light& l : scene.lights)
+    if (l.type != LightType::environment) throw UsageError("glTF writer: punctual lights are not supported");
+  json doc = {{"asset", {{"version", "2.0"}, {"generator", "Prism"}}},
+              {"extensionsUsed", {"KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior"}},
+              {"bufferViews", json::array()}, {"accessors", json::array()}, {"meshes", json::array()},
+              {"materials", json::array()}, {"nodes", json::array()}};
+  for (const Material& m : scene.materials) doc["materials"].push_back(material_json(m));
+  BinaryChunk bin;
+  json scene_nodes = json::array();
+  for (const TriangleMesh& mesh : scene.meshes) {
+    Vec3f lo(INFINITY), hi(-INFINITY);
+    for (const Vec3f& p : mesh.positions) lo = min(lo, p), hi = max(hi, p);
+    json attributes;
+    attributes["POSITION"] = bin.add(doc, mesh.positions.data(), mesh.positions.size() * sizeof(Vec3f), mesh.positions.size(),
+                                     "VEC3", 5126, 34962, {{"min", {lo.x, lo.y, lo.z}}, {"max", {hi.x, hi.y, hi.z}}});
+    if (!mesh.normals.empty())
+      attributes["NORMAL"] = bin.add(doc, mesh.normals.data(), mesh.normals.size() * sizeof(Vec3f), mesh.normals.size(), "VEC3", 5126, 34962);
+    if (!mesh.uvs.empty())
+      attributes["TEXCOORD_0"] = bin.add(doc, mesh.uvs.data(), mesh.uvs.size() * sizeof(Vec2f), mesh.uvs.size(), "VEC2", 5126, 34962);
+    const int indices = bin.add(doc, mesh.indices.data(), mesh.indices.size() * 4, mesh.indices.size(), "SCALAR", 5125, 34963);
+    doc["meshes"].push_back({{"name", mesh.name},
+                             {"primitives", {{{"attributes", attributes}, {"indices", indices}, {"material", mesh.material}}}}});
+    doc["nodes"].push_back({{"name", mesh.name}, {"mesh", doc["meshes"].size() - 1}});
+    scene_nodes.push_back(doc["nodes"].size() - 1);
+  }
+  // The camera: glTF cameras look down −z with +y up and +x to the right.
+  const Camera& c = scene.camera;
+  const Vec3f forward = normalize(c.target - c.eye), right = normalize(cross(forward, c.up)), up = cross(right, forward);
+  const double aspect = static_cast<double>(scene.default_width) / scene.default_height;
+  const double fov = c.fov_degrees * std::acos(-1.0) / 180.0;
+  const double yfov = aspect >= 1.0 ? fov : 2.0 * std::atan(std::tan(fov / 2.0) / aspect);
+  doc["cameras"] = {{{"type", "perspective"}, {"perspective", {{"yfov", yfov}, {"aspectRatio", aspect}, {"znear", 0.01}}}}};
+  doc["nodes"].push_back({{"name", c.name.empty() ? "camera" : c.name}, {"camera", 0},
+                          {"matrix", {right.x, right.y, right.z, 0, up.x, up.y, up.z, 0, -forward.x, -forward.y, -forward.z, 0,
+                                      c.eye.x, c.eye.y, c.eye.z, 1}}});
+  scene_nodes.push_back(doc["nodes"].size() - 1);
+  doc["scenes"] = {{{"name", scene.name}, {"nodes", scene_nodes}}};
+  doc["scene"] = 0;
+  std::string& data = bin.bytes();
+  while (data.size() % 4) data.push_back('\0');
+  doc["buffers"] = {{{"byteLength", data.size()}}};
+  std::string text = doc.dump();
+  while (text.size() % 4) text.push_back(' ');
+  const std::size_t total = 12 + 8 + text.size() + 8 + data.size();
+  if (total > 0xffffffffu) throw UsageError("glTF writer: the scene is larger than a GLB file can hold (4 GiB)");
+  AtomicFile file(path);
+  {
+    std::ofstream out(file.temporary_path(), std::ios::binary);
+    const auto u32 = [&](std::uint32_t v) { out.write(reinterpret_cast<const char*>(&v), 4); };  // little-endian hosts
+    out.write("glTF", 4);
+    u32(2), u32(static_cast<std::uint32_t>(total));
+    u32(static_cast<std::uint32_t>(text.size())), u32(0x4E4F534Au);
+    out.write(text.data(), static_cast<std::streamsize>(text.size()));
+    u32(static_cast<std::uint32_t>(data.size())), u32(0x004E4942u);
+    out.write(data.data(), static_cast<std::streamsize>(data.size()));
+    if (!out) throw IoError(fmt::format("cannot write '{}'", path.string()));
+  }
+  file.commit();
+}
+
+}  // namespace prism::loaders

@@ -1,0 +1,17 @@
+#pragma once
+// Writing a Scene as a binary glTF 2.0 file (.glb), for generated scenes (`prism generate`).
+// Meshes are written inline (uint32 indices, normals and uvs when present); materials as
+// PBR metallic-roughness (conductors: metallic 1 with the metal's approximate sRGB F0;
+// dielectrics: KHR_materials_transmission + KHR_materials_ior; emission with
+// KHR_materials_emissive_strength); the camera as a perspective camera node. Textures,
+// instances, punctual lights and the environment are not written (the environment has no
+// glTF equivalent): UsageError for the first three.
+#include <filesystem>
+
+#include "prism/scene/scene.h"
+
+namespace prism::loaders {
+
+void write_scene_glb(const Scene& scene, const std::filesystem::path& path);
+
+}  // namespace prism::loaders

@@ -41,6 +41,7 @@ class GltfBuilder {
   std::map<std::pair<int, TextureEncoding>, int> image_textures_;
   std::map<int, std::vector<std::uint32_t>> meshes_;  // glTF mesh → Prism mesh per primitive
   int default_material_ = -1;
+  std::vector<bool> visited_;  // nodes already placed
   std::vector<std::string> warnings_;
 };
 

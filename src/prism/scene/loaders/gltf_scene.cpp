@@ -186,6 +186,11 @@ const std::vector<std::uint32_t>& GltfBuilder::mesh_primitives(int mesh_index) {
 void GltfBuilder::visit_node(int node, const Transform& parent, int depth) {
   if (node < 0 || node >= static_cast<int>(model_.nodes.size())) fail(fmt::format("node {} does not exist", node));
   if (depth > kMaxNodeDepth) fail(fmt::format("the node hierarchy is deeper than {} (a cycle?)", kMaxNodeDepth));
+  // glTF node hierarchies are forests (§3.5.2): a node reached twice has two parents or is
+  // listed twice, which could otherwise make the traversal exponential.
+  if (visited_.empty()) visited_.assign(model_.nodes.size(), false);
+  if (visited_[node]) fail(fmt::format("node {} is reached twice (the node hierarchy must be a forest)", node));
+  visited_[node] = true;
   const tinygltf::Node& n = model_.nodes[node];
   const Transform to_world = compose(parent, node_transform(n));
   if (!finite(to_world)) fail(fmt::format("nodes[{}]: the transform is not finite", node));
@@ -268,7 +273,13 @@ Scene GltfBuilder::build() {
     if (s >= static_cast<int>(model_.scenes.size())) fail(fmt::format("scene {} does not exist", s));
     for (int node : model_.scenes[s].nodes) visit_node(node, Transform{}, 0);
   } else {
-    for (int i = 0; i < static_cast<int>(model_.nodes.size()); ++i) visit_node(i, Transform{}, 0);
+    // No scene: every root node (one that is no node's child).
+    std::vector<bool> is_child(model_.nodes.size(), false);
+    for (const auto& n : model_.nodes)
+      for (int c : n.children)
+        if (c >= 0 && c < static_cast<int>(is_child.size())) is_child[c] = true;
+    for (int i = 0; i < static_cast<int>(model_.nodes.size()); ++i)
+      if (!is_child[i]) visit_node(i, Transform{}, 0);
   }
   if (scene_.instances.empty()) fail("the scene places no triangles");
   if (scene_.cameras.empty()) {

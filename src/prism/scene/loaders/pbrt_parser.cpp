@@ -18,6 +18,7 @@ namespace {
 
 constexpr int kMaxIncludeDepth = 16;
 constexpr std::size_t kMaxAttributeDepth = 100000;
+constexpr std::size_t kMaxInstances = 50'000'000;  // placements of object meshes
 
 std::string read_text_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -183,6 +184,8 @@ void PbrtBuilder::directive(PbrtTokenizer& tokens, const PbrtToken& name, int in
     if (it == objects_.end()) tokens.fail(name.line, fmt::format("unknown object '{}'", n));
     if (current_object_) tokens.fail(name.line, "ObjectInstance inside an object definition");
     if (!state_.ctm.is_affine()) tokens.fail(name.line, "ObjectInstance: the transform is projective");
+    if (placements_.size() + it->second.size() > kMaxInstances)
+      tokens.fail(name.line, fmt::format("more than {} object instances", kMaxInstances));
     for (std::uint32_t mesh : it->second) placements_.push_back(Instance{mesh, state_.ctm.to_transform()});
   } else if (d == "Include" || d == "Import") {
     const std::string file = expect_string(tokens, d);

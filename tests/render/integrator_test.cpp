@@ -236,3 +236,45 @@ TEST(Integrator, StratifiedWavelengthsAreUnbiasedOverWholeGroups) {
 
 }  // namespace
 }  // namespace prism
+
+namespace prism {
+namespace {
+
+TEST(Integrator, BaseColourTextureModulatesReflectance) {
+  // A floor whose base colour texture is red on the left half and green on the right,
+  // lit by a white directional light straight down, direct light only: each half's
+  // radiance is ρ/π · E in its own colour (RGB transport; finest mip level at this scale).
+  Light sun;
+  sun.type = LightType::directional;
+  sun.direction = Vec3f(0, -1, 0);
+  sun.intensity = 100.0f;
+  Scene scene = lit_floor(sun);
+  scene.meshes[0].uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  TextureImage texture;
+  texture.name = "red-green";
+  texture.width = 16;  // texels 0–7 red, 8–15 green
+  texture.height = 1;
+  texture.channels = 3;
+  for (int i = 0; i < 16; ++i) texture.texels.insert(texture.texels.end(), {i < 8 ? 1.0f : 0.0f, i < 8 ? 0.0f : 1.0f, 0.0f});
+  texture.wrap_u = texture.wrap_v = TextureWrap::clamp;
+  scene.textures.push_back(texture);
+  scene.materials[0].base_color = Vec3f(1.0f);
+  scene.materials[0].base_color_texture = 0;
+  scene.camera.fov_degrees = 90.0f;
+  scene.camera.eye = Vec3f(0, 90, 0);  // sees x in [-90, 90]: u in [0.05, 0.95]
+  RenderSettings s = settings_for(all_modes()[0].transport, 16, 4);
+  s.path.max_depth = 1;
+  const Film film = render(scene, s).film;
+  const double lit = 100.0 / std::numbers::pi;  // ρ = 1 in the texel's channel
+  // The camera looks down with +z up in the image, so world x grows to the image's left:
+  // the left block sees u ≈ 0.72–0.89 (green texels), the right u ≈ 0.11–0.28 (red), away
+  // from the bilinear blend around u = 0.5.
+  const Estimate left = block(film, 1, 6, 4, 10), right = block(film, 12, 6, 15, 10);
+  EXPECT_NEAR(left.mean.y, lit, 1e-3 * lit);  // u > 0.5: green texel
+  EXPECT_NEAR(left.mean.x, 0.0, 1e-6);
+  EXPECT_NEAR(right.mean.x, lit, 1e-3 * lit);  // u < 0.5: red texel
+  EXPECT_NEAR(right.mean.y, 0.0, 1e-6);
+}
+
+}  // namespace
+}  // namespace prism

@@ -15,6 +15,8 @@ struct SurfaceInteraction {
   Frame shading;           // around the shading normal, on the geometric normal's side
   Vec2f uv;
   std::uint32_t material = 0;
+  std::uint32_t mesh = 0;
+  float uv_area = 0.0f, world_area = 0.0f;  // of the hit triangle (texture LOD)
   bool front_face = true;        // the ray hit the counter-clockwise (front) side
   float cos_wo_geometric = 0.0f; // cos between the unflipped front normal and -ray.direction
 };
@@ -29,10 +31,13 @@ inline SurfaceInteraction surface_interaction(const Scene& scene, const Hit& hit
   const float b0 = 1.0f - hit.u - hit.v;
   SurfaceInteraction si;
   si.material = mesh.material;
+  si.mesh = hit.mesh;
   // Position from barycentrics rather than origin + t·direction: it lies on the plane to
   // float precision, which keeps the self-intersection offset small.
   si.position = p0 * b0 + p1 * hit.u + p2 * hit.v;
-  const Vec3f ng = normalize(cross(p1 - p0, p2 - p0));
+  const Vec3f cross_p = cross(p1 - p0, p2 - p0);
+  si.world_area = 0.5f * length(cross_p);
+  const Vec3f ng = cross_p / (2.0f * si.world_area);
   si.cos_wo_geometric = -dot(ng, ray.direction);
   si.front_face = si.cos_wo_geometric > 0.0f;
   // Frames keep the mesh's orientation: dielectrics tell inside from outside by it, and
@@ -53,6 +58,7 @@ inline SurfaceInteraction surface_interaction(const Scene& scene, const Hit& hit
     const Vec2f& t1 = mesh.uvs[i1];
     const Vec2f& t2 = mesh.uvs[i2];
     si.uv = Vec2f(t0.x * b0 + t1.x * hit.u + t2.x * hit.v, t0.y * b0 + t1.y * hit.u + t2.y * hit.v);
+    si.uv_area = 0.5f * std::abs((t1.x - t0.x) * (t2.y - t0.y) - (t2.x - t0.x) * (t1.y - t0.y));
   }
   return si;
 }

@@ -18,7 +18,7 @@ template <class Mode>
 struct WavefrontIntegrator<Mode>::Paths {
   explicit Paths(std::size_t n)
       : ray(n), throughput(n), radiance(n), wavelengths(n), rng(n), hit(n), hit_found(n), shadow_ray(n),
-        shadow_contribution(n), shadow_pending(n), prev_position(n), prev_pdf(n), eta_scale(n), prev_specular(n), depth(n),
+        shadow_contribution(n), shadow_pending(n), prev_position(n), prev_pdf(n), eta_scale(n), cone_width(n), cone_spread(n), prev_specular(n), depth(n),
         finished(n), sample_index(n), sample_end(n) {}
   std::vector<Ray> ray;
   std::vector<Spectrum<Mode>> throughput, radiance;
@@ -32,6 +32,7 @@ struct WavefrontIntegrator<Mode>::Paths {
   std::vector<Vec3f> prev_position;
   std::vector<float> prev_pdf;             // solid-angle pdf of the direction that led here
   std::vector<float> eta_scale;            // product of η² over refractions (for roulette)
+  std::vector<float> cone_width, cone_spread;  // ray cone for texture LOD (Akenine-Möller et al. 2021)
   std::vector<std::uint8_t> prev_specular; // that direction came from a delta lobe
   std::vector<std::int32_t> depth;
   std::vector<std::uint8_t> finished;
@@ -45,10 +46,28 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
                                                bool regenerate)
     : paths_(std::make_unique<Paths>(static_cast<std::size_t>(width) * static_cast<std::size_t>(height))),
       tables_(scene.materials), scene_(scene), accel_(accel), lights_(lights), camera_(camera), colors_(colors), settings_(settings),
-      width_(width), height_(height), seed_(seed), regenerate_(regenerate) {}
+      width_(width), height_(height), seed_(seed), regenerate_(regenerate) {
+  for (const TextureImage& texture : scene.textures) textures_.push_back(build_mip_pyramid(texture));
+}
 
 template <class Mode>
 WavefrontIntegrator<Mode>::~WavefrontIntegrator() = default;
+
+template <class Mode>
+Spectrum<Mode> WavefrontIntegrator<Mode>::base_color(const Material& m, const SurfaceInteraction& si, float cone_width,
+                                                     const Ray& ray, const Wavelengths<Mode>& wl) const {
+  const int t = m.base_color_texture;
+  const TriangleMesh& mesh = scene_.meshes[si.mesh];
+  if (t < 0 || static_cast<std::size_t>(t) >= textures_.size() || mesh.uvs.empty())
+    return colors_.base_color(si.material, wl);
+  const TextureImage& image = scene_.textures[static_cast<std::size_t>(t)];
+  const float lod = mip_level_from_ray_cone(textures_[static_cast<std::size_t>(t)], cone_width,
+                                            std::abs(dot(ray.direction, si.geometric_normal)), si.uv_area, si.world_area);
+  const TexelRgba texel = sample_trilinear(textures_[static_cast<std::size_t>(t)], apply_uv_transform(image, si.uv), lod);
+  // Grey and two-channel textures carry luminance in their first channel.
+  const Vec3f rgb = image.channels >= 3 ? Vec3f(texel[0], texel[1], texel[2]) : Vec3f(texel[0]);
+  return colors_.reflectance(rgb * m.base_color, wl);
+}
 
 template <class Mode>
 void WavefrontIntegrator<Mode>::generate(Paths& p, std::uint32_t slot, std::uint32_t sample_index) const {
@@ -65,6 +84,8 @@ void WavefrontIntegrator<Mode>::generate(Paths& p, std::uint32_t slot, std::uint
   p.depth[slot] = 0;
   p.prev_pdf[slot] = 0.0f;
   p.eta_scale[slot] = 1.0f;
+  p.cone_width[slot] = 0.0f;
+  p.cone_spread[slot] = camera_.pixel_spread_angle();
   p.prev_specular[slot] = 1;  // camera rays see emitters directly, unweighted
   p.finished[slot] = 0;
   p.sample_index[slot] = sample_index;
@@ -112,7 +133,9 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     return;
   }
 
-  const auto bsdf = make_bsdf<Mode>(material, si.material, colors_.base_color(si.material, wl), wl, tables_);
+  p.cone_width[slot] += p.cone_spread[slot] * p.hit[slot].t;
+  const auto bsdf = make_bsdf<Mode>(material, si.material, base_color(material, si, p.cone_width[slot], ray, wl), wl,
+                                    tables_);
   if constexpr (Mode::kSpectral) {
     // Hero wavelength after a dispersive event (Wilkie et al. 2014): from here on only
     // channel 0 carries an estimate; terminate once (pdf[1] = 0 marks it done).
@@ -171,6 +194,9 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   p.eta_scale[slot] *= bs->eta * bs->eta;
   p.prev_pdf[slot] = bs->pdf;
   p.prev_specular[slot] = bs->is_specular;
+  // After a glossy or diffuse bounce the cone widens to roughly the lobe's extent; a
+  // fixed spread is the simple variant of the ray-cone method (Akenine-Möller et al.).
+  if (!bs->is_specular) p.cone_spread[slot] = std::max(p.cone_spread[slot], 0.05f);
   p.prev_position[slot] = si.position;
   p.depth[slot] += 1;
 

@@ -22,8 +22,11 @@
 #include "prism/scene/camera_rays.h"
 #include "prism/scene/light_sampler.h"
 #include "prism/scene/scene.h"
+#include "prism/scene/texture_sampling.h"
 
 namespace prism {
+
+struct SurfaceInteraction;
 
 // How direct light is estimated. All three converge to the same image; mis has the
 // lowest variance. nee_only and bsdf_only exist to test that claim.
@@ -61,10 +64,13 @@ class WavefrontIntegrator {
   struct Paths;  // structure of arrays, one slot per pixel
   void generate(Paths& paths, std::uint32_t slot, std::uint32_t sample_index) const;
   void shade(Paths& paths, std::uint32_t slot) const;
+  Spectrum<Mode> base_color(const Material& material, const SurfaceInteraction& si, float cone_width,
+                            const Ray& ray, const Wavelengths<Mode>& wl) const;
   PassStatistics run_wave(Film& film, std::uint32_t first_sample, std::uint32_t count);
 
   std::unique_ptr<Paths> paths_;  // allocated once, reused by every wave
   MaterialTables tables_;
+  std::vector<MipPyramid> textures_;  // one per Scene::textures entry
   const Scene& scene_;
   const EmbreeAccel& accel_;
   const LightSampler& lights_;

@@ -12,6 +12,8 @@ class PinholeCamera {
   // Ray through film position (x, y) in pixels, (0, 0) the top-left corner of the image.
   // u_lens picks the point on the lens (thin-lens cameras; ignored by pinholes).
   Ray generate_ray(float film_x, float film_y, Vec2f u_lens = Vec2f(0.5f, 0.5f)) const;
+  // Angle subtended by one pixel at the image centre: the ray cone's spread (texture LOD).
+  float pixel_spread_angle() const { return 2.0f * scale_y_ * inv_height_; }
 
  private:
   Transform camera_to_world_;

@@ -15,6 +15,22 @@
 namespace prism {
 namespace fs = std::filesystem;
 
+namespace {
+std::atomic<int> g_fault_at{0};       // 0: no fault armed
+std::atomic<int> g_fault_errno{ENOSPC};
+std::atomic<int> g_commits{0};
+}  // namespace
+
+void WriteFaults::fail_nth_commit(int n, int error) {
+  g_commits.store(0);
+  g_fault_errno.store(error);
+  g_fault_at.store(n > 0 ? n : 0);
+}
+
+void WriteFaults::clear() { fail_nth_commit(0); }
+
+int WriteFaults::commits_seen() { return g_commits.load(); }
+
 AtomicFile::AtomicFile(fs::path target) : target_(std::move(target)) {
   static std::atomic<unsigned> counter{0};
   const fs::path dir = target_.has_parent_path() ? target_.parent_path() : fs::path(".");
@@ -29,6 +45,8 @@ AtomicFile::~AtomicFile() {
 }
 
 void AtomicFile::commit() {
+  if (const int at = g_fault_at.load(std::memory_order_relaxed); at > 0 && g_commits.fetch_add(1) + 1 == at)
+    throw IoError(fmt::format("cannot write '{}': {}", target_.string(), std::strerror(g_fault_errno.load())));
   if (std::rename(temporary_.c_str(), target_.c_str()) != 0)
     throw IoError(fmt::format("cannot write '{}': {}", target_.string(), std::strerror(errno)));
   committed_ = true;

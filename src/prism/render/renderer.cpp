@@ -9,6 +9,7 @@
 #include "prism/core/error.h"
 #include "prism/core/parallel.h"
 #include "prism/core/sample_stream.h"
+#include "prism/render/memory_estimate.h"
 #include "prism/scene/camera_rays.h"
 #include "prism/scene/flatten_instances.h"
 #include "prism/scene/light_sampler.h"
@@ -165,6 +166,8 @@ RenderResult render(const Scene& input_scene, const RenderSettings& settings, co
   validate_render_settings(settings);
   validate_transport(settings.transport);
   validate_scene(input_scene);
+  // Reliability (--memory-limit): refuse a render that cannot fit before allocating it.
+  check_render_memory(input_scene, settings, settings.memory_limit_bytes);
   const Scene scene = flatten_instances(input_scene);
   const ThreadLimit thread_limit(settings.threads);
   const auto start = std::chrono::steady_clock::now();

@@ -28,6 +28,9 @@ struct RenderSettings {
   TransportSettings transport;
   int samples_per_pass = 0;         // 0: sized from the measured speed (about 0.5 s a pass)
   bool regenerate_paths = true;     // off: one wave per sample (for measuring the benefit)
+  // Refuse (Error) before allocating when estimate_render_memory() exceeds this
+  // (memory_estimate.h); 0: 90 % of physical memory.
+  std::uint64_t memory_limit_bytes = 0;
 };
 
 // Validates ranges (sizes, spp, depth, threads); throws UsageError naming the option.

@@ -1,0 +1,114 @@
+#include "prism/render/memory_estimate.h"
+
+#include <unistd.h>
+
+#include <cctype>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "prism/core/error.h"
+
+namespace prism {
+namespace {
+
+std::uint64_t mesh_bytes(const TriangleMesh& m) {
+  return m.positions.size() * sizeof(Vec3f) + m.normals.size() * sizeof(Vec3f) + m.uvs.size() * sizeof(Vec2f) +
+         m.tangents.size() * sizeof(Vec3f) + m.indices.size() * sizeof(std::uint32_t);
+}
+
+}  // namespace
+
+MemoryEstimate estimate_render_memory(const Scene& scene, const RenderSettings& settings) {
+  MemoryEstimate e;
+  const std::uint64_t pixels = static_cast<std::uint64_t>(settings.width > 0 ? settings.width : 0) *
+                               static_cast<std::uint64_t>(settings.height > 0 ? settings.height : 0);
+  e.film = pixels * kFilmBytesPerPixel;
+  e.path_pool = pixels * kPathPoolBytesPerPixel;
+  e.images = pixels * kImageBytesPerPixel;
+
+  // The loaded texels, the flattened scene's copy and a mip pyramid (4/3 of the image).
+  std::uint64_t texels = 0;
+  for (const auto& t : scene.textures) texels += t.memory_bytes();
+  e.textures = texels * 2 + texels * 4 / 3;
+
+  // The loaded meshes, the flattened copy (one mesh per instance) and the BVH over it.
+  std::uint64_t loaded = 0, loaded_triangles = 0;
+  for (const auto& m : scene.meshes) {
+    loaded += mesh_bytes(m);
+    loaded_triangles += m.triangle_count();
+  }
+  std::uint64_t flat = loaded, flat_triangles = loaded_triangles;
+  if (!scene.instances.empty()) {
+    flat = flat_triangles = 0;
+    for (const auto& inst : scene.instances) {
+      if (inst.mesh >= scene.meshes.size()) continue;  // validate_scene/flatten report it
+      flat += mesh_bytes(scene.meshes[inst.mesh]);
+      flat_triangles += scene.meshes[inst.mesh].triangle_count();
+    }
+  }
+  e.meshes = loaded + flat + flat_triangles * kBvhBytesPerTriangle;
+  return e;
+}
+
+std::uint64_t default_memory_limit() {
+  const long pages = ::sysconf(_SC_PHYS_PAGES);
+  const long page_size = ::sysconf(_SC_PAGE_SIZE);
+  if (pages <= 0 || page_size <= 0) return 0;
+  return static_cast<std::uint64_t>(pages) / 10 * 9 * static_cast<std::uint64_t>(page_size);
+}
+
+std::uint64_t parse_memory_size(const std::string& text) {
+  const auto bad = [&] {
+    return UsageError(fmt::format("--memory-limit '{}' is not a size (BYTES, or a number with K, M, G or T)", text));
+  };
+  std::size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::logic_error&) {
+    throw bad();
+  }
+  if (!std::isfinite(value) || value <= 0.0 || !std::isdigit(static_cast<unsigned char>(text[0]))) throw bad();
+  std::string suffix = text.substr(used);
+  for (auto& c : suffix) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  double scale = 1.0;
+  if (!suffix.empty() && std::string("KMGT").find(suffix[0]) != std::string::npos) {
+    scale = std::pow(1024.0, static_cast<double>(std::string("KMGT").find(suffix[0]) + 1));
+    suffix.erase(0, 1);
+    if (suffix == "IB" || suffix == "B") suffix.clear();
+  } else if (suffix == "B") {
+    suffix.clear();
+  }
+  if (!suffix.empty()) throw bad();
+  const double bytes = value * scale;
+  if (bytes < 1.0 || bytes > 1.8e19) throw bad();
+  return static_cast<std::uint64_t>(bytes);
+}
+
+std::string format_bytes(std::uint64_t bytes) {
+  const char* units[] = {"B", "KiB", "MiB", "GiB", "TiB"};
+  double v = static_cast<double>(bytes);
+  int u = 0;
+  while (v >= 1024.0 && u < 4) {
+    v /= 1024.0;
+    ++u;
+  }
+  if (u == 0) return fmt::format("{} B", bytes);
+  return fmt::format("{:.{}f} {}", v, v < 10.0 ? 2 : v < 100.0 ? 1 : 0, units[u]);
+}
+
+void check_render_memory(const Scene& scene, const RenderSettings& settings, std::uint64_t limit_bytes) {
+  const std::uint64_t limit = limit_bytes > 0 ? limit_bytes : default_memory_limit();
+  if (limit == 0) return;  // physical memory unknown and no explicit limit
+  const MemoryEstimate e = estimate_render_memory(scene, settings);
+  if (e.total() <= limit) return;
+  throw Error(fmt::format(
+      "render needs about {} (film {}, path pool {}, images {}, textures {}, meshes {}) for {}x{}, more than the "
+      "memory limit of {}{}; reduce the resolution or scene, or raise --memory-limit",
+      format_bytes(e.total()), format_bytes(e.film), format_bytes(e.path_pool), format_bytes(e.images),
+      format_bytes(e.textures), format_bytes(e.meshes), settings.width, settings.height, format_bytes(limit),
+      limit_bytes > 0 ? "" : " (90 % of physical memory)"));
+}
+
+}  // namespace prism

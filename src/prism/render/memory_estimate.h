@@ -1,0 +1,44 @@
+#pragma once
+// What a render will hold in memory, estimated from the scene and settings before any of
+// it is allocated, so that a render that cannot fit is refused with a clear message
+// instead of being killed by the OOM killer hours later (--memory-limit).
+#include <cstdint>
+#include <string>
+
+#include "prism/render/renderer.h"
+#include "prism/scene/scene.h"
+
+namespace prism {
+
+struct MemoryEstimate {
+  std::uint64_t film = 0;       // sums, squared sums (2 × Vec3d) and counts (u32) per pixel
+  std::uint64_t path_pool = 0;  // wavefront path state, about 250 B per pixel
+  std::uint64_t images = 0;     // output conversion buffers (float RGB per pixel, twice)
+  std::uint64_t textures = 0;   // loaded texels, the renderer's copy and mip pyramids
+  std::uint64_t meshes = 0;     // vertex and index arrays, loaded and flattened, plus the BVH
+  std::uint64_t total() const { return film + path_pool + images + textures + meshes; }
+};
+
+// Bytes per pixel and per triangle the estimate assumes (documented in docs/reliability.md).
+inline constexpr std::uint64_t kFilmBytesPerPixel = 2 * 3 * sizeof(double) + sizeof(std::uint32_t);
+inline constexpr std::uint64_t kPathPoolBytesPerPixel = 250;
+inline constexpr std::uint64_t kImageBytesPerPixel = 2 * 3 * sizeof(float);
+inline constexpr std::uint64_t kBvhBytesPerTriangle = 96;  // Embree BVH4 with triangle data
+
+MemoryEstimate estimate_render_memory(const Scene& scene, const RenderSettings& settings);
+
+// 90 % of physical memory (sysconf), or 0 when the platform does not say.
+std::uint64_t default_memory_limit();
+
+// Parses "BYTES" or a number with a K, M, G or T suffix (binary: K = 1024; an optional
+// trailing "B" or "iB" is accepted, e.g. "512M", "1.5G", "4GiB"). Throws UsageError.
+std::uint64_t parse_memory_size(const std::string& text);
+
+// "1.50 GiB", "12.0 MiB", "512 B".
+std::string format_bytes(std::uint64_t bytes);
+
+// Throws Error (exit 1 in the CLI) naming the estimate, its parts and the limit when the
+// estimate exceeds `limit_bytes` (0: default_memory_limit()).
+void check_render_memory(const Scene& scene, const RenderSettings& settings, std::uint64_t limit_bytes);
+
+}  // namespace prism

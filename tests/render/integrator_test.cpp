@@ -10,29 +10,15 @@
 #include "prism/render/renderer.h"
 #include "prism/scene/builtin_scenes.h"
 #include "prism/scene/loaders/sphere_mesh.h"
+#include "support/film_statistics.h"
 #include "support/test_scenes.h"
 
 namespace prism {
 namespace {
 
-struct Estimate {
-  Vec3d mean, variance;
-};
+using Estimate = test::BlockEstimate;
 
-Estimate block(const Film& film, int x0, int y0, int x1, int y1) {
-  Estimate e;
-  double n = 0.0;
-  for (int y = y0; y < y1; ++y)
-    for (int x = x0; x < x1; ++x) {
-      const std::size_t p = static_cast<std::size_t>(y) * film.width() + x;
-      e.mean += film.mean(p);
-      e.variance += film.variance_of_mean(p);
-      n += 1.0;
-    }
-  e.mean /= n;
-  e.variance /= n * n;
-  return e;
-}
+Estimate block(const Film& film, int x0, int y0, int x1, int y1) { return test::block_estimate(film, x0, y0, x1, y1); }
 
 Estimate whole(const Film& film) { return block(film, 0, 0, film.width(), film.height()); }
 

@@ -8,31 +8,14 @@
 #include "prism/core/error.h"
 #include "prism/render/renderer.h"
 #include "prism/scene/builtin_scenes.h"
+#include "support/film_statistics.h"
 #include "support/test_scenes.h"
 
 namespace prism {
 namespace {
 
-// Mean radiance and variance of that mean over a rectangular block of pixels.
-struct BlockEstimate {
-  Vec3d mean;
-  Vec3d variance;
-};
-
-BlockEstimate block_estimate(const Film& film, int x0, int y0, int x1, int y1) {
-  BlockEstimate e;
-  double n = 0.0;
-  for (int y = y0; y < y1; ++y)
-    for (int x = x0; x < x1; ++x) {
-      const std::size_t p = static_cast<std::size_t>(y) * film.width() + x;
-      e.mean += film.mean(p);
-      e.variance += film.variance_of_mean(p);
-      n += 1.0;
-    }
-  e.mean /= n;
-  e.variance /= n * n;  // pixels are independent
-  return e;
-}
+using test::BlockEstimate;
+using test::block_estimate;
 
 // Compares two independent renders block by block (4×4 blocks, 3 channels). With a 5σ
 // bound a single comparison raises a false alarm with probability 5.7e-7, so the 48

@@ -210,6 +210,15 @@ TEST(PbrtLoader, IncludeResolvesInsideTheFolderOnly) {
   EXPECT_NE(test::error_of<SceneError>([&] { load_pbrt_scene(escape); }).find("escape.pbrt:2"), std::string::npos);
   const auto self = dir.write("self.pbrt", "Include \"self.pbrt\"\n");
   EXPECT_NE(test::error_of<SceneError>([&] { load_pbrt_scene(self); }).find("nested more than"), std::string::npos);
+  const auto missing = dir.write("missing.pbrt", "WorldBegin\n\nInclude \"nope.pbrt\"\n");
+  EXPECT_NE(test::error_of<IoError>([&] { load_pbrt_scene(missing); }).find("missing.pbrt:3: Include"), std::string::npos);
+  const auto no_ply = dir.write("noply.pbrt", "WorldBegin\nShape \"plymesh\" \"string filename\" \"nope.ply\"\n");
+  EXPECT_NE(test::error_of<IoError>([&] { load_pbrt_scene(no_ply); }).find("noply.pbrt:2: plymesh"), std::string::npos);
+  dir.write("bad.ply", "ply\nformat ascii 1.0\nelement vertex 1\n");
+  const auto bad_ply = dir.write("badply.pbrt", "WorldBegin\nShape \"plymesh\" \"string filename\" \"bad.ply\"\n");
+  EXPECT_NE(test::error_of<SceneError>([&] { load_pbrt_scene(bad_ply); }).find("badply.pbrt:2: plymesh: bad.ply:"), std::string::npos);
+  const auto no_tex = dir.write("notex.pbrt", "WorldBegin\nTexture \"t\" \"spectrum\" \"imagemap\" \"string filename\" \"nope.png\"\n");
+  EXPECT_NE(test::error_of<IoError>([&] { load_pbrt_scene(no_tex); }).find("notex.pbrt:2: Texture"), std::string::npos);
   const auto bad = dir.write("geometry/bad.pbrt", "\n\nShape \"trianglemesh\" \"point3 P\" [0 0]\n");
   const auto outer = dir.write("outer.pbrt", "Include \"geometry/bad.pbrt\"\n");
   EXPECT_NE(test::error_of<SceneError>([&] { load_pbrt_scene(outer); }).find("bad.pbrt:3:"), std::string::npos);

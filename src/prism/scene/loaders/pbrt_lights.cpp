@@ -88,7 +88,11 @@ void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
     const std::string file = p.get_string("filename", "");
     if (!file.empty()) {
       if (p.has("L")) throw SceneError(fmt::format("{}:{}: infinite light: give \"L\" or \"filename\", not both", p.source, p.line));
-      light.environment_texture = textures_->load(resolve(p, "filename", file), TextureEncoding::linear);
+      try {
+        light.environment_texture = textures_->load(resolve(p, "filename", file), TextureEncoding::linear);
+      } catch (const IoError& e) {
+        throw IoError(fmt::format("{}:{}: infinite light: {}", p.source, p.line, e.what()));
+      }
       light.intensity = static_cast<float>(p.get_float("scale", 1.0));
       approximations_.push_back(fmt::format(
           "infinite light (line {}): the image is read as equirectangular (pbrt-v4 uses equal-area octahedral maps)",

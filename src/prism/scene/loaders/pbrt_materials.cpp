@@ -154,7 +154,11 @@ void PbrtBuilder::texture(const std::string& name, const std::string& value_type
     const TextureEncoding enc = encoding == "linear" ? TextureEncoding::linear : TextureEncoding::srgb;
     if (encoding != "linear" && encoding != "sRGB")
       approximations_.push_back(fmt::format("Texture '{}' encoding \"{}\" as sRGB", name, encoding));
-    t.image = textures_->load(resolve(p, "filename", file), enc, w, w);
+    try {
+      t.image = textures_->load(resolve(p, "filename", file), enc, w, w);
+    } catch (const IoError& e) {
+      throw IoError(fmt::format("{}:{}: Texture: {}", p.source, p.line, e.what()));
+    }
     const double su = p.get_float("uscale", 1.0), sv = p.get_float("vscale", 1.0);
     const double du = p.get_float("udelta", 0.0), dv = p.get_float("vdelta", 0.0);
     if (su != 1.0 || sv != 1.0 || du != 0.0 || dv != 0.0) {

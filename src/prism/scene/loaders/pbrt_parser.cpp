@@ -194,7 +194,12 @@ void PbrtBuilder::directive(PbrtTokenizer& tokens, const PbrtToken& name, int in
     where.source = tokens.source();
     where.line = name.line;
     const auto path = resolve(where, d, file);
-    const std::string text = read_text_file(path);
+    std::string text;
+    try {
+      text = read_text_file(path);
+    } catch (const IoError& e) {
+      throw IoError(fmt::format("{}:{}: {}: {}", tokens.source(), name.line, d, e.what()));
+    }
     parse(text, path.filename().string(), include_depth + 1);
   } else if (d == "Material") {
     const std::string type = expect_string(tokens, d);

@@ -81,7 +81,14 @@ void PbrtBuilder::shape(const std::string& type, const PbrtParams& p) {
   } else if (type == "plymesh") {
     const std::string file = p.get_string("filename", "");
     if (file.empty()) throw SceneError(fmt::format("{}:{}: plymesh needs a \"filename\"", p.source, p.line));
-    PlyMesh ply = read_ply_mesh(resolve(p, "filename", file));
+    PlyMesh ply;
+    try {
+      ply = read_ply_mesh(resolve(p, "filename", file));
+    } catch (const IoError& e) {
+      throw IoError(fmt::format("{}:{}: plymesh: {}", p.source, p.line, e.what()));
+    } catch (const SceneError& e) {
+      throw SceneError(fmt::format("{}:{}: plymesh: {}", p.source, p.line, e.what()));
+    }
     mesh.positions = std::move(ply.positions);
     mesh.normals = std::move(ply.normals);
     mesh.uvs = std::move(ply.uvs);

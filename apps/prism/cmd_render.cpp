@@ -187,10 +187,9 @@ int run_render(const RenderOptions& o) {
   Scene scene = load_scene(o.scene, LoadOptions{.allow_external_paths = o.allow_external_paths});
   if (!o.camera_json.empty()) scene.camera = read_camera_json(o.camera_json, scene.camera);
   for (const std::string& w : scene.warnings) fmt::print(stderr, "prism: warning: {}\n", w);
-  for (const Light& l : scene.lights)
-    if (l.type == LightType::environment)
-      fmt::print(stderr, "prism: warning: environment light '{}' is not rendered yet (environment maps are an open "
-                         "part of the integrator issue)\n", l.name);
+  for (std::size_t i = 1, n = 0; i <= scene.lights.size(); ++i)
+    if (scene.lights[i - 1].type == LightType::environment && ++n == 2)
+      fmt::print(stderr, "prism: warning: only the first environment light is used\n");
   // A scene camera's physical exposure applies unless the command line sets one.
   DisplayCliOptions display = o.display;
   if (!display.ev100 && !display.f_number && !display.auto_exposure && scene.camera.f_number > 0.0f &&

@@ -1,5 +1,7 @@
 #include "prism/render/color_context.h"
 
+#include <algorithm>
+
 #include "prism/color/chromatic_adaptation.h"
 #include "prism/color/cie_1931.h"
 #include "prism/color/jakob_hanika_table.h"
@@ -92,6 +94,18 @@ Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::emission(std::uint32_t 
   Spectrum<Mode> s;
   const color::EmissionSpectrum& e = emitters_[emitter];
   for (int i = 0; i < N; ++i) s[i] = static_cast<float>(e(w.wavelength_nm[i]));
+  return s;
+}
+
+template <int N>
+Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::rgb_radiance(const Vec3f& rgb, const Wavelengths<Mode>& w) const {
+  Spectrum<Mode> s;
+  const float m = std::max({rgb.x, rgb.y, rgb.z});
+  if (!(m > 0.0f)) return s;
+  const color::SigmoidPolynomial c = color::JakobHanikaTable::get("srgb").lookup(Vec3d(rgb / (2.0f * m)));
+  // 683 ∫ L ȳ ≈ Y(rgb): L(λ) = 2m s(λ) / (683 ∫ ȳ), exact for greys (s = ½).
+  const double k = 2.0 * m / (color::kMaxLuminousEfficacyLmPerW * color::cie1931_y_integral());
+  for (int i = 0; i < N; ++i) s[i] = static_cast<float>(k * c(w.wavelength_nm[i]));
   return s;
 }
 

@@ -43,6 +43,12 @@ class ColorContext<SpectralMode<N>> {
   Spectrum<Mode> base_color(std::uint32_t material, const Wavelengths<Mode>& w) const;
   // Emitted radiance (or intensity / illuminance for delta lights) of an emitter.
   Spectrum<Mode> emission(std::uint32_t emitter, const Wavelengths<Mode>& w) const;
+  // Radiance given as linear Rec.709 RGB in nits (environment texels): upsampled with the
+  // Jakob–Hanika sRGB table at half the largest channel and scaled so that a grey texel
+  // becomes the flat (E-white) spectrum of the same luminance — the E-relative convention
+  // of the emission rule; colours are reproduced to the accuracy of a von Kries swap of
+  // the table's D65 fit for E.
+  Spectrum<Mode> rgb_radiance(const Vec3f& linear_rec709_nits, const Wavelengths<Mode>& w) const;
   Vec3d to_film(const Spectrum<Mode>& value, const Wavelengths<Mode>& w) const;
   // Keeps only channel 0's wavelength after a dispersive event (hero wavelength, Wilkie
   // et al. 2014): the other channels' pdfs become 0 and channel 0's estimate must become
@@ -69,6 +75,9 @@ class ColorContext<RgbMode> {
   Spectrum<Mode> reflectance(const Vec3f& linear_srgb, const Wavelengths<Mode>& w) const;
   Spectrum<Mode> base_color(std::uint32_t material, const Wavelengths<Mode>&) const { return base_colors_[material]; }
   Spectrum<Mode> emission(std::uint32_t emitter, const Wavelengths<Mode>&) const { return emitters_[emitter]; }
+  Spectrum<Mode> rgb_radiance(const Vec3f& linear_rec709_nits, const Wavelengths<Mode>& w) const {
+    return reflectance(linear_rec709_nits, w);  // the same sRGB → working conversion
+  }
   Vec3d to_film(const Spectrum<Mode>& value, const Wavelengths<Mode>&) const { return {value[0], value[1], value[2]}; }
   void terminate_secondary(Wavelengths<Mode>&) const {}
 

@@ -107,7 +107,8 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     for (const auto& e : lights_.escaped(ray.direction)) {
       float w = 1.0f;
       if (!p.prev_specular[slot] && use_nee) w = weight_bsdf_hits ? power_heuristic(p.prev_pdf[slot], e.pdf) : 0.0f;
-      L += beta * colors_.emission(e.emitter, wl) * (e.scale * w);
+      const Spectrum<Mode> Le = e.has_rgb ? colors_.rgb_radiance(e.rgb, wl) : colors_.emission(e.emitter, wl) * e.scale;
+      L += beta * Le * w;
     }
     p.finished[slot] = 1;
     return;
@@ -168,8 +169,9 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
             t_max = len * (1.0f - 1e-4f);
           }
           p.shadow_ray[slot] = Ray{origin, dir, 0.0f, t_max};
-          p.shadow_contribution[slot] =
-              beta * f * colors_.emission(ls->emitter, wl) * (std::abs(wi_local.z) * ls->scale * w / ls->pdf);
+          const Spectrum<Mode> Le =
+              ls->has_rgb ? colors_.rgb_radiance(ls->rgb, wl) : colors_.emission(ls->emitter, wl) * ls->scale;
+          p.shadow_contribution[slot] = beta * f * Le * (std::abs(wi_local.z) * w / ls->pdf);
           p.shadow_pending[slot] = 1;
         }
       }

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "prism/core/frame.h"
+#include "prism/color/color_space.h"
 #include "prism/sampling/warps.h"
 
 namespace prism {
@@ -59,7 +60,6 @@ LightSampler::LightSampler(const Scene& scene, const Bounds3f& world) {
   const float world_radius = 0.5f * length(diagonal);
   for (std::size_t l = 0; l < scene.lights.size(); ++l) {
     const Light& light = scene.lights[l];
-    if (light.type == LightType::environment) continue;  // environment maps: integrator issue, not yet
     Emitter e{};
     e.emitter = static_cast<std::uint32_t>(scene.materials.size() + l);
     e.position = light.position;
@@ -90,8 +90,25 @@ LightSampler::LightSampler(const Scene& scene, const Bounds3f& world) {
         power.push_back(intensity * kPi * double(world_radius) * world_radius);  // E over the scene's disc
         break;
       }
-      case LightType::environment: break;
+      case LightType::environment: {
+        if (e.texture || environment_built_) break;  // one environment per scene: the first
+        e.kind = Kind::environment;
+        e.intensity_nits = static_cast<float>(intensity);
+        e.map_to_world = light.environment_to_world;
+        // Rotations only: the inverse is the transpose.
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) e.world_to_map.m[i][j] = light.environment_to_world.m[j][i];
+        const bool textured = light.environment_texture >= 0 &&
+                              static_cast<std::size_t>(light.environment_texture) < scene.textures.size();
+        e.texture = textured ? &scene.textures[static_cast<std::size_t>(light.environment_texture)] : nullptr;
+        const double average_luminance = build_environment_distribution(e);
+        environment_built_ = true;
+        // Φ ≈ π R² · π L̄: the scene's disc lit by the sky's average luminance.
+        power.push_back(kPi * double(world_radius) * world_radius * kPi * intensity * average_luminance);
+        break;
+      }
     }
+    if (light.type == LightType::environment && e.kind != Kind::environment) continue;
     emitters_.push_back(e);
   }
 
@@ -109,6 +126,65 @@ LightSampler::LightSampler(const Scene& scene, const Bounds3f& world) {
     selection_cdf_.push_back(static_cast<float>(running / total));
   }
   selection_cdf_.back() = 1.0f;
+}
+
+namespace {
+
+// Equirectangular map convention: v = θ/π from +y (top row) down, u = (φ + π)/2π with
+// φ = atan2(z, x) in the map's frame.
+Vec2f direction_to_equirect(const Vec3f& d) {
+  const float theta = std::acos(std::clamp(d.y, -1.0f, 1.0f));
+  const float phi = std::atan2(d.z, d.x);
+  return {(phi + kPi) / (2.0f * kPi), theta / kPi};
+}
+
+Vec3f equirect_to_direction(Vec2f uv) {
+  const float phi = uv.x * 2.0f * kPi - kPi, theta = uv.y * kPi;
+  const float sin_theta = std::sin(theta);
+  return {sin_theta * std::cos(phi), std::cos(theta), sin_theta * std::sin(phi)};
+}
+
+Vec3f texel_rgb(const TextureImage& t, Vec2f uv) {
+  const int x = std::clamp(static_cast<int>(uv.x * t.width), 0, t.width - 1);
+  const int y = std::clamp(static_cast<int>(uv.y * t.height), 0, t.height - 1);
+  const float* p = &t.texels[(static_cast<std::size_t>(y) * t.width + x) * t.channels];
+  return t.channels >= 3 ? Vec3f(p[0], p[1], p[2]) : Vec3f(p[0]);
+}
+
+}  // namespace
+
+double LightSampler::build_environment_distribution(const Emitter& e) {
+  if (!e.texture) return 1.0;
+  const TextureImage& t = *e.texture;
+  const Vec3d y_row = color::color_space("srgb").rgb_to_xyz.row(1);  // luminance weights
+  std::vector<float> f(static_cast<std::size_t>(t.width) * t.height);
+  double weighted = 0.0, weight = 0.0;
+  for (int y = 0; y < t.height; ++y) {
+    const float sin_theta = std::sin(kPi * (y + 0.5f) / t.height);
+    for (int x = 0; x < t.width; ++x) {
+      const Vec3f rgb = texel_rgb(t, Vec2f((x + 0.5f) / t.width, (y + 0.5f) / t.height));
+      const double lum = std::max(0.0, dot(y_row, Vec3d(rgb)));
+      f[static_cast<std::size_t>(y) * t.width + x] = static_cast<float>(lum * sin_theta);
+      weighted += lum * sin_theta;
+      weight += sin_theta;
+    }
+  }
+  environment_distribution_ = PiecewiseConstant2D(f, t.width, t.height);
+  return weight > 0.0 ? weighted / weight : 0.0;
+}
+
+Vec3f LightSampler::environment_rgb(const Emitter& e, const Vec3f& d) const {
+  if (!e.texture) return Vec3f(e.intensity_nits);
+  return texel_rgb(*e.texture, direction_to_equirect(e.world_to_map.apply_vector(d))) * e.intensity_nits;
+}
+
+float LightSampler::environment_pdf(const Emitter& e, const Vec3f& d) const {
+  if (!e.texture) return uniform_sphere_pdf();
+  const Vec2f uv = direction_to_equirect(e.world_to_map.apply_vector(d));
+  const float sin_theta = std::sin(uv.y * kPi);
+  if (sin_theta <= 0.0f) return 0.0f;
+  // uv → solid angle: dω = 2π² sin θ du dv.
+  return environment_distribution_.pdf(uv) / (2.0f * kPi * kPi * sin_theta);
 }
 
 std::optional<LightSample> LightSampler::sample(const Vec3f& reference, float u_select, Vec2f u_point) const {
@@ -172,6 +248,22 @@ std::optional<LightSample> LightSampler::sample_emitter(std::size_t index, const
       s.scale = e.disc_radiance_scale;
       return s;
     }
+    case Kind::environment: {
+      s.distance = std::numeric_limits<float>::infinity();
+      s.has_rgb = true;
+      if (!e.texture) {
+        s.wi = sample_uniform_sphere(u);
+        s.pdf = uniform_sphere_pdf();
+      } else {
+        const PiecewiseConstant2D::Sample m = environment_distribution_.sample(u);
+        const float sin_theta = std::sin(m.p.y * kPi);
+        if (sin_theta <= 0.0f || m.pdf <= 0.0f) return std::nullopt;
+        s.wi = normalize(e.map_to_world.apply_vector(equirect_to_direction(m.p)));
+        s.pdf = m.pdf / (2.0f * kPi * kPi * sin_theta);
+      }
+      s.rgb = environment_rgb(e, s.wi);
+      return s;
+    }
   }
   return std::nullopt;
 }
@@ -190,9 +282,13 @@ std::vector<LightSampler::EscapedHit> LightSampler::escaped(const Vec3f& wi) con
   std::vector<EscapedHit> hits;
   for (std::size_t i = 0; i < emitters_.size(); ++i) {
     const Emitter& e = emitters_[i];
+    if (e.kind == Kind::environment) {
+      hits.push_back({e.emitter, 1.0f, selection_pmf_[i] * environment_pdf(e, wi), true, environment_rgb(e, wi)});
+      continue;
+    }
     if (e.kind != Kind::directional || e.cos_max >= 1.0f) continue;
     if (dot(wi, -e.axis) < e.cos_max) continue;
-    hits.push_back({e.emitter, e.disc_radiance_scale, selection_pmf_[i] * uniform_cone_pdf(e.cos_max)});
+    hits.push_back({e.emitter, e.disc_radiance_scale, selection_pmf_[i] * uniform_cone_pdf(e.cos_max), false, Vec3f(0.0f)});
   }
   return hits;
 }

@@ -10,6 +10,7 @@
 
 #include "prism/core/bounds.h"
 #include "prism/core/vec.h"
+#include "prism/sampling/piecewise_constant.h"
 #include "prism/scene/scene.h"
 
 namespace prism {
@@ -23,6 +24,8 @@ struct LightSample {
   float scale = 1.0f;       // multiplies the emitter's spectrum: 1/r² and spot falloff, or sun-disc radiance
   Vec3f position;           // sampled point (shadow-ray target); unused for directional lights
   Vec3f normal;             // emitter normal at the point (area lights)
+  bool has_rgb = false;     // environment: radiance is `rgb` (linear Rec.709, nits) times the emitter's tint
+  Vec3f rgb;
 };
 
 class LightSampler {
@@ -47,11 +50,13 @@ class LightSampler {
     std::uint32_t emitter;
     float scale;
     float pdf;
+    bool has_rgb = false;  // environment maps: texel radiance, see LightSample
+    Vec3f rgb;
   };
   std::vector<EscapedHit> escaped(const Vec3f& wi) const;
 
  private:
-  enum class Kind : std::uint8_t { triangle, point, spot, directional };
+  enum class Kind : std::uint8_t { triangle, point, spot, directional, environment };
   struct Emitter {
     Kind kind;
     std::uint32_t emitter;  // emitter id
@@ -64,7 +69,17 @@ class LightSampler {
     float cos_inner = 1.0f, cos_outer = 0.0f;
     float cos_max = 1.0f;          // directional: cosine of the angular radius (1 = delta)
     float disc_radiance_scale = 1.0f;  // directional with size: L = E / (π sin²θ)
+    // environment: equirectangular texture (null: constant), world → map rotation
+    const TextureImage* texture = nullptr;
+    Transform world_to_map, map_to_world;
+    float intensity_nits = 0.0f;
   };
+  double build_environment_distribution(const Emitter& e);  // returns the sky's average luminance
+  bool environment_built_ = false;
+  // Environment radiance (linear Rec.709, nits) seen in world direction `d`.
+  Vec3f environment_rgb(const Emitter& e, const Vec3f& d) const;
+  float environment_pdf(const Emitter& e, const Vec3f& d) const;
+  PiecewiseConstant2D environment_distribution_;
   std::optional<LightSample> sample_emitter(std::size_t index, const Vec3f& reference, Vec2f u) const;
 
   std::vector<Emitter> emitters_;

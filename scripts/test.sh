@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds Release with tests and runs the test suite
-# (everything but the labels slow, gui and fuzz-smoke).
+# (everything but the labels slow and fuzz-smoke; the gui tests start their own Xvfb).
 #
 # PRISM_SANITIZERS=1 then also builds and runs the sanitizer presets (issue 9):
 #   asan  AddressSanitizer + UndefinedBehaviorSanitizer, every unit and CLI test;

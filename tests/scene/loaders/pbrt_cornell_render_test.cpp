@@ -7,27 +7,15 @@
 #include "prism/render/renderer.h"
 #include "prism/scene/builtin_scenes.h"
 #include "prism/scene/load_scene.h"
+#include "support/film_statistics.h"
 
 namespace prism {
 namespace {
 
-struct BlockEstimate {
-  Vec3d mean, variance;
-};
+using test::BlockEstimate;
 
 BlockEstimate block(const Film& film, int x0, int y0, int x1, int y1) {
-  BlockEstimate e;
-  double n = 0.0;
-  for (int y = y0; y < y1; ++y)
-    for (int x = x0; x < x1; ++x) {
-      const std::size_t p = static_cast<std::size_t>(y) * film.width() + x;
-      e.mean += film.mean(p);
-      e.variance += film.variance_of_mean(p);
-      n += 1.0;
-    }
-  e.mean /= n;
-  e.variance /= n * n;
-  return e;
+  return test::block_estimate(film, x0, y0, x1, y1);
 }
 
 TEST(PbrtLoader, CornellBoxRendersLikeTheBuiltIn) {

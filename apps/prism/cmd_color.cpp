@@ -17,11 +17,6 @@
 #include "prism/core/error.h"
 
 namespace prism::cli {
-namespace {
-
-namespace color = prism::color;
-
-constexpr const char* kNegativeNote = "Negative numbers are written as they are: -0.5.";
 
 // Strict: the whole text must be one finite number (std::from_chars, locale-independent).
 double parse_number(const std::string& text, const std::string& what) {
@@ -32,6 +27,13 @@ double parse_number(const std::string& text, const std::string& what) {
     throw UsageError("malformed number '" + text + "' for " + what);
   return value;
 }
+
+namespace {
+
+namespace color = prism::color;
+
+constexpr const char* kNegativeNote = "Negative numbers are written as they are: -0.5.";
+
 
 void print_numbers(const std::vector<double>& values) {
   for (std::size_t i = 0; i < values.size(); ++i) std::printf(i == 0 ? "%.9g" : " %.9g", values[i]);
@@ -44,6 +46,17 @@ std::string joined(const std::vector<std::string>& names) {
   return out;
 }
 
+// --from SPACE --to SPACE [--cat CAT]: shared by convert and matrix.
+void add_space_pair_options(CLI::App& cmd, std::string& from, std::string& to, std::string& cat) {
+  cmd.add_option("--from", from, "Source space (see `prism color spaces`, or xy:rx,ry,gx,gy,bx,by,wx,wy)")
+      ->required()
+      ->type_name("SPACE");
+  cmd.add_option("--to", to, "Destination space")->required()->type_name("SPACE");
+  cmd.add_option("--cat", cat, "Chromatic adaptation: " + joined(color::cat_names()))
+      ->capture_default_str()
+      ->type_name("CAT");
+}
+
 void add_convert(CLI::App& color, Action& action) {
   struct Options {
     std::string from, to, cat = "bradford";
@@ -51,13 +64,7 @@ void add_convert(CLI::App& color, Action& action) {
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = color.add_subcommand(
       "convert", "Convert one linear RGB triple between colour spaces (adapting whites)");
-  cmd->add_option("--from", opt->from, "Source space (see `prism color spaces`, or xy:rx,ry,gx,gy,bx,by,wx,wy)")
-      ->required()
-      ->type_name("SPACE");
-  cmd->add_option("--to", opt->to, "Destination space")->required()->type_name("SPACE");
-  cmd->add_option("--cat", opt->cat, "Chromatic adaptation: " + joined(color::cat_names()))
-      ->capture_default_str()
-      ->type_name("CAT");
+  add_space_pair_options(*cmd, opt->from, opt->to, opt->cat);
   // R G B are taken from the unparsed arguments so that negative values after `--` work.
   cmd->allow_extras();
   cmd->footer(std::string("Arguments: R G B (linear values in the source space).\n"
@@ -87,13 +94,7 @@ void add_matrix(CLI::App& color, Action& action) {
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = color.add_subcommand(
       "matrix", "Print the 3x3 matrix taking linear RGB in one space to another (adapting whites)");
-  cmd->add_option("--from", opt->from, "Source space (see `prism color spaces`, or xy:rx,ry,gx,gy,bx,by,wx,wy)")
-      ->required()
-      ->type_name("SPACE");
-  cmd->add_option("--to", opt->to, "Destination space")->required()->type_name("SPACE");
-  cmd->add_option("--cat", opt->cat, "Chromatic adaptation: " + joined(color::cat_names()))
-      ->capture_default_str()
-      ->type_name("CAT");
+  add_space_pair_options(*cmd, opt->from, opt->to, opt->cat);
   cmd->footer("Output: three lines of three numbers (%.9g), row-major; dst = M * src.\n"
               "Use --from SPACE --to xyz for the space's RGB-to-XYZ matrix.");
   cmd->callback([opt, &action] {

@@ -11,6 +11,8 @@
 //   prism::cli::add_color_spectrum_commands(*prism::cli::color_command(app), action);
 // color_command() creates the `color` subcommand when it does not exist yet, so the two
 // registrations work in either order.
+#include <string>
+
 #include <CLI/CLI.hpp>
 
 #include "command.h"
@@ -22,5 +24,8 @@ CLI::App* color_command(CLI::App& root);
 
 // Defined in cmd_color_spectrum.cpp (the spectral half of issue 3).
 void add_color_spectrum_commands(CLI::App& color, Action& action);
+
+// Parses a whole string as one finite number; anything else is a UsageError naming `what`.
+double parse_number(const std::string& text, const std::string& what);
 
 }  // namespace prism::cli

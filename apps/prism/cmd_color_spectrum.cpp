@@ -25,14 +25,6 @@ namespace {
 
 namespace color = prism::color;
 
-double parse_number(const std::string& text, const std::string& what) {
-  double value = 0.0;
-  const char* end = text.data() + text.size();
-  const auto [ptr, ec] = std::from_chars(text.data(), end, value);
-  if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(value))
-    throw UsageError("malformed number '" + text + "' for " + what);
-  return value;
-}
 
 template <typename Integer>
 Integer parse_integer(const std::string& text, const std::string& what, Integer min_value, Integer max_value) {

@@ -37,6 +37,9 @@ xdotool mouseup 1
 wait_for '^camera what=orbit ' 20
 wait_for '^restart generation=[0-9]+ reason=camera' 20
 g=$(grep -E '^restart generation=[0-9]+ reason=camera' "$log" | tail -1 | sed -E 's/.*generation=([0-9]+).*/\1/')
+# The camera restart reuses the scene prepared (flattened, BVH built) for the first render.
+grep -qE '^restart generation=[0-9]+ reason=camera .*scene_prepared=1$' "$log" || {
+  echo "FAIL: the camera restart did not reuse the prepared scene"; grep '^restart' "$log"; exit 1; }
 wait_for "^pass generation=$g spp=1 " 120
 eye_orbit=$(grep '^camera what=orbit' "$log" | tail -1 | sed -E 's/.*eye=([^ ]*).*/\1/')
 grep -q '^camera what=orbit eye=278,273,-800 ' "$log" && { echo "FAIL: orbit did not move the eye"; exit 1; }

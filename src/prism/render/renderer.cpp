@@ -10,6 +10,7 @@
 #include "prism/core/parallel.h"
 #include "prism/core/sample_stream.h"
 #include "prism/render/memory_estimate.h"
+#include "prism/render/prepared_scene.h"
 #include "prism/scene/camera_rays.h"
 #include "prism/scene/flatten_instances.h"
 #include "prism/scene/light_sampler.h"
@@ -99,13 +100,12 @@ std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settin
 namespace {
 
 template <class Mode>
-void render_passes(const Scene& scene, const RenderSettings& settings, const RenderHooks& hooks, RenderResult& result,
-                   int start_sample) {
+void render_passes(const Scene& scene, const EmbreeAccel& accel, const RenderSettings& settings,
+                   const RenderHooks& hooks, RenderResult& result, int start_sample) {
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
-  const EmbreeAccel accel(scene);
   const LightSampler lights(scene, scene_bounds(scene));
   const PinholeCamera camera(scene.camera, settings.width, settings.height);
   const ColorContext<Mode> colors(scene, settings.transport);
@@ -168,7 +168,17 @@ RenderResult render(const Scene& input_scene, const RenderSettings& settings, co
   validate_scene(input_scene);
   // Reliability (--memory-limit): refuse a render that cannot fit before allocating it.
   check_render_memory(input_scene, settings, settings.memory_limit_bytes);
-  const Scene scene = flatten_instances(input_scene);
+  const PreparedScene prepared(input_scene);
+  return render(prepared, settings, hooks, resume);
+}
+
+RenderResult render(const PreparedScene& prepared, const RenderSettings& settings, const RenderHooks& hooks,
+                    const ResumeState* resume) {
+  validate_render_settings(settings);
+  validate_transport(settings.transport);
+  // The memory check belongs before preparing (render(const Scene&) above, or the caller):
+  // by now the geometry and its BVH are allocated.
+  const Scene& scene = prepared.scene();
   const ThreadLimit thread_limit(settings.threads);
   const auto start = std::chrono::steady_clock::now();
 
@@ -190,13 +200,13 @@ RenderResult render(const Scene& input_scene, const RenderSettings& settings, co
 
   const TransportSettings& t = settings.transport;
   if (t.kind == TransportKind::rgb) {
-    render_passes<RgbMode>(scene, settings, hooks, result, next_sample);
+    render_passes<RgbMode>(scene, prepared.accel(), settings, hooks, result, next_sample);
   } else if (t.wavelengths == 3) {
-    render_passes<SpectralMode<3>>(scene, settings, hooks, result, next_sample);
+    render_passes<SpectralMode<3>>(scene, prepared.accel(), settings, hooks, result, next_sample);
   } else if (t.wavelengths == 8) {
-    render_passes<SpectralMode<8>>(scene, settings, hooks, result, next_sample);
+    render_passes<SpectralMode<8>>(scene, prepared.accel(), settings, hooks, result, next_sample);
   } else {
-    render_passes<SpectralMode<4>>(scene, settings, hooks, result, next_sample);
+    render_passes<SpectralMode<4>>(scene, prepared.accel(), settings, hooks, result, next_sample);
   }
   result.passes_done = result.next_sample - settings.first_sample;
   if (hooks.on_checkpoint) hooks.on_checkpoint(result.film, result.next_sample);

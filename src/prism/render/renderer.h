@@ -93,6 +93,12 @@ struct ResumeState {
 RenderResult render(const Scene& scene, const RenderSettings& settings, const RenderHooks& hooks,
                     const ResumeState* resume = nullptr);
 
+// The same for a scene prepared once (prepared_scene.h): no validation of its geometry,
+// flattening or BVH build per call, so interactive restarts cost only the film.
+class PreparedScene;
+RenderResult render(const PreparedScene& scene, const RenderSettings& settings, const RenderHooks& hooks,
+                    const ResumeState* resume = nullptr);
+
 inline RenderResult render(const Scene& scene, const RenderSettings& settings,
                            const ProgressCallback& on_pass = {}, const std::atomic<bool>* cancel = nullptr) {
   return render(scene, settings, RenderHooks{on_pass, cancel, {}, 0.0});

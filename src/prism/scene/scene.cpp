@@ -31,10 +31,13 @@ void validate_scene(const Scene& scene) {
       if (!is_finite(mesh.positions[i]))
         throw SceneError(fmt::format("mesh '{}': vertex {} is not finite", mesh.name, i));
   }
-  for (const auto& m : scene.materials)
-    if (!is_finite(m.base_color) || !is_finite(m.emission.color) || !std::isfinite(m.emission.luminance_nits) ||
-        m.emission.luminance_nits < 0.0f)
-      throw SceneError(fmt::format("material '{}' has non-finite values", m.name));
+  for (const auto& m : scene.materials) validate_material(m);
+}
+
+void validate_material(const Material& m) {
+  if (!is_finite(m.base_color) || !is_finite(m.emission.color) || !std::isfinite(m.emission.luminance_nits) ||
+      m.emission.luminance_nits < 0.0f)
+    throw SceneError(fmt::format("material '{}' has non-finite values", m.name));
 }
 
 }  // namespace prism

@@ -68,5 +68,7 @@ struct Scene {
 // Throws SceneError when indices are out of range, a material index is invalid,
 // positions are not finite, or the scene has no geometry.
 void validate_scene(const Scene& scene);
+// Throws SceneError when a material's colours or emission are not finite (or negative).
+void validate_material(const Material& material);
 
 }  // namespace prism

@@ -79,10 +79,16 @@ void RenderSession::run() {
 }
 
 void RenderSession::render_one(const RenderRequest& request, std::uint64_t generation) {
-  scene_.camera = request.camera;
-  scene_.materials = request.materials;
-  scene_.lights = request.lights;
   validate_render_settings(request.settings);
+  if (!prepared_) {
+    const Clock::time_point t = Clock::now();
+    prepared_ = std::make_unique<PreparedScene>(scene_);
+    prepare_seconds_ = seconds_since(t);
+    ++prepare_count_;
+  }
+  prepared_->set_camera(request.camera);
+  prepared_->set_materials(request.materials);
+  prepared_->set_lights(request.lights);
   const color::ColorSpace film_space = film_color_space(request.settings.transport);
 
   const Clock::time_point start = Clock::now();
@@ -116,7 +122,7 @@ void RenderSession::render_one(const RenderRequest& request, std::uint64_t gener
     }
     publish(std::move(frame));
   };
-  render(scene_, request.settings, hooks);
+  render(*prepared_, request.settings, hooks);
 }
 
 }  // namespace prism::viewer

@@ -1,8 +1,9 @@
 #pragma once
 // The viewer's render worker: one thread that runs prism::render in a restartable loop.
 // restart() cancels the render in flight (it stops after its current pass) and starts a
-// new one with the request's camera, materials, lights and settings; the film after every
-// pass is published as a FilmFrame the UI and display threads read without waiting.
+// new one with the request's camera, materials, lights and settings (the scene's geometry
+// and BVH are prepared once and reused by every restart); the film after every pass is
+// published as a FilmFrame the UI and display threads read without waiting.
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
@@ -14,6 +15,7 @@
 
 #include "prism/color/color_space.h"
 #include "prism/io/image.h"
+#include "prism/render/prepared_scene.h"
 #include "prism/render/renderer.h"
 #include "prism/scene/scene.h"
 
@@ -54,13 +56,20 @@ class RenderSession {
   std::uint64_t generation() const { return generation_.load(); }
   // The message of the last render that threw (bad settings), if any; cleared on restart.
   std::optional<std::string> error() const;
+  // How often the scene was prepared (flattened, BVH built): once per session, however
+  // many restarts; and how long that took.
+  int prepare_count() const { return prepare_count_.load(); }
+  double prepare_seconds() const { return prepare_seconds_.load(); }
 
  private:
   void run();
   void render_one(const RenderRequest& request, std::uint64_t generation);
   void publish(std::shared_ptr<const FilmFrame> frame);
 
-  Scene scene_;  // owned by the worker between renders
+  Scene scene_;  // as loaded; prepared once by the worker
+  // Flattened scene and BVH, built by the worker's first render and kept across restarts
+  // (restarts change camera, materials, lights and settings, never geometry).
+  std::unique_ptr<PreparedScene> prepared_;
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::optional<RenderRequest> pending_;
@@ -68,6 +77,8 @@ class RenderSession {
   std::optional<std::string> error_;
   std::atomic<std::uint64_t> generation_{0};
   std::atomic<bool> cancel_{false};
+  std::atomic<int> prepare_count_{0};
+  std::atomic<double> prepare_seconds_{0.0};
   bool quit_ = false;
   std::uint64_t serial_ = 0;
   std::thread worker_;

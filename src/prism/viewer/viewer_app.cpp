@@ -140,7 +140,8 @@ class ViewerApp {
     request.settings.width = std::max(16, static_cast<int>(std::lround(fb_w_ * render_.resolution_scale)));
     request.settings.height = std::max(16, static_cast<int>(std::lround(fb_h_ * render_.resolution_scale)));
     const std::uint64_t g = session_.restart(request);
-    log("restart generation={} reason={} film={}x{}", g, reason, request.settings.width, request.settings.height);
+    log("restart generation={} reason={} film={}x{} scene_prepared={}", g, reason, request.settings.width,
+        request.settings.height, session_.prepare_count());
   }
 
   // One UI frame; true when the viewer should exit.

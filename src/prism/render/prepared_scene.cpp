@@ -1,0 +1,30 @@
+#include "prism/render/prepared_scene.h"
+
+#include <fmt/format.h>
+
+#include "prism/core/error.h"
+#include "prism/scene/flatten_instances.h"
+
+namespace prism {
+
+PreparedScene::PreparedScene(const Scene& scene) {
+  validate_scene(scene);
+  scene_ = std::make_unique<Scene>(flatten_instances(scene));
+  accel_ = std::make_unique<EmbreeAccel>(*scene_);
+}
+
+PreparedScene::~PreparedScene() = default;
+
+void PreparedScene::set_camera(const Camera& camera) { scene_->camera = camera; }
+
+void PreparedScene::set_materials(std::vector<Material> materials) {
+  if (materials.size() != scene_->materials.size())
+    throw SceneError(fmt::format("the scene has {} materials, not {}: meshes refer to materials by index",
+                                 scene_->materials.size(), materials.size()));
+  for (const Material& m : materials) validate_material(m);
+  scene_->materials = std::move(materials);
+}
+
+void PreparedScene::set_lights(std::vector<Light> lights) { scene_->lights = std::move(lights); }
+
+}  // namespace prism

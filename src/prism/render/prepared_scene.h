@@ -1,0 +1,36 @@
+#pragma once
+// A scene made ready for rendering once: validated, instances flattened into world-space
+// meshes and its BVH built. Interactive use (the viewer) renders many times with a new
+// camera, materials or lights but the same geometry; keeping the flattened copy and the
+// BVH across those renders turns a restart from O(triangles) into O(pixels).
+#include <memory>
+
+#include "prism/accel/embree_accel.h"
+#include "prism/scene/scene.h"
+
+namespace prism {
+
+class PreparedScene {
+ public:
+  // Throws SceneError for invalid scenes (validate_scene).
+  explicit PreparedScene(const Scene& scene);
+  ~PreparedScene();
+  PreparedScene(const PreparedScene&) = delete;
+  PreparedScene& operator=(const PreparedScene&) = delete;
+
+  const Scene& scene() const { return *scene_; }
+  const EmbreeAccel& accel() const { return *accel_; }
+
+  // What may change between renders without rebuilding: the BVH only depends on meshes
+  // and instances, which stay as prepared. Material indices must stay in range (the
+  // material count is fixed) and light parameters finite; both throw SceneError otherwise.
+  void set_camera(const Camera& camera);
+  void set_materials(std::vector<Material> materials);
+  void set_lights(std::vector<Light> lights);
+
+ private:
+  std::unique_ptr<Scene> scene_;  // stable address: the BVH references its vertex arrays
+  std::unique_ptr<EmbreeAccel> accel_;
+};
+
+}  // namespace prism

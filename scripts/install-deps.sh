@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages Prism needs to build and test.
 # Idempotent: does nothing when everything is present. Uses sudo when not root.
+# Usage: install-deps.sh [--sanitizers]
 set -euo pipefail
 
 packages=(
@@ -9,6 +10,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libopencolorio-dev  # ACES oracle in tests; `--ocio-config` display path (issue 6)
+  liblcms2-dev        # ICC oracle in tests: Little CMS reads our profiles (issue 6)
   libavif-dev         # AVIF HDR output (issue 6)
   libtinyobjloader-dev  # OBJ + MTL loader (issue 5)
   libtinygltf-dev     # glTF 2.0 loader (issue 5)
@@ -19,6 +21,11 @@ packages=(
   xdotool             # viewer GUI tests: synthetic input (issue 7)
   libgl1-mesa-dri     # viewer GUI tests: Mesa software OpenGL under Xvfb (issue 7)
 )
+# `--sanitizers`: what the sanitizer and fuzzing stages of ./scripts/test.sh need (issue 9):
+# clang with its runtimes (ASan/UBSan/libFuzzer) and llvm-symbolizer for readable reports.
+if [ "${1:-}" = --sanitizers ]; then
+  packages+=(clang libclang-rt-14-dev llvm-14)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

@@ -13,6 +13,7 @@
 #include "prism/io/avif.h"
 #include "prism/io/exr_scrgb.h"
 #include "prism/io/png.h"
+#include "prism/io/png_color_tags.h"
 #include "prism/io/png_hdr.h"
 
 namespace prism::cli {
@@ -28,19 +29,6 @@ bool ocio_mode(const DisplayCliOptions& o) { return !o.ocio_config.empty() || !o
 
 display::DebugView debug_view(const DisplayCliOptions& o) {
   return o.view.empty() || ocio_mode(o) ? display::DebugView::none : display::parse_debug_view(o.view);
-}
-
-// H.273 colour primaries of a space (0 when it has no code point, e.g. Adobe RGB).
-std::uint8_t cicp_primaries(const color::ColorSpace& space) {
-  const auto same = [&](const char* name) {
-    const color::ColorSpace& k = color::color_space(name);
-    const auto eq = [](color::Chromaticity a, color::Chromaticity b) { return std::fabs(a.x - b.x) + std::fabs(a.y - b.y) < 1e-4; };
-    return eq(k.red, space.red) && eq(k.green, space.green) && eq(k.blue, space.blue) && eq(k.white, space.white);
-  };
-  if (same("srgb")) return 1;
-  if (same("rec2020")) return 9;
-  if (same("display-p3")) return 12;
-  return 0;
 }
 
 std::uint8_t cicp_transfer(display::DisplayEncoding e) {
@@ -67,17 +55,18 @@ void write_shown(const std::filesystem::path& out, const std::string& ext, const
     return;
   }
   const color::ColorSpace primaries = color::parse_color_space(shown.primaries);
-  const std::uint8_t cp = cicp_primaries(primaries);
+  const std::uint8_t cp = cicp_color_primaries(primaries);
   if (ext == ".avif") {
     // AVIF needs a CICP triple; primaries without a code point are "unspecified" (2).
     write_avif(out, display::quantise_display_image(shown, o.bit_depth ? o.bit_depth : 10, s.dither_seed),
                CicpInfo{cp ? cp : std::uint8_t{2}, cicp_transfer(shown.encoding), 0, 1});
     return;
   }
-  PngColorMetadata meta;
-  if (cp == 1 && shown.encoding == display::DisplayEncoding::srgb) meta.srgb_chunk = true;
-  else if (cp != 0) meta.cicp = CicpInfo{cp, cicp_transfer(shown.encoding), 0, 1};
-  if (shown.encoding == display::DisplayEncoding::pq) {
+  // SDR: sRGB chunk, or an ICC profile (+ cICP) for other primaries and curves; PQ: cICP.
+  const bool pq = shown.encoding == display::DisplayEncoding::pq;
+  PngColorMetadata meta = pq ? PngColorMetadata{} : sdr_png_color_metadata(primaries, display::icc_tone_curve(shown.encoding));
+  if (pq && cp != 0) meta.cicp = CicpInfo{cp, cicp_transfer(shown.encoding), 0, 1};
+  if (pq) {
     const display::OdtDescription& odt = display::odt_description(s.odt);
     const color::ColorSpace& p = primaries;
     meta.mastering_display = MasteringDisplay{p.red.x, p.red.y, p.green.x, p.green.y, p.blue.x, p.blue.y,

@@ -77,6 +77,15 @@ expect_usage_error o10.png "$work/in.exr" --ev100 1 --auto-exposure
 # Issue 6, second round: bloom, display primaries, render scale, views, overlay, AVIF.
 expect_ok bloom.png --bloom 0.5 --bloom-threshold-space rgb --ev100 0
 expect_ok adobe.png --display-primaries adobe-rgb
+# SDR outputs that are not sRGB carry an ICC profile (iCCP), never the sRGB chunk; P3 also
+# cICP (12 = P3-D65, 13 = sRGB curve); Adobe RGB has no cICP code point.
+png_has_chunk "$work/adobe.png" iCCP || fail "Adobe RGB PNG lacks an ICC profile"
+png_has_chunk "$work/adobe.png" sRGB && fail "Adobe RGB PNG carries the sRGB chunk"
+png_has_chunk "$work/adobe.png" cICP && fail "Adobe RGB PNG carries a cICP chunk"
+png_has_chunk "$work/p3.png" iCCP || fail "P3 PNG lacks an ICC profile"
+od -An -tu1 -v "$work/p3.png" | tr -s ' \n' ' ' | grep -q '99 73 67 80 12 13 0 1' || fail "P3 PNG cICP is not 12 13 0 1"
+png_has_chunk "$work/sdr.png" iCCP && fail "sRGB PNG carries an ICC profile next to its sRGB chunk"
+png_has_chunk "$work/hdr.png" iCCP && fail "PQ PNG carries an ICC profile"
 expect_ok custom.png --odt rec2020-pq-1000nit --display-primaries 0.68,0.32,0.265,0.69,0.15,0.06,0.3127,0.329
 expect_ok up.png --render-scale 0.5
 [ "$(od -An -tu4 --endian=big -j16 -N4 "$work/up.png" | tr -d ' ')" = 48 ] || fail "--render-scale 0.5 did not double the width"

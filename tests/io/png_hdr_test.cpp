@@ -11,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "prism/color/icc_profile.h"
+#include "prism/core/error.h"
 #include "prism/io/hdr10_metadata.h"
 #include "prism/io/png.h"
 #include "prism/io/png_hdr.h"
@@ -48,6 +50,29 @@ std::map<std::string, std::vector<std::uint8_t>> read_unknown_chunks(const std::
   if (!read_unknown_chunks_from(fp, out)) out.clear();
   std::fclose(fp);
   return out;
+}
+
+// The iCCP chunk's name and (decompressed) profile as libpng reads them; false without one.
+bool read_iccp_from(std::FILE* fp, std::string& name, std::vector<std::uint8_t>& profile) {
+  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png_create_info_struct(png);
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_read_struct(&png, &info, nullptr);
+    return false;
+  }
+  png_init_io(png, fp);
+  png_read_info(png, info);
+  png_charp n = nullptr;
+  int compression = 0;
+  png_bytep data = nullptr;
+  png_uint_32 length = 0;
+  const bool found = png_get_iCCP(png, info, &n, &compression, &data, &length) != 0;
+  if (found) {
+    name = n;
+    profile.assign(data, data + length);
+  }
+  png_destroy_read_struct(&png, &info, nullptr);
+  return found;
 }
 
 std::uint32_t be32(const std::vector<std::uint8_t>& d, std::size_t at) {
@@ -100,6 +125,33 @@ TEST(PngHdr, ChunksReadBackWithLibpng) {
   EXPECT_EQ(back.image.bit_depth, 16);
   EXPECT_EQ(back.image.samples, img.samples);
   EXPECT_FALSE(back.has_srgb_chunk);
+  std::filesystem::remove(path);
+}
+
+TEST(PngHdr, IccProfileReadsBackWithLibpng) {
+  const auto path = std::filesystem::temp_directory_path() / "prism_png_iccp_test.png";
+  EncodedImage img{2, 1, 3, 8, {0, 128, 255, 10, 20, 30}};
+  PngColorMetadata meta;
+  meta.cicp = CicpInfo{12, 13, 0, 1};
+  meta.icc_profile = color::make_icc_display_profile(color::color_space("display-p3"), color::IccToneCurve::srgb,
+                                                     "Prism display-p3");
+  meta.icc_profile_name = "Prism display-p3";
+  write_png_with_color_metadata(path, img, meta);
+  std::FILE* fp = std::fopen(path.c_str(), "rb");
+  ASSERT_TRUE(fp);
+  std::string name;
+  std::vector<std::uint8_t> profile;
+  const bool found = read_iccp_from(fp, name, profile);
+  std::fclose(fp);
+  ASSERT_TRUE(found);
+  EXPECT_EQ(name, "Prism display-p3");
+  EXPECT_EQ(profile, meta.icc_profile);
+  EXPECT_EQ(read_png(path).has_srgb_chunk, false);
+  EXPECT_EQ(read_unknown_chunks(path).count("cICP"), 1u);
+
+  // PNG allows an sRGB chunk or an ICC profile, not both.
+  meta.srgb_chunk = true;
+  EXPECT_THROW(write_png_with_color_metadata(path, img, meta), IoError);
   std::filesystem::remove(path);
 }
 

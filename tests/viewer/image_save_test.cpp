@@ -106,6 +106,20 @@ TEST_F(ImageSave, SdrPngCarriesTheSrgbChunk) {
   EXPECT_LT(png.image.samples[0], png.image.samples[3 * 7]);
 }
 
+TEST_F(ImageSave, P3SdrPngCarriesAnIccProfileAndCicp) {
+  const FilmFrame film = acescg_film();
+  DisplayControls controls;
+  controls.settings.odt = display::OdtId::p3d65_100nit;
+  const auto path = dir_ / "p3.png";
+  save_display_image(path, shown(film, controls), controls);
+  const auto types = png_chunk_types(path);
+  const std::set<std::string> set(types.begin(), types.end());
+  EXPECT_EQ(set.count("iCCP"), 1u);
+  EXPECT_EQ(set.count("cICP"), 1u);
+  EXPECT_EQ(set.count("sRGB"), 0u);
+  EXPECT_FALSE(read_png(path).has_srgb_chunk);
+}
+
 TEST_F(ImageSave, PqPngCarriesCicpAndHdr10Metadata) {
   const FilmFrame film = acescg_film();
   DisplayControls controls;

@@ -4,6 +4,8 @@
 #include <cctype>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "prism/color/transfer_functions.h"
 #include "prism/core/error.h"
 
@@ -32,6 +34,16 @@ std::string_view display_encoding_name(DisplayEncoding e) {
 std::vector<std::string> display_encoding_names() { return {"srgb", "bt1886", "pq", "scrgb"}; }
 
 bool is_float_encoding(DisplayEncoding e) { return e == DisplayEncoding::scrgb; }
+
+color::IccToneCurve icc_tone_curve(DisplayEncoding e) {
+  switch (e) {
+    case DisplayEncoding::srgb: return color::IccToneCurve::srgb;
+    case DisplayEncoding::bt1886: return color::IccToneCurve::gamma_2_4;
+    default: break;
+  }
+  throw UsageError(fmt::format("the {} encoding has no ICC tone curve (it is not a relative SDR curve)",
+                               display_encoding_name(e)));
+}
 
 double encode_display_nits(DisplayEncoding e, double nits, double white_nits) {
   switch (e) {

@@ -6,6 +6,8 @@
 #include <string_view>
 #include <vector>
 
+#include "prism/color/icc_profile.h"
+
 namespace prism::display {
 
 enum class DisplayEncoding {
@@ -23,6 +25,9 @@ std::vector<std::string> display_encoding_names();
 
 // Integer-codable encodings (everything but scrgb) take values in [0, 1].
 bool is_float_encoding(DisplayEncoding e);
+// The ICC tone curve of a relative (SDR) encoding: srgb → IEC 61966-2-1, bt1886 → γ 2.4
+// (zero black). PQ and scRGB have none: UsageError.
+color::IccToneCurve icc_tone_curve(DisplayEncoding e);
 
 // Display light (nits) → code value; relative encodings divide by white_nits first and
 // clamp to [0, 1]; pq clamps to [0, 10000] nits.

@@ -33,8 +33,8 @@ png_unknown_chunk make_chunk(const char (&name)[5], std::uint8_t* data, std::siz
 
 // As in png.cpp: the libpng calls live in a frame with only trivially destructible
 // objects, so the longjmp out of it is well defined.
-bool write_all(std::FILE* fp, const EncodedImage& image, bool srgb, png_unknown_chunk* chunks, int n_chunks,
-               png_bytep* rows, ErrorState& err) {
+bool write_all(std::FILE* fp, const EncodedImage& image, const PngColorMetadata& meta, png_unknown_chunk* chunks,
+               int n_chunks, png_bytep* rows, ErrorState& err) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &err, libpng::on_error, libpng::on_warning);
   if (!png) return false;
   png_infop info = png_create_info_struct(png);
@@ -46,7 +46,10 @@ bool write_all(std::FILE* fp, const EncodedImage& image, bool srgb, png_unknown_
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height),
                image.bit_depth, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT,
                PNG_FILTER_TYPE_DEFAULT);
-  if (srgb) png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  if (meta.srgb_chunk) png_set_sRGB_gAMA_and_cHRM(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+  if (!meta.icc_profile.empty())
+    png_set_iCCP(png, info, meta.icc_profile_name.c_str(), PNG_COMPRESSION_TYPE_BASE, meta.icc_profile.data(),
+                 static_cast<png_uint_32>(meta.icc_profile.size()));
   if (n_chunks > 0) {
     // cICP is not safe-to-copy (4th letter upper case): libpng writes such unknown chunks
     // only when told to keep them always.
@@ -70,6 +73,8 @@ void write_png_with_color_metadata(const std::filesystem::path& path, const Enco
       (image.bit_depth != 8 && image.bit_depth != 16) ||
       image.samples.size() != static_cast<std::size_t>(image.width) * image.height * 3)
     throw IoError(fmt::format("cannot write '{}': image must be 8- or 16-bit RGB of consistent size", path.string()));
+  if (meta.srgb_chunk && !meta.icc_profile.empty())
+    throw IoError(fmt::format("cannot write '{}': a PNG has an sRGB chunk or an ICC profile, not both", path.string()));
 
   const std::size_t row_bytes = static_cast<std::size_t>(image.width) * 3 * (image.bit_depth / 8);
   std::vector<png_byte> bytes(row_bytes * image.height);
@@ -106,7 +111,7 @@ void write_png_with_color_metadata(const std::filesystem::path& path, const Enco
   std::unique_ptr<std::FILE, FileCloser> fp(std::fopen(file.temporary_path().c_str(), "wb"));
   if (!fp) throw IoError(fmt::format("cannot write '{}': {}", path.string(), std::strerror(errno)));
   ErrorState err;
-  if (!write_all(fp.get(), image, meta.srgb_chunk, chunks.data(), static_cast<int>(chunks.size()), rows.data(), err))
+  if (!write_all(fp.get(), image, meta, chunks.data(), static_cast<int>(chunks.size()), rows.data(), err))
     throw IoError(fmt::format("cannot write '{}': {}", path.string(), err.message));
   if (std::fflush(fp.get()) != 0 || std::ferror(fp.get()))
     throw IoError(fmt::format("cannot write '{}': {}", path.string(), std::strerror(errno)));

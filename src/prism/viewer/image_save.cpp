@@ -8,6 +8,7 @@
 #include "prism/io/avif.h"
 #include "prism/io/exr.h"
 #include "prism/io/png.h"
+#include "prism/io/png_color_tags.h"
 #include "prism/io/png_hdr.h"
 
 namespace prism::viewer {
@@ -17,14 +18,6 @@ std::string lower_extension(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
   for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return ext;
-}
-
-// ITU-T H.273 code points of the output primaries by prism::color name (0: none).
-std::uint8_t cicp_primaries(const std::string& name) {
-  if (name == "srgb") return 1;
-  if (name == "rec2020") return 9;
-  if (name == "display-p3") return 12;
-  return 0;
 }
 
 std::uint8_t cicp_transfer(display::DisplayEncoding e) {
@@ -44,11 +37,13 @@ EncodedImage rgba_to_rgb8(const DisplayFrame& shown) {
 }
 
 PngColorMetadata png_metadata(const display::DisplayImage& image, const DisplayFrame& shown, const DisplayControls& c) {
-  PngColorMetadata meta;
-  const std::uint8_t primaries = cicp_primaries(image.primaries);
-  if (primaries == 1 && image.encoding == display::DisplayEncoding::srgb) meta.srgb_chunk = true;
-  else if (primaries != 0) meta.cicp = CicpInfo{primaries, cicp_transfer(image.encoding), 0, 1};
-  if (image.encoding == display::DisplayEncoding::pq) {
+  // SDR: sRGB chunk, or an ICC profile (+ cICP) for other primaries and curves; PQ: cICP.
+  const color::ColorSpace output = color::parse_color_space(image.primaries);
+  const std::uint8_t primaries = cicp_color_primaries(output);
+  const bool pq = image.encoding == display::DisplayEncoding::pq;
+  PngColorMetadata meta = pq ? PngColorMetadata{} : sdr_png_color_metadata(output, display::icc_tone_curve(image.encoding));
+  if (pq && primaries != 0) meta.cicp = CicpInfo{primaries, cicp_transfer(image.encoding), 0, 1};
+  if (pq) {
     const color::ColorSpace& p = color::color_space(image.primaries);
     const display::OdtDescription& odt = display::odt_description(c.settings.odt);
     meta.mastering_display = MasteringDisplay{
@@ -79,7 +74,7 @@ void save_display_image(const std::filesystem::path& path, const DisplayFrame& s
   if (display::is_float_encoding(image.encoding)) throw UsageError("scRGB is floating point: save the film EXR instead");
   const std::uint64_t seed = c.settings.dither_seed;
   if (ext == ".avif") {
-    const std::uint8_t p = cicp_primaries(image.primaries);
+    const std::uint8_t p = cicp_color_primaries(color::parse_color_space(image.primaries));
     write_avif(path, display::quantise_display_image(image, 10, seed),
                CicpInfo{p ? p : std::uint8_t{2}, cicp_transfer(image.encoding), 0, 1});
     return;

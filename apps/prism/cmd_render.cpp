@@ -25,6 +25,7 @@
 #include "prism/render/memory_estimate.h"
 #include "prism/render/renderer.h"
 #include "prism/scene/camera_json.h"
+#include "prism/scene/camera_selection.h"
 #include "prism/scene/load_scene.h"
 
 namespace prism::cli {
@@ -51,6 +52,7 @@ struct RenderOptions {
   int samples_per_pass = 0;
   bool max_depth_given = false;
   std::string exr_space = "working";
+  std::string camera;  // --camera NAME|INDEX
   std::string camera_json;
   DisplayCliOptions display;
   std::string sample_range;  // "START:END"
@@ -185,6 +187,7 @@ int run_render(const RenderOptions& o) {
   // Check everything that can be checked before spending time on the render.
   for (const auto& p : outputs) output_format(p);
   Scene scene = load_scene(o.scene, LoadOptions{.allow_external_paths = o.allow_external_paths});
+  if (!o.camera.empty()) select_camera(scene, o.camera);
   if (!o.camera_json.empty()) scene.camera = read_camera_json(o.camera_json, scene.camera);
   for (const std::string& w : scene.warnings) fmt::print(stderr, "prism: warning: {}\n", w);
   for (std::size_t i = 1, n = 0; i <= scene.lights.size(); ++i)
@@ -326,6 +329,9 @@ void add_render_command(CLI::App& root, Action& action) {
                   "EXR pixel space: working (the working space's RGB) or film (CIE XYZ relative to E for spectral "
                   "renders); chromaticities always say which")
       ->capture_default_str();
+  cmd->add_option("--camera", options->camera,
+                  "Which of the scene file's cameras renders: its name, or its zero-based index (`prism info SCENE` "
+                  "lists them); default: the first");
   cmd->add_option("--camera-json", options->camera_json,
                   "Camera from a JSON snippet {\"eye\", \"target\", \"up\", \"fov_degrees\"} (as `prism view` saves it); "
                   "missing fields keep the scene camera's values");

@@ -75,5 +75,24 @@ cp "$work/scene/good.json" "$work/scene/good.ply"
 expect_error "no loader for '.ply'" info "$work/scene/good.ply"
 [ ! -e "$work/x.exr" ] || fail "a failed render left $work/x.exr behind"
 
+# --camera NAME|INDEX chooses among a file's cameras; an unknown one is a usage error
+# (exit 2) listing what the scene has, before any rendering.
+sed 's/"camera": {"eye": \[0, 0.5, 3\], "target": \[0, 0.3, 0\]}}/"cameras": [{"name": "front", "eye": [0, 0.5, 3], "target": [0, 0.3, 0]}, {"name": "top", "eye": [0, 4, 0.01], "target": [0, 0, 0]}]}/' \
+  "$work/scene/good.json" >"$work/scene/cameras.json"
+expect_ok "camera top " info "$work/scene/cameras.json"
+for spec in top 1 front 0; do
+  expect_ok "rendered" render "$work/scene/cameras.json" --camera "$spec" --spp 1 --width 8 --height 8 -o "$work/cam-$spec.png"
+done
+cmp -s "$work/cam-top.png" "$work/cam-1.png" || fail "--camera top and --camera 1 differ"
+cmp -s "$work/cam-front.png" "$work/cam-0.png" || fail "--camera front and --camera 0 differ"
+cmp -s "$work/cam-top.png" "$work/cam-front.png" && fail "--camera top and front render the same image"
+for spec in side 2; do
+  timeout 60 "$prism" render "$work/scene/cameras.json" --camera "$spec" --spp 1 -o "$work/nocam.exr" >"$work/stdout" 2>"$work/stderr"
+  rc=$?
+  [ "$rc" -eq 2 ] || fail "--camera $spec: exit $rc, expected 2"
+  grep -q "^prism: error: .*it has 2 cameras: 0 'front' 1 'top'" "$work/stderr" || fail "--camera $spec: $(cat "$work/stderr")"
+  [ ! -e "$work/nocam.exr" ] || fail "--camera $spec wrote an image"
+done
+
 if [ "$failures" -ne 0 ]; then echo "$failures failure(s)"; exit 1; fi
 echo "loaders CLI: all checks passed"

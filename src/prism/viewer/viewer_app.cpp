@@ -16,6 +16,7 @@
 #include "prism/core/bounds.h"
 #include "prism/display/exposure.h"
 #include "prism/scene/camera_json.h"
+#include "prism/scene/camera_selection.h"
 #include "prism/scene/load_scene.h"
 #include "prism/viewer/camera_input.h"
 #include "prism/viewer/display_worker.h"
@@ -323,6 +324,7 @@ int run_viewer(const ViewerOptions& options) {
   // The display check comes first: without one there is nothing to show the scene in.
   ViewerWindow window(options.window_width, options.window_height, "Prism - " + options.scene);
   Scene scene = load_scene(options.scene, LoadOptions{.allow_external_paths = options.allow_external_paths});
+  if (!options.camera.empty()) select_camera(scene, options.camera);
   ViewerApp app(options, std::move(scene), window);
   return app.run();
 }

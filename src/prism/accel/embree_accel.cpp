@@ -3,11 +3,14 @@
 #include <cstring>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <embree3/rtcore.h>
 #include <fmt/format.h>
 
 #include "prism/core/error.h"
+#include "prism/core/sample_stream.h"
+#include "prism/scene/surface_alpha.h"
 
 namespace prism {
 namespace {
@@ -32,11 +35,48 @@ void fill_ray(const Ray& ray, RTCRay& r) {
   r.flags = 0;
 }
 
+// What an alpha-tested mesh's filter needs (geometry user data).
+struct AlphaGeometry {
+  const Scene* scene;
+  const TriangleMesh* mesh;
+  std::uint32_t mesh_index;
+};
+
+// A uniform number in [0, 1) from the ray and the primitive only (stochastic coverage must
+// not depend on threads or on how often Embree calls the filter for the same hit).
+float coverage_number(RTCRayN* ray, unsigned n, unsigned i, std::uint32_t mesh, std::uint32_t prim) {
+  std::uint64_t h = mix64((std::uint64_t{mesh} << 32) | prim);
+  for (float f : {RTCRayN_org_x(ray, n, i), RTCRayN_org_y(ray, n, i), RTCRayN_org_z(ray, n, i),
+                  RTCRayN_dir_x(ray, n, i), RTCRayN_dir_y(ray, n, i), RTCRayN_dir_z(ray, n, i)}) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &f, sizeof bits);
+    h = mix64(h ^ bits);
+  }
+  return static_cast<float>(h >> 40) * 0x1p-24f;
+}
+
+// Intersection and occlusion filter of meshes with alpha coverage (surface_alpha.h):
+// rejecting a candidate hit lets the ray continue through the cut-out.
+void alpha_filter(const RTCFilterFunctionNArguments* args) {
+  const auto* g = static_cast<const AlphaGeometry*>(args->geometryUserPtr);
+  const Material& material = g->scene->materials[g->mesh->material];
+  for (unsigned i = 0; i < args->N; ++i) {
+    if (args->valid[i] == 0) continue;
+    const std::uint32_t prim = RTCHitN_primID(args->hit, args->N, i);
+    const float alpha = surface_alpha(*g->scene, *g->mesh, prim, RTCHitN_u(args->hit, args->N, i),
+                                      RTCHitN_v(args->hit, args->N, i));
+    const float u = material.alpha_mode == AlphaMode::blend
+                        ? coverage_number(args->ray, args->N, i, g->mesh_index, prim) : 0.0f;
+    if (!surface_alpha_accepts(material, alpha, u)) args->valid[i] = 0;
+  }
+}
+
 }  // namespace
 
 struct EmbreeAccel::Impl {
   RTCDevice device = nullptr;
   RTCScene scene = nullptr;
+  std::vector<AlphaGeometry> alpha_geometry;  // stable: reserved before any pointer is taken
 };
 
 EmbreeAccel::EmbreeAccel(const Scene& scene) : impl_(std::make_unique<Impl>()) {
@@ -44,6 +84,7 @@ EmbreeAccel::EmbreeAccel(const Scene& scene) : impl_(std::make_unique<Impl>()) {
   if (!impl_->device) throw Error("embree: cannot create a device (unsupported CPU?)");
   impl_->scene = rtcNewScene(impl_->device);
   rtcSetSceneBuildQuality(impl_->scene, RTC_BUILD_QUALITY_HIGH);
+  impl_->alpha_geometry.reserve(scene.meshes.size());
 
   for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
     const TriangleMesh& mesh = scene.meshes[m];
@@ -59,6 +100,12 @@ EmbreeAccel::EmbreeAccel(const Scene& scene) : impl_(std::make_unique<Impl>()) {
       vertices[3 * i + 2] = mesh.positions[i].z;
     }
     std::memcpy(indices, mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
+    if (mesh.material < scene.materials.size() && has_alpha_coverage(scene.materials[mesh.material])) {
+      impl_->alpha_geometry.push_back({&scene, &mesh, static_cast<std::uint32_t>(m)});
+      rtcSetGeometryUserData(geom, &impl_->alpha_geometry.back());
+      rtcSetGeometryIntersectFilterFunction(geom, alpha_filter);
+      rtcSetGeometryOccludedFilterFunction(geom, alpha_filter);
+    }
     rtcCommitGeometry(geom);
     rtcAttachGeometryByID(impl_->scene, geom, static_cast<unsigned>(m));
     rtcReleaseGeometry(geom);

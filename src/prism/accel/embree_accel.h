@@ -18,6 +18,10 @@ struct Hit {
 
 class EmbreeAccel {
  public:
+  // Meshes whose material has alpha coverage (surface_alpha.h) get intersection filters
+  // that read `scene` (materials, uvs, textures) during queries: the scene must outlive
+  // the accelerator and keep its meshes and textures; which meshes are filtered is fixed
+  // here.
   explicit EmbreeAccel(const Scene& scene);
   ~EmbreeAccel();
   EmbreeAccel(const EmbreeAccel&) = delete;

@@ -29,7 +29,7 @@ class PreparedScene {
   void set_lights(std::vector<Light> lights);
 
  private:
-  std::unique_ptr<Scene> scene_;  // stable address: the BVH references its vertex arrays
+  std::unique_ptr<Scene> scene_;  // stable address: the BVH's alpha filters read its meshes and textures
   std::unique_ptr<EmbreeAccel> accel_;
 };
 

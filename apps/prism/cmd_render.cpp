@@ -186,7 +186,11 @@ int run_render(const RenderOptions& o) {
   for (const auto& n : names) outputs.emplace_back(n);
   // Check everything that can be checked before spending time on the render.
   for (const auto& p : outputs) output_format(p);
-  Scene scene = load_scene(o.scene, LoadOptions{.allow_external_paths = o.allow_external_paths});
+  // --memory-limit already applies while loading: textures are checked from their headers.
+  const std::uint64_t memory_limit = o.memory_limit.empty() ? 0 : parse_memory_size(o.memory_limit);
+  MemoryBudget load_budget(memory_limit > 0 ? memory_limit : default_memory_limit());
+  Scene scene = load_scene(o.scene, LoadOptions{.allow_external_paths = o.allow_external_paths,
+                                                .memory_budget = &load_budget});
   if (!o.camera.empty()) select_camera(scene, o.camera);
   if (!o.camera_json.empty()) scene.camera = read_camera_json(o.camera_json, scene.camera);
   for (const std::string& w : scene.warnings) fmt::print(stderr, "prism: warning: {}\n", w);
@@ -224,7 +228,7 @@ int run_render(const RenderOptions& o) {
     apply_sample_range(o.sample_range, settings);
   }
   validate_render_settings(settings);
-  if (!o.memory_limit.empty()) settings.memory_limit_bytes = parse_memory_size(o.memory_limit);
+  settings.memory_limit_bytes = memory_limit;
   check_render_memory(scene, settings, settings.memory_limit_bytes);  // before any film is allocated
   const std::uint64_t fingerprint = image_fingerprint(scene, settings);
 

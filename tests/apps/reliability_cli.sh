@@ -97,6 +97,28 @@ one_error_line "$work/stderr" "memory-limit '12X'"
 "$prism" render "${small[@]}" --spp 1 --memory-limit 256M -o "$work/mem/ok.exr" >/dev/null 2>"$work/stderr" ||
   fail "ordinary render under --memory-limit 256M failed: $(cat "$work/stderr")"
 "$prism" render --help | grep -q -- --memory-limit || fail "render --help does not document --memory-limit"
+# The limit applies while loading: a tiny PNG whose header declares 8000 x 8000 pixels
+# (732 MiB of float texels) is refused from its header, naming the file, within seconds.
+"$prism" render cornell-box --width 2 --height 2 --spp 1 -o "$work/mem/tex.png" >/dev/null 2>&1 ||
+  fail "cannot make a small PNG"
+printf '\000\000\037\100\000\000\037\100' | dd of="$work/mem/tex.png" bs=1 seek=16 conv=notrunc 2>/dev/null
+cat >"$work/mem/bomb.json" <<'JSON'
+{"format": "prism-scene/1", "name": "bomb",
+ "materials": [{"name": "tex", "type": "diffuse", "base_color_texture": "tex.png"},
+               {"name": "lamp", "type": "diffuse", "emission": {"color": [1, 1, 1], "luminance_nits": 10}}],
+ "meshes": [{"name": "floor", "material": "tex", "positions": [-1,0,-1, -1,0,1, 1,0,1, 1,0,-1], "indices": [0,1,2, 0,2,3],
+             "uvs": [0,0, 0,1, 1,1, 1,0]},
+            {"name": "lamp", "material": "lamp", "positions": [-0.2,1,-0.2, 0.2,1,-0.2, 0.2,1,0.2, -0.2,1,0.2],
+             "indices": [0,1,2, 0,2,3]}]}
+JSON
+start=$(date +%s)
+"$prism" render "$work/mem/bomb.json" --spp 1 --width 8 --height 8 --memory-limit 256M -o "$work/mem/bomb.exr" \
+  >/dev/null 2>"$work/stderr"
+rc=$?
+[ "$rc" -eq 1 ] || fail "texture over the memory limit: exit $rc, expected 1 (stderr: $(cat "$work/stderr"))"
+one_error_line "$work/stderr" "tex.png' (8000x8000, 3 channels) needs .* more than the memory limit of 256 MiB"
+[ $(($(date +%s) - start)) -le 5 ] || fail "texture over the memory limit: refusal took more than 5 s"
+[ ! -e "$work/mem/bomb.exr" ] || fail "texture over the memory limit: an image was written"
 
 if [ "$failures" -gt 0 ]; then
   echo "$failures failure(s)"

@@ -86,18 +86,6 @@ std::uint64_t parse_memory_size(const std::string& text) {
   return static_cast<std::uint64_t>(bytes);
 }
 
-std::string format_bytes(std::uint64_t bytes) {
-  const char* units[] = {"B", "KiB", "MiB", "GiB", "TiB"};
-  double v = static_cast<double>(bytes);
-  int u = 0;
-  while (v >= 1024.0 && u < 4) {
-    v /= 1024.0;
-    ++u;
-  }
-  if (u == 0) return fmt::format("{} B", bytes);
-  return fmt::format("{:.{}f} {}", v, v < 10.0 ? 2 : v < 100.0 ? 1 : 0, units[u]);
-}
-
 void check_render_memory(const Scene& scene, const RenderSettings& settings, std::uint64_t limit_bytes) {
   const std::uint64_t limit = limit_bytes > 0 ? limit_bytes : default_memory_limit();
   if (limit == 0) return;  // physical memory unknown and no explicit limit

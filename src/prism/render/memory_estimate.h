@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "prism/core/memory_budget.h"  // format_bytes
 #include "prism/render/renderer.h"
 #include "prism/scene/scene.h"
 
@@ -33,9 +34,6 @@ std::uint64_t default_memory_limit();
 // Parses "BYTES" or a number with a K, M, G or T suffix (binary: K = 1024; an optional
 // trailing "B" or "iB" is accepted, e.g. "512M", "1.5G", "4GiB"). Throws UsageError.
 std::uint64_t parse_memory_size(const std::string& text);
-
-// "1.50 GiB", "12.0 MiB", "512 B".
-std::string format_bytes(std::uint64_t bytes);
 
 // Throws Error (exit 1 in the CLI) naming the estimate, its parts and the limit when the
 // estimate exceeds `limit_bytes` (0: default_memory_limit()).

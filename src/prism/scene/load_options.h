@@ -1,5 +1,7 @@
 #pragma once
 // What every scene loader may and may not do with the files a scene refers to.
+#include "prism/core/memory_budget.h"
+
 namespace prism {
 
 struct LoadOptions {
@@ -10,6 +12,9 @@ struct LoadOptions {
   // Images wider or taller than this many pixels are refused before any pixel memory is
   // allocated.
   int max_texture_dimension = 32768;
+  // When set, loaders account for texture texels (before decoding) and mesh arrays in it
+  // and refuse what would exceed its limit (--memory-limit). Not owned.
+  MemoryBudget* memory_budget = nullptr;
 };
 
 }  // namespace prism

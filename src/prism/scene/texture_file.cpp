@@ -38,6 +38,17 @@ void check_dimensions(long width, long height, int max_dimension, std::string_vi
                               max_dimension, max_dimension));
 }
 
+// The float texels stay; the decoder's own buffer of `decoded_bytes_per_sample` codes per
+// sample lives only while decoding.
+void reserve_texels(const TextureLimits& limits, long width, long height, int channels, int decoded_bytes_per_sample,
+                    std::string_view name) {
+  if (!limits.budget) return;
+  const std::uint64_t samples = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) *
+                                static_cast<std::uint64_t>(channels);
+  limits.budget->reserve(samples * sizeof(float), samples * static_cast<std::uint64_t>(decoded_bytes_per_sample),
+                         fmt::format("texture '{}' ({}x{}, {} channels)", name, width, height, channels));
+}
+
 // Decodes 8- or 16-bit codes to linear floats: colour channels through the sRGB EOTF when
 // asked, alpha (the 2nd of grey+alpha, the 4th of RGBA) always linearly.
 template <typename Code>
@@ -101,7 +112,7 @@ class StbInput {
 };
 
 TextureImage decode_with_stb(std::span<const unsigned char> bytes, std::string_view name, TextureEncoding encoding,
-                             int max_dimension) {
+                             const TextureLimits& limits) {
   if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     throw IoError(fmt::format("cannot read image '{}': file too large", name));
   const auto* data = bytes.data();
@@ -109,7 +120,9 @@ TextureImage decode_with_stb(std::span<const unsigned char> bytes, std::string_v
   int width = 0, height = 0, channels = 0;
   if (!stbi_info_from_memory(data, size, &width, &height, &channels))
     throw IoError(fmt::format("cannot read image '{}': {}", name, stbi_failure_reason()));
-  check_dimensions(width, height, max_dimension, name);
+  check_dimensions(width, height, limits.max_dimension, name);
+  const bool hdr = stbi_is_hdr_from_memory(data, size) != 0;
+  reserve_texels(limits, width, height, channels, hdr ? 4 : stbi_is_16_bit_from_memory(data, size) ? 2 : 1, name);
   TextureImage image;
   image.name = std::string(name);
   StbInput input(bytes);
@@ -118,7 +131,7 @@ TextureImage decode_with_stb(std::span<const unsigned char> bytes, std::string_v
     if (input.ran_past_end()) throw IoError(fmt::format("cannot read image '{}': the file is truncated", name));
     image.width = width, image.height = height, image.channels = channels;
   };
-  if (stbi_is_hdr_from_memory(data, size)) {
+  if (hdr) {
     const auto pixels = input.decode(&stbi_loadf_from_callbacks, width, height, channels);
     check(pixels.get());
     image.texels.assign(pixels.get(), pixels.get() + static_cast<std::size_t>(width) * height * channels);
@@ -200,15 +213,18 @@ void check_openexr_header(std::span<const unsigned char> bytes, int max_dimensio
   }
 }
 
-TextureImage read_openexr(const std::filesystem::path& path, std::span<const unsigned char> bytes, int max_dimension) {
+TextureImage read_openexr(const std::filesystem::path& path, std::span<const unsigned char> bytes,
+                          const TextureLimits& limits) {
   const std::string name = path.string();
+  const int max_dimension = limits.max_dimension;
   check_openexr_header(bytes, max_dimension, name);
   try {
     // Size check from the header alone; read_exr then reads the pixels.
     Imf::InputFile in(path.c_str());
     const Imath::Box2i dw = in.header().dataWindow();
-    check_dimensions(static_cast<long>(dw.max.x) - dw.min.x + 1, static_cast<long>(dw.max.y) - dw.min.y + 1,
-                     max_dimension, name);
+    const long width = static_cast<long>(dw.max.x) - dw.min.x + 1, height = static_cast<long>(dw.max.y) - dw.min.y + 1;
+    check_dimensions(width, height, max_dimension, name);
+    reserve_texels(limits, width, height, 3, 0, name);  // read_exr writes the float RGB texels directly
   } catch (const Error&) {
     throw;
   } catch (const std::exception& e) {
@@ -247,12 +263,12 @@ ImageFileFormat detect_image_format(std::span<const unsigned char> head) {
 }
 
 TextureImage decode_texture_memory(std::span<const unsigned char> bytes, std::string_view name,
-                                   TextureEncoding encoding, int max_dimension) {
+                                   TextureEncoding encoding, const TextureLimits& limits) {
   switch (detect_image_format(bytes)) {
     case ImageFileFormat::png:
     case ImageFileFormat::jpeg:
     case ImageFileFormat::radiance_hdr:
-      return decode_with_stb(bytes, name, encoding, max_dimension);
+      return decode_with_stb(bytes, name, encoding, limits);
     case ImageFileFormat::openexr:
       throw IoError(fmt::format("cannot read image '{}': OpenEXR images are read from files only", name));
     case ImageFileFormat::unknown:
@@ -261,7 +277,8 @@ TextureImage decode_texture_memory(std::span<const unsigned char> bytes, std::st
   throw IoError(fmt::format("cannot read image '{}': not a PNG, JPEG, Radiance HDR or OpenEXR file (wrong magic)", name));
 }
 
-TextureImage read_texture_file(const std::filesystem::path& path, TextureEncoding encoding, int max_dimension) {
+TextureImage read_texture_file(const std::filesystem::path& path, TextureEncoding encoding,
+                               const TextureLimits& limits) {
   std::array<unsigned char, 16> head{};
   {
     std::error_code ec;
@@ -274,8 +291,8 @@ TextureImage read_texture_file(const std::filesystem::path& path, TextureEncodin
     if (in.gcount() == 0) throw IoError(fmt::format("cannot read image '{}': the file is empty", path.string()));
   }
   const std::vector<unsigned char> bytes = read_file_bytes(path);
-  if (detect_image_format(head) == ImageFileFormat::openexr) return read_openexr(path, bytes, max_dimension);
-  return decode_texture_memory(bytes, path.string(), encoding, max_dimension);
+  if (detect_image_format(head) == ImageFileFormat::openexr) return read_openexr(path, bytes, limits);
+  return decode_texture_memory(bytes, path.string(), encoding, limits);
 }
 
 }  // namespace prism

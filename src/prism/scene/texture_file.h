@@ -7,6 +7,7 @@
 #include <span>
 #include <string_view>
 
+#include "prism/core/memory_budget.h"
 #include "prism/scene/texture.h"
 
 namespace prism {
@@ -18,16 +19,25 @@ namespace prism {
 enum class TextureEncoding : std::uint8_t { srgb, linear };
 
 enum class ImageFileFormat : std::uint8_t { unknown, png, jpeg, radiance_hdr, openexr };
+
+// Limits checked from an image's header, before its pixels are decoded.
+struct TextureLimits {
+  TextureLimits(int max_dimension_ = 32768, MemoryBudget* budget_ = nullptr)  // NOLINT: implicit from int
+      : max_dimension(max_dimension_), budget(budget_) {}
+  int max_dimension;       // wider or taller images are refused
+  MemoryBudget* budget;    // when set: the float texels (and the decoder's buffer) must fit
+};
 ImageFileFormat detect_image_format(std::span<const unsigned char> head);
 
 // Throws IoError for a missing/unreadable/truncated/unrecognised file and for an image
-// wider or taller than `max_dimension` (checked from the header, before the pixels are
-// allocated).
-TextureImage read_texture_file(const std::filesystem::path& path, TextureEncoding encoding, int max_dimension);
+// wider or taller than `limits.max_dimension`, and Error when its texels would exceed the
+// memory budget (both checked from the header, before the pixels are allocated).
+TextureImage read_texture_file(const std::filesystem::path& path, TextureEncoding encoding,
+                               const TextureLimits& limits);
 
 // The same for PNG, JPEG and .hdr data already in memory (EXR needs a file); `name` is
 // used in messages and as the texture's name.
 TextureImage decode_texture_memory(std::span<const unsigned char> bytes, std::string_view name,
-                                   TextureEncoding encoding, int max_dimension);
+                                   TextureEncoding encoding, const TextureLimits& limits);
 
 }  // namespace prism

@@ -68,6 +68,38 @@ TEST(TextureFile, RefusesImagesLargerThanTheLimitBeforeDecoding) {
             std::string::npos);
 }
 
+// A 74-byte PNG may declare 8000 × 8000 RGB pixels: 732 MiB as float texels (below
+// stb_image's own 2^30-byte limit on 8-bit samples, which would refuse it first). With a
+// memory budget it is refused from its header, before anything is decoded, naming the
+// file, and nothing is accounted; a texture that fits is accounted.
+TEST(TextureFile, TexelsBeyondTheMemoryBudgetAreRefusedFromTheHeader) {
+  test::ScratchFolder dir;
+  write_png(dir / "small.png", EncodedImage{2, 2, 3, 8, {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}});
+  std::string bytes = test::read_bytes(dir / "small.png");
+  bytes.replace(16, 8, std::string("\x00\x00\x1f\x40\x00\x00\x1f\x40", 8));  // IHDR 8000 × 8000
+  dir.write("bomb.png", bytes);
+  MemoryBudget budget(256ull << 20);
+  const std::string message =
+      error_of<Error>([&] { read_texture_file(dir / "bomb.png", TextureEncoding::srgb, {32768, &budget}); });
+  EXPECT_NE(message.find("bomb.png' (8000x8000, 3 channels) needs"), std::string::npos) << message;
+  EXPECT_NE(message.find("more than the memory limit of 256 MiB"), std::string::npos) << message;
+  EXPECT_EQ(budget.used_bytes(), 0u);
+  read_texture_file(dir / "small.png", TextureEncoding::srgb, {32768, &budget});
+  EXPECT_EQ(budget.used_bytes(), 2u * 2u * 3u * sizeof(float));
+}
+
+TEST(MemoryBudget, AccountsAndRefusesBeyondTheLimit) {
+  MemoryBudget budget(1000);
+  budget.reserve(400, 500, "a");  // peak 900: fits; 400 stay
+  EXPECT_EQ(budget.used_bytes(), 400u);
+  EXPECT_THROW(budget.reserve(300, 301, "b"), Error);  // peak 1001
+  EXPECT_EQ(budget.used_bytes(), 400u);
+  EXPECT_THROW(budget.reserve(~0ull, 2, "overflow"), Error);
+  MemoryBudget unlimited(0);
+  unlimited.reserve(~0ull / 2, ~0ull / 4, "anything");
+  EXPECT_EQ(unlimited.used_bytes(), ~0ull / 2);
+}
+
 TEST(TextureFile, BadFilesAreIoErrors) {
   test::ScratchFolder dir;
   EXPECT_NE(error_of<IoError>([&] { read_texture_file(dir / "none.png", TextureEncoding::srgb, 32768); })

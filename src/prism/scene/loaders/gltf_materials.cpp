@@ -63,7 +63,7 @@ int GltfBuilder::texture(int index, const tinygltf::ExtensionMap& extensions, Te
                                  ? image.uri
                                  : fmt::format("{}#image{}", source_, t.source);
     if (image.image.empty()) fail(fmt::format("{}: image {} has no data", where, t.source));
-    TextureImage decoded = decode_texture_memory(image.image, name, encoding, options_.max_texture_dimension);
+    TextureImage decoded = decode_texture_memory(image.image, name, encoding, {options_.max_texture_dimension, options_.memory_budget});
     scene_.textures.push_back(std::move(decoded));
     result = static_cast<int>(scene_.textures.size() - 1);
     image_textures_[key] = result;

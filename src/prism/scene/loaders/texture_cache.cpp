@@ -9,7 +9,7 @@ int TextureCache::load(const std::filesystem::path& file, TextureEncoding encodi
   if (ec) canonical = file;
   const Key key{canonical.string(), encoding, wrap_u, wrap_v};
   if (const auto it = indices_.find(key); it != indices_.end()) return it->second;
-  TextureImage image = read_texture_file(canonical, encoding, options_.max_texture_dimension);
+  TextureImage image = read_texture_file(canonical, encoding, {options_.max_texture_dimension, options_.memory_budget});
   ++files_read_;
   image.name = file.filename().string();
   image.wrap_u = wrap_u;

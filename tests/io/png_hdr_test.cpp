@@ -20,9 +20,16 @@
 namespace prism {
 namespace {
 
-// Every cICP/mDCv/cLLi chunk in the file, by name, as libpng hands it over.
+// What libpng itself reads back: every cICP/mDCv/cLLi chunk by name, and the iCCP
+// chunk's name and (decompressed) profile.
+struct PngColorChunks {
+  std::map<std::string, std::vector<std::uint8_t>> unknown;
+  std::string icc_name;
+  std::vector<std::uint8_t> icc_profile;  // empty: no iCCP
+};
+
 // The setjmp frame holds the libpng calls only; the file is opened and closed by the caller.
-bool read_unknown_chunks_from(std::FILE* fp, std::map<std::string, std::vector<std::uint8_t>>& out) {
+bool read_color_chunks_from(std::FILE* fp, PngColorChunks& out) {
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
   png_infop info = png_create_info_struct(png);
   if (setjmp(png_jmpbuf(png))) {
@@ -36,43 +43,31 @@ bool read_unknown_chunks_from(std::FILE* fp, std::map<std::string, std::vector<s
   png_unknown_chunkp chunks = nullptr;
   const int n = png_get_unknown_chunks(png, info, &chunks);
   for (int i = 0; i < n; ++i)
-    out[std::string(reinterpret_cast<const char*>(chunks[i].name), 4)] =
+    out.unknown[std::string(reinterpret_cast<const char*>(chunks[i].name), 4)] =
         std::vector<std::uint8_t>(chunks[i].data, chunks[i].data + chunks[i].size);
+  png_charp name = nullptr;
+  int compression = 0;
+  png_bytep data = nullptr;
+  png_uint_32 length = 0;
+  if (png_get_iCCP(png, info, &name, &compression, &data, &length) != 0) {
+    out.icc_name = name;
+    out.icc_profile.assign(data, data + length);
+  }
   png_destroy_read_struct(&png, &info, nullptr);
   return true;
 }
 
-// Every cICP/mDCv/cLLi chunk in the file, by name, as libpng hands it over.
-std::map<std::string, std::vector<std::uint8_t>> read_unknown_chunks(const std::filesystem::path& path) {
-  std::map<std::string, std::vector<std::uint8_t>> out;
+PngColorChunks read_color_chunks(const std::filesystem::path& path) {
+  PngColorChunks out;
   std::FILE* fp = std::fopen(path.c_str(), "rb");
   if (!fp) return out;
-  if (!read_unknown_chunks_from(fp, out)) out.clear();
+  if (!read_color_chunks_from(fp, out)) out = {};
   std::fclose(fp);
   return out;
 }
 
-// The iCCP chunk's name and (decompressed) profile as libpng reads them; false without one.
-bool read_iccp_from(std::FILE* fp, std::string& name, std::vector<std::uint8_t>& profile) {
-  png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  png_infop info = png_create_info_struct(png);
-  if (setjmp(png_jmpbuf(png))) {
-    png_destroy_read_struct(&png, &info, nullptr);
-    return false;
-  }
-  png_init_io(png, fp);
-  png_read_info(png, info);
-  png_charp n = nullptr;
-  int compression = 0;
-  png_bytep data = nullptr;
-  png_uint_32 length = 0;
-  const bool found = png_get_iCCP(png, info, &n, &compression, &data, &length) != 0;
-  if (found) {
-    name = n;
-    profile.assign(data, data + length);
-  }
-  png_destroy_read_struct(&png, &info, nullptr);
-  return found;
+std::map<std::string, std::vector<std::uint8_t>> read_unknown_chunks(const std::filesystem::path& path) {
+  return read_color_chunks(path).unknown;
 }
 
 std::uint32_t be32(const std::vector<std::uint8_t>& d, std::size_t at) {
@@ -137,17 +132,12 @@ TEST(PngHdr, IccProfileReadsBackWithLibpng) {
                                                      "Prism display-p3");
   meta.icc_profile_name = "Prism display-p3";
   write_png_with_color_metadata(path, img, meta);
-  std::FILE* fp = std::fopen(path.c_str(), "rb");
-  ASSERT_TRUE(fp);
-  std::string name;
-  std::vector<std::uint8_t> profile;
-  const bool found = read_iccp_from(fp, name, profile);
-  std::fclose(fp);
-  ASSERT_TRUE(found);
-  EXPECT_EQ(name, "Prism display-p3");
-  EXPECT_EQ(profile, meta.icc_profile);
+  const PngColorChunks back = read_color_chunks(path);
+  ASSERT_FALSE(back.icc_profile.empty());
+  EXPECT_EQ(back.icc_name, "Prism display-p3");
+  EXPECT_EQ(back.icc_profile, meta.icc_profile);
   EXPECT_EQ(read_png(path).has_srgb_chunk, false);
-  EXPECT_EQ(read_unknown_chunks(path).count("cICP"), 1u);
+  EXPECT_EQ(back.unknown.count("cICP"), 1u);
 
   // PNG allows an sRGB chunk or an ICC profile, not both.
   meta.srgb_chunk = true;

@@ -10,7 +10,10 @@
 //   cosh   Radziszewski et al. 2009: pdf ∝ 1/cosh²(A(λ−B)), A = 0.0072/nm, B = 538 nm, a
 //          shape close to ȳ, normalised on [380, 780] with an analytic inverse CDF.
 //   cosh3  three cosh lobes (A, B) = (0.0078, 600), (0.0072, 535), (0.0062, 445), one per
-//          slot (slot i uses lobe i mod 3), each normalised on [380, 780]. Lobe l's slots
+//          slot (slot i uses lobe i mod 3), each normalised on [380, 780] and tabulated:
+//          the density used (sampled and returned) is the lobe's piecewise-linear
+//          interpolant at 1 nm nodes (within 3e-5 of the cosh; piecewise_linear_density.h),
+//          inverted exactly, so pdf and samples agree to rounding. Lobe l's slots
 //          share u shifted by cdf_l(B_l) − ½, so u = ½ lands every lobe on its centre B_l,
 //          and repeated lobes (N > 3) are rotated evenly among themselves. Combined as a
 //          multi-sample MIS estimator with the balance heuristic (Veach 1997 §9.2): with

@@ -9,7 +9,7 @@
 namespace prism::color {
 
 PiecewiseLinearDensity::PiecewiseLinearDensity(double first, double step, std::vector<double> values)
-    : first_(first), step_(step), pdf_(std::move(values)) {
+    : first_(first), step_(step), inverse_step_(1.0 / step), pdf_(std::move(values)) {
   if (pdf_.size() < 2 || !(step_ > 0.0)) throw UsageError("piecewise-linear density needs two nodes and a step > 0");
   cdf_.assign(pdf_.size(), 0.0);
   for (std::size_t n = 1; n < pdf_.size(); ++n) {
@@ -33,7 +33,7 @@ PiecewiseLinearDensity::PiecewiseLinearDensity(double first, double step, std::v
 }
 
 double PiecewiseLinearDensity::pdf(double x) const {
-  const double position = (x - first_) / step_;
+  const double position = (x - first_) * inverse_step_;
   const double last_segment = double(pdf_.size() - 2);
   if (!(position >= 0.0) || position > last_segment + 1.0) return 0.0;
   const std::size_t n = static_cast<std::size_t>(std::min(position, last_segment));
@@ -50,7 +50,7 @@ double PiecewiseLinearDensity::sample(double u) const {
   // step·(p0·t + (p1 − p0)·t²/2). Solve for the remaining mass r; the form 2c/(b + √(b² + 4ac))
   // of the quadratic's root has no cancellation when p1 ≈ p0.
   const double p0 = pdf_[n], p1 = pdf_[n + 1];
-  const double r = (u - cdf_[n]) / step_;
+  const double r = (u - cdf_[n]) * inverse_step_;
   const double a = 0.5 * (p1 - p0), b = p0;
   const double discriminant = std::max(0.0, b * b + 4.0 * a * r);
   const double denominator = b + std::sqrt(discriminant);

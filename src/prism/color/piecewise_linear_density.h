@@ -24,7 +24,7 @@ class PiecewiseLinearDensity {
   double last() const { return first_ + step_ * double(pdf_.size() - 1); }
 
  private:
-  double first_, step_;
+  double first_, step_, inverse_step_;
   std::vector<double> pdf_;    // normalised node values
   std::vector<double> cdf_;    // CDF at each node, cdf_.front() = 0, cdf_.back() = 1
   std::vector<int> guide_;     // guide_[g]: the segment containing u = g / guide_.size()

@@ -2,8 +2,10 @@
 #include "prism/color/wavelength_sampling.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
+#include <vector>
 
 #include "prism/color/piecewise_linear_density.h"
 #include "prism/core/error.h"
@@ -90,11 +92,44 @@ struct TabulatedLobe {
   }
 };
 
-const TabulatedLobe& three_cosh_lobe(int slot) {
-  static const TabulatedLobe lobes[3] = {TabulatedLobe(kThreeCoshLobes[0]), TabulatedLobe(kThreeCoshLobes[1]),
-                                         TabulatedLobe(kThreeCoshLobes[2])};
-  return lobes[slot % 3];
+struct ThreeCoshTables {
+  TabulatedLobe lobes[3] = {TabulatedLobe(kThreeCoshLobes[0]), TabulatedLobe(kThreeCoshLobes[1]),
+                            TabulatedLobe(kThreeCoshLobes[2])};
+  // The three lobes' node values side by side: the effective pdf of a wavelength needs all
+  // three at the same node, so one index computation and one cache line serve them.
+  std::vector<std::array<double, 3>> node_pdfs;
+
+  ThreeCoshTables() {
+    for (double nm = kVisibleMinNm; nm <= kVisibleMaxNm; nm += kLobeTableStepNm)
+      node_pdfs.push_back({lobes[0].density.pdf(nm), lobes[1].density.pdf(nm), lobes[2].density.pdf(nm)});
+  }
+  // Weight of each lobe's pdf in (1/count) Σ_slots p_slot: slot i uses lobe i mod 3, so
+  // lobe l serves (count − l + 2)/3 of the slots.
+  static std::array<double, 3> lobe_weights(int count) {
+    std::array<double, 3> w{};
+    for (int lobe = 0; lobe < std::min(count, 3); ++lobe)
+      w[static_cast<std::size_t>(lobe)] = double((count - lobe + 2) / 3) / count;
+    return w;
+  }
+  // Σ_l w_l p_l(λ): the same piecewise-linear pdfs, interpolated once.
+  double effective_pdf(const std::array<double, 3>& weights, double nm) const {
+    const double position = (nm - kVisibleMinNm) * (1.0 / kLobeTableStepNm);
+    const double last_segment = double(node_pdfs.size() - 2);
+    if (!(position >= 0.0) || position > last_segment + 1.0) return 0.0;
+    const std::size_t n = static_cast<std::size_t>(std::min(position, last_segment));
+    const double t = position - double(n);
+    const std::array<double, 3>& a = node_pdfs[n];
+    const std::array<double, 3>& b = node_pdfs[n + 1];
+    return weights[0] * (a[0] + t * (b[0] - a[0])) + weights[1] * (a[1] + t * (b[1] - a[1])) +
+           weights[2] * (a[2] + t * (b[2] - a[2]));
+  }
+};
+
+const ThreeCoshTables& three_cosh_tables() {
+  static const ThreeCoshTables tables;
+  return tables;
 }
+const TabulatedLobe& three_cosh_lobe(int slot) { return three_cosh_tables().lobes[slot % 3]; }
 
 }  // namespace
 
@@ -129,11 +164,22 @@ double slot_u(WavelengthStrategy strategy, double u, int slot, int count) {
 
 double wavelength_pdf(WavelengthStrategy strategy, int count, double wavelength_nm) {
   if (strategy != WavelengthStrategy::cosh3) return wavelength_slot_pdf(strategy, 0, wavelength_nm);
-  // Slot i uses lobe i mod 3: lobe l serves (count − l + 2) / 3 of the slots.
-  double sum = 0.0;
-  for (int lobe = 0; lobe < std::min(count, 3); ++lobe)
-    sum += ((count - lobe + 2) / 3) * three_cosh_lobe(lobe).density.pdf(wavelength_nm);
-  return sum / count;
+  // Slot i uses lobe i mod 3.
+  return three_cosh_tables().effective_pdf(ThreeCoshTables::lobe_weights(count), wavelength_nm);
+}
+
+void sample_three_cosh_wavelengths(double u, int count, float* wavelength_nm, float* pdf) {
+  // The same slot_u / sample_wavelength_slot / wavelength_pdf as the generic path, with the
+  // tables fetched once and the per-lobe weights computed once per tuple.
+  const ThreeCoshTables& tables = three_cosh_tables();
+  const std::array<double, 3> weights = ThreeCoshTables::lobe_weights(count);
+  for (int i = 0; i < count; ++i) {
+    const int lobe = i % 3, copy = i / 3, copies = (count - lobe + 2) / 3;
+    const double shifted = u + tables.lobes[lobe].center_shift + double(copy) / copies;
+    const double nm = tables.lobes[lobe].density.sample(shifted - std::floor(shifted));
+    wavelength_nm[i] = static_cast<float>(nm);
+    pdf[i] = static_cast<float>(tables.effective_pdf(weights, nm));
+  }
 }
 
 }  // namespace prism::color

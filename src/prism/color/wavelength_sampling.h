@@ -81,9 +81,17 @@ double wavelength_pdf(WavelengthStrategy strategy, int count, double wavelength_
 // hero, cosh: frac(u + slot/count) (Wilkie et al.'s rotation); cosh3: see above.
 double slot_u(WavelengthStrategy strategy, double u, int slot, int count);
 
+// cosh3's sample_wavelengths in one call (the generic loop below costs three calls per
+// wavelength): wavelength_nm[i], pdf[i] for i < count, the same values as that loop.
+void sample_three_cosh_wavelengths(double u, int count, float* wavelength_nm, float* pdf);
+
 template <int N>
 SampledWavelengths<N> sample_wavelengths(WavelengthStrategy strategy, double u) {
   SampledWavelengths<N> w;
+  if (strategy == WavelengthStrategy::cosh3) {
+    sample_three_cosh_wavelengths(u, N, w.wavelength_nm.data(), w.pdf.data());
+    return w;
+  }
   for (int i = 0; i < N; ++i) {
     const double nm = sample_wavelength_slot(strategy, i, slot_u(strategy, u, i, N));
     w.wavelength_nm[i] = static_cast<float>(nm);

@@ -103,13 +103,15 @@ RoundTrip round_trip(const std::string& name, const Mat3& from_srgb) {
 // jakob_hanika_fit.h/.cpp) spaces all three axes by smoothstep and stores a reachable
 // neighbour's coefficients at unreachable nodes; with the paper's spacing and raw fits at
 // those nodes (|c| up to 1e15) the worst colours here were off by 12.9 ΔE (acescg) and
-// 22.3 ΔE (rec2020). Measured at 32³ now: srgb mean 0.046 / p95 0.13 / max 0.25; acescg
-// 0.19 / 0.53 / 2.80 (dark blue (0.036 0.010 0.652) and sRGB red); rec2020 0.16 / 0.36 /
-// 2.22 (sRGB red (0.627 0.069 0.016)). The residual max is the interpolation error of the
-// few cells that straddle the boundary; the bounds below sit just above the measurements
-// (the table is deterministic: each column is fitted sequentially), so any regression of
-// that kind fails.
-TEST(JakobHanikaTable, RoundTripErrorIsBelowOneDeltaE) {
+// 22.3 ΔE (rec2020). Measured at 32³ now: srgb mean 0.046 / p95 0.12 / max 0.25; acescg
+// 0.19 / 0.53 / 2.80 (sRGB red (0.613 0.070 0.021), then dark blues at 2.26); rec2020
+// 0.16 / 0.36 / 2.22 (sRGB red (0.627 0.069 0.016)). The remaining max is the
+// interpolation error of the few cells that straddle the boundary. The table is
+// deterministic (every column and slice is fitted sequentially), so only a change to the
+// fitter, the spacing or the lookup moves these numbers: the bounds leave 1.5–2× headroom
+// on means and percentiles and 7 % on the acescg max (3.0), and a return of the poisoned
+// cells (errors of 10+ ΔE) fails.
+TEST(JakobHanikaTable, RoundTripErrorOfInGamutColoursIsBounded) {
   const ColorSpace& srgb = color_space("srgb");
   const RoundTrip s = round_trip("srgb", Mat3::identity());
   EXPECT_LT(s.mean, 0.1);

@@ -188,6 +188,8 @@ JakobHanikaTableData generate_jakob_hanika_table(const Mat3& rgb_to_xyz, const D
   //    node from its already fitted neighbours towards grey;
   // 2. from that slice walk each column (fixed l, j, i) up and down in brightness, each fit
   //    seeded from the previous one.
+  // (Step 1 replaced a cold start per column; on its own it changed no measured round-trip
+  // error — the columns already shared branches. The errors came from the next point.)
   // Colours outside the optimal-colour solid (the reflectances' gamut under the illuminant;
   // the wide-gamut cubes reach past it near their faces and at bright saturated colours)
   // have no sigmoid spectrum: Gauss–Newton then drives the coefficients towards a step

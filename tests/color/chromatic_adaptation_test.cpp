@@ -33,6 +33,21 @@ TEST(ColorAdaptation, BradfordConeMatrixIsTheIccOne) {
   EXPECT_EQ(m(2, 2), 1.0296);
 }
 
+// CIE 159:2004 (CIECAM02) eq. 7, M_CAT02 as printed (4 decimals). The values are stored
+// exactly as published, so compare all nine elements for equality: any typo, transposition
+// or row swap fails.
+TEST(ColorAdaptation, Cat02ConeMatrixIsTheCiecam02One) {
+  const double published[3][3] = {{0.7328, 0.4296, -0.1624},
+                                  {-0.7036, 1.6975, 0.0061},
+                                  {0.0030, 0.0136, 0.9834}};
+  const Mat3 m = cat_cone_matrix(Cat::cat02);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) EXPECT_EQ(m(i, j), published[i][j]) << "element " << i << "," << j;
+  // Each row of M_CAT02 sums to 1 (CIECAM02 normalises the sharpened responses so that the
+  // equal-energy white E has R = G = B = Y); the printed 4-decimal values keep that exactly.
+  for (int i = 0; i < 3; ++i) EXPECT_NEAR(m(i, 0) + m(i, 1) + m(i, 2), 1.0, kExact) << "row " << i;
+}
+
 // Lindbloom, "Chromatic Adaptation", D65 → D50 tables, 7 decimals.
 TEST(ColorAdaptation, ReproducesLindbloomD65ToD50) {
   const double bradford[3][3] = {{1.0478112, 0.0228866, -0.0501270},

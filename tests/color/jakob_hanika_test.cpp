@@ -97,22 +97,52 @@ RoundTrip round_trip(const std::string& name, const Mat3& from_srgb) {
 // well under 1 ΔE for such colours; what remains is the table's trilinear interpolation
 // error (the fits themselves converge to 1e-6 ΔE) plus the 2e-4 offset between the
 // tabulated D65 and the spaces' printed D65 xy (< 0.05 ΔE).
-// sRGB: every colour below 1 ΔE, mean below 0.3.
-// acescg, rec2020: their tables also cover unreachable colours, and next to those, near the
-// bright saturated edge, neighbouring grid nodes can hold fits from different solution
-// branches (e.g. a blue-absorbing valley vs a rising edge for a yellow); trilinear
-// interpolation across such a cell is poor (measured max 12.9 ΔE for acescg, 22.3 for
-// rec2020 at 32³). That is a known limitation of our table generator, reported here, not
-// hidden: we bound the mean (0.5) and the 95th percentile (1 ΔE) for these two.
-TEST(JakobHanikaTable, RoundTripErrorIsBelowOneDeltaE) {
+// In acescg and rec2020 many in-gamut sRGB colours lie close to the optimal-colour
+// boundary (the edge of what a reflectance can reach), where the sigmoid coefficients
+// grow without bound, and cells there touch nodes beyond it. The generator (see
+// jakob_hanika_fit.h/.cpp) spaces all three axes by smoothstep and stores a reachable
+// neighbour's coefficients at unreachable nodes; with the paper's spacing and raw fits at
+// those nodes (|c| up to 1e15) the worst colours here were off by 12.9 ΔE (acescg) and
+// 22.3 ΔE (rec2020). Measured at 32³ now: srgb mean 0.046 / p95 0.12 / max 0.25; acescg
+// 0.19 / 0.53 / 2.80 (sRGB red (0.613 0.070 0.021), then dark blues at 2.26); rec2020
+// 0.16 / 0.36 / 2.22 (sRGB red (0.627 0.069 0.016)). The remaining max is the
+// interpolation error of the few cells that straddle the boundary. The table is
+// deterministic (every column and slice is fitted sequentially), so only a change to the
+// fitter, the spacing or the lookup moves these numbers: the bounds leave 1.5–2× headroom
+// on means and percentiles and 7 % on the acescg max (3.0), and a return of the poisoned
+// cells (errors of 10+ ΔE) fails.
+TEST(JakobHanikaTable, RoundTripErrorOfInGamutColoursIsBounded) {
   const ColorSpace& srgb = color_space("srgb");
   const RoundTrip s = round_trip("srgb", Mat3::identity());
-  EXPECT_LT(s.mean, 0.3);
-  EXPECT_LT(s.max, 1.0);
+  EXPECT_LT(s.mean, 0.1);
+  EXPECT_LT(s.max, 0.5);
   for (const std::string name : {"acescg", "rec2020"}) {
     const RoundTrip r = round_trip(name, conversion_matrix(srgb, color_space(name)));
-    EXPECT_LT(r.mean, 0.5) << name;
-    EXPECT_LT(r.p95, 1.0) << name;
+    EXPECT_LT(r.mean, 0.3) << name;
+    EXPECT_LT(r.p95, 0.75) << name;
+    EXPECT_LT(r.max, 3.0) << name;
+  }
+}
+
+// Every lookup in the whole cube — including the wide-gamut colours no reflectance can
+// reach, whose nodes hold a neighbour's coefficients — must give finite coefficients and a
+// reflectance in [0, 1] (the sigmoid bounds it; a NaN or infinite coefficient would not).
+TEST(JakobHanikaTable, EveryLookupIsAValidReflectance) {
+  constexpr int kLevels = 17;
+  for (const std::string name : {"srgb", "acescg", "rec2020"}) {
+    const JakobHanikaTable& table = JakobHanikaTable::get(name);
+    int failures = 0;
+    for (int a = 0; a < kLevels; ++a)
+      for (int b = 0; b < kLevels; ++b)
+        for (int c = 0; c < kLevels; ++c) {
+          if (a == b && b == c) continue;  // greys: exact constants, c₂ = ±∞ at 0 and 1
+          const Vec3d rgb = Vec3d(a, b, c) / double(kLevels - 1);
+          const SigmoidPolynomial s = table.lookup(rgb);
+          bool ok = std::isfinite(s.c0) && std::isfinite(s.c1) && std::isfinite(s.c2);
+          for (double nm = 380.0; nm <= 780.0; nm += 5.0) ok = ok && s(nm) >= 0.0 && s(nm) <= 1.0;
+          if (!ok && ++failures <= 5) ADD_FAILURE() << name << " rgb " << rgb.x << " " << rgb.y << " " << rgb.z;
+        }
+    EXPECT_EQ(failures, 0) << name;
   }
 }
 

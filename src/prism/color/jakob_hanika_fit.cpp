@@ -2,10 +2,9 @@
 // the coefficient-table generator.
 #include "prism/color/jakob_hanika_fit.h"
 
-#include <atomic>
 #include <algorithm>
 #include <cmath>
-#include <mutex>
+#include <initializer_list>
 
 #include <tbb/parallel_for.h>
 
@@ -120,14 +119,17 @@ JakobHanikaFitResult JakobHanikaFitter::fit(const Vec3d& target_xyz, const Norma
   return result;
 }
 
-double jakob_hanika_scale(int k, int resolution) {
-  auto smoothstep = [](double x) { return x * x * (3.0 - 2.0 * x); };
-  return smoothstep(smoothstep(double(k) / (resolution - 1)));
-}
+namespace {
+double smoothstep(double x) { return x * x * (3.0 - 2.0 * x); }
+}  // namespace
+
+double jakob_hanika_scale(int k, int resolution) { return smoothstep(double(k) / (resolution - 1)); }
+
+double jakob_hanika_chroma_node(int i, int resolution) { return smoothstep(double(i) / (resolution - 1)); }
 
 Vec3d jakob_hanika_grid_rgb(int l, int k, int j, int i, int resolution) {
   const double z = jakob_hanika_scale(k, resolution);
-  const double x = double(i) / (resolution - 1), y = double(j) / (resolution - 1);
+  const double x = jakob_hanika_chroma_node(i, resolution), y = jakob_hanika_chroma_node(j, resolution);
   Vec3d rgb;
   rgb[static_cast<std::size_t>(l)] = z;
   rgb[static_cast<std::size_t>((l + 1) % 3)] = x * z;
@@ -135,57 +137,109 @@ Vec3d jakob_hanika_grid_rgb(int l, int k, int j, int i, int resolution) {
   return rgb;
 }
 
+namespace {
+
+// One fit per grid node: Gauss–Newton from each seed in turn until one converges, then
+// (if `cold_start`) from the flat grey of equal Y.
+struct NodeFitter {
+  const JakobHanikaFitter& fitter;
+  const Mat3& rgb_to_xyz;
+  int res;
+
+  JakobHanikaFitResult fit(int l, int k, int j, int i, std::initializer_list<NormalizedCoefficients> seeds,
+                           bool cold_start) const {
+    const Vec3d xyz = rgb_to_xyz * jakob_hanika_grid_rgb(l, k, j, i, res);
+    JakobHanikaFitResult best;
+    best.delta_e = INFINITY;
+    for (const NormalizedCoefficients& seed : seeds) {
+      const JakobHanikaFitResult r = fitter.fit(xyz, seed);
+      if (r.delta_e < best.delta_e) best = r;
+      if (best.converged) return best;
+    }
+    if (!cold_start) return best;
+    const double y = std::clamp(xyz.y, 1e-6, 1.0 - 1e-6);
+    const JakobHanikaFitResult cold = fitter.fit(xyz, {0.0, 0.0, SigmoidPolynomial::constant(y).c2});
+    if (cold.delta_e < best.delta_e) best = cold;
+    return best;
+  }
+};
+
+}  // namespace
+
 JakobHanikaTableData generate_jakob_hanika_table(const Mat3& rgb_to_xyz, const DenseSpectrum& illuminant,
                                                  int resolution, JakobHanikaTableStats* stats) {
   const int res = resolution;
   const JakobHanikaFitter fitter(illuminant);
+  const NodeFitter nodes{fitter, rgb_to_xyz, res};
   JakobHanikaTableData table;
   table.resolution = res;
   for (int k = 0; k < res; ++k) table.scale.push_back(static_cast<float>(jakob_hanika_scale(k, res)));
-  table.coefficients.assign(static_cast<std::size_t>(3) * res * res * res * 3, 0.0f);
 
-  std::atomic<long> not_converged{0};
-  std::mutex worst_mutex;
-  double worst = 0.0;
-  // One task per (l, j) row; along each grid column (fixed l, j, i) the fit walks z up from
-  // k = res/5 and then down, each fit starting from its neighbour's solution (as the
-  // paper's supplementary optimiser does): neighbouring colours have nearby coefficients,
-  // so a few Gauss–Newton steps suffice and saturated colours are reached gradually.
+  const std::size_t count = static_cast<std::size_t>(3) * res * res * res;
+  std::vector<JakobHanikaFitResult> fits(count);
+  auto at = [&](int l, int k, int j, int i) -> JakobHanikaFitResult& {
+    return fits[(((static_cast<std::size_t>(l) * res + k) * res + j) * res) + i];
+  };
+
+  // Continuation (Jakob & Hanika 2019, §4: each fit starts from a neighbour's solution), so
+  // that neighbouring nodes hold solutions on the same branch:
+  // 1. in the slice z = scale[k0] (k0 = res/5, as in the paper's optimiser) walk outwards
+  //    from the grey node (x = y = 1: i = j = res − 1) along anti-diagonals, seeding each
+  //    node from its already fitted neighbours towards grey;
+  // 2. from that slice walk each column (fixed l, j, i) up and down in brightness, each fit
+  //    seeded from the previous one.
+  // (Step 1 replaced a cold start per column; on its own it changed no measured round-trip
+  // error — the columns already shared branches. The errors came from the next point.)
+  // Colours outside the optimal-colour solid (the reflectances' gamut under the illuminant;
+  // the wide-gamut cubes reach past it near their faces and at bright saturated colours)
+  // have no sigmoid spectrum: Gauss–Newton then drives the coefficients towards a step
+  // function and stops anywhere (we measured |c| up to 1e15). Such a node only matters as
+  // a corner of cells whose reachable part it would poison (a 1 % trilinear weight on
+  // 1e4 outweighs everything else), so it stores the coefficients of the node it was
+  // reached from instead: bounded, and equal to a reachable neighbour's.
+  const int k0 = res / 5;
+  tbb::parallel_for(0, 3, [&](int l) {
+    for (int d = 0; d <= 2 * (res - 1); ++d)
+      for (int j = std::max(0, res - 1 - d); j < res && res - 1 - j <= d; ++j) {
+        const int i = res - 1 - (d - (res - 1 - j));
+        if (i < 0) continue;
+        const NormalizedCoefficients flat{0.0, 0.0, 0.0};
+        const NormalizedCoefficients& from_i = i + 1 < res ? at(l, k0, j, i + 1).coefficients : flat;
+        const NormalizedCoefficients& from_j = j + 1 < res ? at(l, k0, j + 1, i).coefficients : flat;
+        NormalizedCoefficients mean;
+        for (std::size_t n = 0; n < 3; ++n) mean[n] = 0.5 * (from_i[n] + from_j[n]);
+        JakobHanikaFitResult& node = at(l, k0, j, i);
+        node = nodes.fit(l, k0, j, i, {mean, from_i, from_j}, true);
+        if (!node.converged) node.coefficients = mean;
+      }
+  });
+  auto step = [&](int l, int k, int j, int i, int from_k) {
+    const JakobHanikaFitResult& from = at(l, from_k, j, i);
+    JakobHanikaFitResult node = nodes.fit(l, k, j, i, {from.coefficients}, from.converged);
+    if (!node.converged) node.coefficients = from.coefficients;
+    return node;
+  };
   tbb::parallel_for(0, 3 * res, [&](int task) {
     const int l = task / res, j = task % res;
-    double local_worst = 0.0;
     for (int i = 0; i < res; ++i) {
-      const int start = res / 5;
-      auto solve_from = [&](int k, NormalizedCoefficients& c) {
-        const Vec3d rgb = jakob_hanika_grid_rgb(l, k, j, i, res);
-        JakobHanikaFitResult r = fitter.fit(rgb_to_xyz * rgb, c);
-        if (!r.converged) {
-          // The warm start can come from an unreachable (out-of-locus) neighbour whose
-          // coefficients saturate the sigmoid; restart from the flat grey of equal Y.
-          const double y = std::clamp((rgb_to_xyz * rgb).y, 1e-6, 1.0 - 1e-6);
-          const JakobHanikaFitResult cold = fitter.fit(rgb_to_xyz * rgb, {0.0, 0.0, SigmoidPolynomial::constant(y).c2});
-          if (cold.delta_e < r.delta_e) r = cold;
-        }
-        c = r.coefficients;
-        if (!r.converged) ++not_converged;
-        local_worst = std::max(local_worst, r.delta_e);
-        const SigmoidPolynomial nm = to_wavelength_nm(c);
-        const std::size_t at = ((((static_cast<std::size_t>(l) * res + k) * res + j) * res) + i) * 3;
-        table.coefficients[at + 0] = static_cast<float>(nm.c0);
-        table.coefficients[at + 1] = static_cast<float>(nm.c1);
-        table.coefficients[at + 2] = static_cast<float>(nm.c2);
-      };
-      NormalizedCoefficients c{0.0, 0.0, 0.0};
-      for (int k = start; k < res; ++k) solve_from(k, c);
-      c = {0.0, 0.0, 0.0};
-      solve_from(start, c);
-      for (int k = start - 1; k >= 0; --k) solve_from(k, c);
+      for (int k = k0 + 1; k < res; ++k) at(l, k, j, i) = step(l, k, j, i, k - 1);
+      for (int k = k0 - 1; k >= 0; --k) at(l, k, j, i) = step(l, k, j, i, k + 1);
     }
-    std::lock_guard lock(worst_mutex);
-    worst = std::max(worst, local_worst);
   });
+
+  table.coefficients.resize(count * 3);
+  long not_converged = 0;
+  double worst = 0.0;
+  for (std::size_t n = 0; n < count; ++n) {
+    const SigmoidPolynomial nm = to_wavelength_nm(fits[n].coefficients);
+    table.coefficients[3 * n + 0] = static_cast<float>(nm.c0);
+    table.coefficients[3 * n + 1] = static_cast<float>(nm.c1);
+    table.coefficients[3 * n + 2] = static_cast<float>(nm.c2);
+    if (!fits[n].converged) ++not_converged;
+    worst = std::max(worst, fits[n].delta_e);
+  }
   if (stats) {
-    stats->fits = 3L * res * res * res + 3L * res * res;
+    stats->fits = static_cast<long>(count);
     stats->not_converged = not_converged;
     stats->max_delta_e = worst;
   }

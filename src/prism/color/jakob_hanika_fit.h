@@ -51,10 +51,15 @@ class JakobHanikaFitter {
 };
 
 // The coefficient table of one RGB space (the layout of the paper's supplementary code):
-// for each largest channel l ∈ {r, g, b}, a res³ grid over (z, y, x) where z = the largest
-// channel's value sampled at scale[k] = smoothstep(smoothstep(k/(res−1))) (dense near 0
-// and 1 where the colours change fastest), and x, y ∈ [0, 1] are the other two channels
-// (in cyclic order) divided by z. Entries are nm-space coefficients (c₀, c₁, c₂) as float.
+// for each largest channel l ∈ {r, g, b}, a res³ grid over (z, y, x) where z is the largest
+// channel's value and x, y ∈ [0, 1] are the other two channels (in cyclic order) divided
+// by z. All three axes are sampled at smoothstep(k/(res−1)), denser near 0 and 1. The paper
+// spaces z by smoothstep(smoothstep(·)) and x, y uniformly; for the wide-gamut spaces the
+// coefficients change fastest near the optimal-colour boundary — a channel near 0
+// (saturated colours), two near-equal largest channels (bright yellows, cyans, magentas,
+// where the best spectrum changes from a plateau to a notch) and mid-bright saturated z —
+// and this spacing cut the round-trip error there severalfold at the same resolution (see
+// tests/color/jakob_hanika_test.cpp). Entries are nm-space coefficients (c₀, c₁, c₂) as float.
 struct JakobHanikaTableData {
   int resolution = 0;
   std::vector<float> scale;         // [res]
@@ -67,7 +72,8 @@ struct JakobHanikaTableStats {
   double max_delta_e = 0.0;  // worst residual over the grid (out-of-locus corners dominate)
 };
 
-double jakob_hanika_scale(int k, int resolution);
+double jakob_hanika_scale(int k, int resolution);         // z of slice k
+double jakob_hanika_chroma_node(int i, int resolution);   // x (or y) of node i
 
 // Fits every grid point of the table for an RGB space with matrix `rgb_to_xyz` (white
 // Y = 1) seen under `illuminant`. Parallel over grid columns (oneTBB).

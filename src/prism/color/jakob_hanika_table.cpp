@@ -8,6 +8,7 @@
 #include <mutex>
 
 #include "prism/color/color_space.h"
+#include "prism/color/jakob_hanika_fit.h"
 #include "prism/core/error.h"
 
 namespace prism::color {
@@ -40,6 +41,7 @@ JakobHanikaTable::JakobHanikaTable(std::string space, std::span<const unsigned c
   std::memcpy(scale_.data(), bytes.data(), scale_.size() * sizeof(float));
   std::memcpy(coefficients_.data(), bytes.data() + scale_.size() * sizeof(float),
               coefficients_.size() * sizeof(float));
+  for (int i = 0; i < resolution; ++i) chroma_.push_back(static_cast<float>(jakob_hanika_chroma_node(i, resolution)));
 }
 
 float JakobHanikaTable::coefficient(int l, int k, int j, int i, int c) const {
@@ -55,12 +57,16 @@ SigmoidPolynomial JakobHanikaTable::lookup(Vec3d rgb) const {
   const int l = rgb.x >= rgb.y ? (rgb.x >= rgb.z ? 0 : 2) : (rgb.y >= rgb.z ? 1 : 2);
   const double z = rgb[l];
   const int res = resolution_;
-  const double x = rgb[(l + 1) % 3] / z * (res - 1), y = rgb[(l + 2) % 3] / z * (res - 1);
-  const int xi = std::min(static_cast<int>(x), res - 2), yi = std::min(static_cast<int>(y), res - 2);
-  const int zi = std::clamp(static_cast<int>(std::upper_bound(scale_.begin(), scale_.end(), float(z)) -
-                                             scale_.begin()) - 1, 0, res - 2);
-  const double dx = x - xi, dy = y - yi;
-  const double dz = (z - scale_[zi]) / (scale_[zi + 1] - scale_[zi]);
+  // The cell along each axis and the position in it, linear between the two nodes.
+  auto locate = [res](const std::vector<float>& nodes, double v, double& t) {
+    const int at = std::clamp(static_cast<int>(std::upper_bound(nodes.begin(), nodes.end(), float(v)) -
+                                               nodes.begin()) - 1, 0, res - 2);
+    t = (v - nodes[at]) / (nodes[at + 1] - nodes[at]);
+    return at;
+  };
+  double dx, dy, dz;
+  const int xi = locate(chroma_, rgb[(l + 1) % 3] / z, dx), yi = locate(chroma_, rgb[(l + 2) % 3] / z, dy);
+  const int zi = locate(scale_, z, dz);
 
   double c[3];
   for (int n = 0; n < 3; ++n) {

@@ -36,7 +36,8 @@ class JakobHanikaTable {
 
   std::string space_;
   int resolution_ = 0;
-  std::vector<float> scale_;
+  std::vector<float> scale_;   // z of each slice (stored in the table)
+  std::vector<float> chroma_;  // x, y of each node (jakob_hanika_chroma_node)
   std::vector<float> coefficients_;
 };
 

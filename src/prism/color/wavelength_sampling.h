@@ -10,7 +10,10 @@
 //   cosh   Radziszewski et al. 2009: pdf ∝ 1/cosh²(A(λ−B)), A = 0.0072/nm, B = 538 nm, a
 //          shape close to ȳ, normalised on [380, 780] with an analytic inverse CDF.
 //   cosh3  three cosh lobes (A, B) = (0.0078, 600), (0.0072, 535), (0.0062, 445), one per
-//          slot (slot i uses lobe i mod 3), each normalised on [380, 780]. Lobe l's slots
+//          slot (slot i uses lobe i mod 3), each normalised on [380, 780] and tabulated:
+//          the density used (sampled and returned) is the lobe's piecewise-linear
+//          interpolant at 1 nm nodes (within 3e-5 of the cosh; piecewise_linear_density.h),
+//          inverted exactly, so pdf and samples agree to rounding. Lobe l's slots
 //          share u shifted by cdf_l(B_l) − ½, so u = ½ lands every lobe on its centre B_l,
 //          and repeated lobes (N > 3) are rotated evenly among themselves. Combined as a
 //          multi-sample MIS estimator with the balance heuristic (Veach 1997 §9.2): with
@@ -78,9 +81,17 @@ double wavelength_pdf(WavelengthStrategy strategy, int count, double wavelength_
 // hero, cosh: frac(u + slot/count) (Wilkie et al.'s rotation); cosh3: see above.
 double slot_u(WavelengthStrategy strategy, double u, int slot, int count);
 
+// cosh3's sample_wavelengths in one call (the generic loop below costs three calls per
+// wavelength): wavelength_nm[i], pdf[i] for i < count, the same values as that loop.
+void sample_three_cosh_wavelengths(double u, int count, float* wavelength_nm, float* pdf);
+
 template <int N>
 SampledWavelengths<N> sample_wavelengths(WavelengthStrategy strategy, double u) {
   SampledWavelengths<N> w;
+  if (strategy == WavelengthStrategy::cosh3) {
+    sample_three_cosh_wavelengths(u, N, w.wavelength_nm.data(), w.pdf.data());
+    return w;
+  }
   for (int i = 0; i < N; ++i) {
     const double nm = sample_wavelength_slot(strategy, i, slot_u(strategy, u, i, N));
     w.wavelength_nm[i] = static_cast<float>(nm);

@@ -50,13 +50,26 @@ TEST_F(CliRender, InterruptThenResumeEqualsUninterrupted) {
   if (pid == 0) {
     const std::string out = (dir_ / "partial.exr").string();
     ::execl(PRISM_CLI, PRISM_CLI, "render", "cornell-box", "--width", "32", "--height", "32", "--seed", "3", "--spp",
-            "2000", "--checkpoint", ckp.c_str(), "-o", out.c_str(), static_cast<char*>(nullptr));
+            "2000", "--checkpoint", ckp.c_str(), "--checkpoint-every", "0.05", "-o", out.c_str(),
+            static_cast<char*>(nullptr));
     std::_Exit(127);
   }
-  std::this_thread::sleep_for(std::chrono::milliseconds(150));
-  ::kill(pid, SIGINT);
+  // Interrupt once the first checkpoint exists: the render is then surely under way with its
+  // signal handlers installed (a fixed delay is not enough on a slow or instrumented build,
+  // where SIGINT could arrive during start-up and kill the process with the default action).
   int status = 0;
-  ::waitpid(pid, &status, 0);
+  bool exited = false;
+  for (int i = 0; i < 6000 && !fs::exists(ckp); ++i) {
+    if (::waitpid(pid, &status, WNOHANG) == pid) {
+      exited = true;
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  if (!exited) {
+    ::kill(pid, SIGINT);
+    ::waitpid(pid, &status, 0);
+  }
   ASSERT_TRUE(WIFEXITED(status));
   if (WEXITSTATUS(status) == 0) GTEST_SKIP() << "render finished before the interrupt arrived";
   ASSERT_EQ(WEXITSTATUS(status), 130);

@@ -41,7 +41,9 @@ TEST(CameraSelection, UnknownNamesAndIndicesListTheCameras) {
       select_camera(s, spec);
       ADD_FAILURE() << "'" << spec << "' was accepted";
     } catch (const UsageError& e) {
-      if (*spec) EXPECT_NE(std::string(e.what()).find("0 'main' 1 '7' 2 'detail'"), std::string::npos) << e.what();
+      if (*spec) {
+        EXPECT_NE(std::string(e.what()).find("0 'main' 1 '7' 2 'detail'"), std::string::npos) << e.what();
+      }
     }
   }
   EXPECT_EQ(s.camera.name, "main");  // unchanged by the failures

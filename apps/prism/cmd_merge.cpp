@@ -1,10 +1,12 @@
-// `prism merge`: combine EXRs rendered over disjoint --sample-range parts into one image.
+// `prism merge`: combine EXRs rendered over disjoint --sample-range parts into one image,
+// with their AOV layers (aov_exr.h).
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
+#include "aov_exr.h"
 #include "command.h"
 #include "prism/core/error.h"
 #include "prism/core/version.h"
@@ -32,8 +34,9 @@ int run_merge(const MergeOptions& o) {
     const auto& strings = f.metadata.strings;
     if (!ints.contains("prism:sampleBegin") || !ints.contains("prism:sampleEnd") || !strings.contains("prism:fingerprint"))
       throw UsageError(fmt::format("'{}' is not a Prism render with sample-range metadata", name));
+    AovImages aovs = read_aov_exr_channels(name, f.image.width, f.image.height);
     parts.push_back({name, std::move(f.image), ints.at("prism:sampleBegin"), ints.at("prism:sampleEnd"),
-                     strings.at("prism:fingerprint")});
+                     strings.at("prism:fingerprint"), std::move(aovs)});
     if (parts.size() == 1) first_file = std::move(f);
   }
   const MergedRender merged = merge_partial_renders(parts);
@@ -44,6 +47,7 @@ int run_merge(const MergeOptions& o) {
   if (first_file.metadata.strings.contains("prism:scene"))
     meta.strings["prism:scene"] = first_file.metadata.strings.at("prism:scene");
   meta.ints["prism:spp"] = merged.samples;
+  if (merged.aovs.set.any()) meta.strings["prism:aovs"] = format_aov_list(merged.aovs.set);
   // A contiguous union can be merged again with further parts; otherwise list the ranges.
   if (merged.ranges.size() == 1) {
     meta.ints["prism:sampleBegin"] = merged.ranges.front().first;
@@ -56,7 +60,7 @@ int run_merge(const MergeOptions& o) {
   const ExrChromaticities chroma = first_file.has_chromaticities
                                        ? first_file.chromaticities
                                        : throw UsageError(fmt::format("'{}' has no chromaticities", o.inputs.front()));
-  write_exr(o.output, merged.image, chroma, meta);
+  write_exr(o.output, merged.image, chroma, meta, {}, aov_exr_channels(merged.aovs));
   fmt::print("prism: merged {} parts, {} spp -> {}\n", parts.size(), merged.samples, o.output);
   return 0;
 }

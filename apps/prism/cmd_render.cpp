@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "aov_exr.h"
 #include "command.h"
 #include "display_options.h"
 #include "progress_reporter.h"
@@ -21,6 +22,7 @@
 #include "prism/io/atomic_file.h"
 #include "prism/io/exr.h"
 #include "prism/io/png.h"
+#include "prism/render/aov_images.h"
 #include "prism/render/checkpoint.h"
 #include "prism/render/memory_estimate.h"
 #include "prism/render/renderer.h"
@@ -61,6 +63,7 @@ struct RenderOptions {
   std::string resume;
   bool spp_given = false;
   std::string memory_limit;  // BYTES or SIZE with K/M/G/T; empty: 90 % of physical memory
+  std::string aovs;          // "albedo,normal,depth" subset; empty: none
 };
 
 // Parses "START:END" (END exclusive) into first_sample / samples_per_pixel.
@@ -146,10 +149,16 @@ void write_outputs(const std::vector<std::filesystem::path>& outputs, const Rend
       meta.strings["prism:fingerprint"] = hex(fingerprint);
       // Pixel values are luminance-scaled: Y = 1 is one nit.
       const color::ColorSpace& space = o.exr_space == "film" ? result.film_space : working;
-      write_exr(path, film_image(result.film, result.film_space, space), chromaticities_of(space), meta);
+      if (settings.aovs.any()) meta.strings["prism:aovs"] = format_aov_list(settings.aovs);
+      const AovImages aovs = film_aov_images(result.film, color::conversion_matrix(result.film_space, space));
+      write_exr(path, film_image(result.film, result.film_space, space), chromaticities_of(space), meta, {},
+                aov_exr_channels(aovs));
     } else {
-      // Display-referred outputs go through the display pipeline (exposure, ACES, encoding).
-      write_display_output(path, film_image(result.film, result.film_space, working), working, display);
+      // Display-referred outputs go through the display pipeline (exposure, ACES, encoding);
+      // they hold the beauty only, or the normal AOV for --view normal.
+      std::optional<ImageRgbF> normals;
+      if (result.film.aovs().normal) normals = film_aov_images(result.film, Mat3::identity()).normal;
+      write_display_output(path, film_image(result.film, result.film_space, working), working, display, normals);
     }
   }
 }
@@ -179,6 +188,9 @@ int run_render(const RenderOptions& o) {
   if (o.threads_given && o.threads < 1)
     throw UsageError(fmt::format("--threads must be at least 1 (got {}; omit it to use all cores)", o.threads));
   if (o.width < 0 || o.height < 0) throw UsageError("--width and --height must be positive");
+  if (!o.aovs.empty()) settings.aovs = parse_aov_list(o.aovs);
+  // A display output's normal view shows the normal AOV: keep it when that view is asked for.
+  if (display::DebugView::normal == selected_debug_view(o.display)) settings.aovs.normal = true;
 
   std::vector<std::filesystem::path> outputs;
   const std::vector<std::string> names =
@@ -354,6 +366,12 @@ void add_render_command(CLI::App& root, Action& action) {
   cmd->add_option("--memory-limit", options->memory_limit,
                   "Refuse a render whose estimated memory (film, path pool, textures, meshes) exceeds this many "
                   "bytes; suffixes K, M, G, T (binary), e.g. 8G. Default: 90 % of physical memory");
+  cmd->add_option("--aov", options->aovs,
+                  "Extra EXR layers about the first surface each camera ray hits, comma-separated: albedo "
+                  "(albedo.R/G/B, base colour in the EXR's colour space), normal (N.x/N.y/N.z, world-space shading "
+                  "normal) and depth (Z, distance along the camera ray in scene units, +inf for misses; with "
+                  "Z.coverage, the fraction of samples that hit). The beauty stays in R, G, B; PNG and AVIF outputs "
+                  "hold the beauty only (--view normal turns the normal AOV on and shows it)");
   cmd->add_flag("--allow-external-paths", options->allow_external_paths,
                 "Let the scene file refer to files outside its own folder (absolute paths, '..')");
   cmd->callback([options, cmd, &action] {

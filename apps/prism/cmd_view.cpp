@@ -18,6 +18,9 @@ void add_view_command(CLI::App& root, Action& action) {
   cmd->add_option("--screenshot", o->screenshot, "With --frames: PNG of the window, UI included");
   cmd->add_option("--ev100", o->ev100, "Initial exposure (EV100); default: auto exposure");
   cmd->add_option("--odt", o->odt, "Initial output transform (see prism tonemap --help)")->capture_default_str();
+  cmd->add_option("--view", o->view,
+                  "Initial debug view: normal (shading-normal AOV as 0.5 + 0.5·N), luminance, luminance-display, "
+                  "gamut-clip, sdr-hdr-split, chromaticity");
   cmd->add_option("--mode", o->mode, "Initial transport: spectral or rgb")->capture_default_str();
   cmd->add_option("--samples-per-pass", o->samples_per_pass, "Samples per pixel per displayed pass")
       ->capture_default_str();

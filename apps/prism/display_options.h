@@ -11,6 +11,7 @@
 #include <string>
 
 #include "prism/color/color_space.h"
+#include "prism/display/debug_views.h"
 #include "prism/display/display_pipeline.h"
 #include "prism/io/image.h"
 
@@ -39,6 +40,10 @@ struct DisplayCliOptions {
 // Adds --odt, --encoding, exposure, --bloom…, --display-primaries, --render-scale, --view,
 // --overlay/--ui-nits, --ocio-config/--display, HDR10 metadata, --bit-depth, --dither-seed.
 void add_display_options(CLI::App* cmd, DisplayCliOptions& options);
+
+// The debug view --view selects (none without --view, or with --ocio-config/--display).
+// Throws UsageError for unknown names.
+display::DebugView selected_debug_view(const DisplayCliOptions& options);
 
 // Validates and converts (reads the overlay PNG). Throws UsageError.
 display::DisplaySettings make_display_settings(const DisplayCliOptions& options);

@@ -107,6 +107,8 @@ void validate_display_output(const std::filesystem::path& out, const DisplayCliO
   check_writable_output(out);
 }
 
+display::DebugView selected_debug_view(const DisplayCliOptions& options) { return debug_view(options); }
+
 void write_display_output(const std::filesystem::path& out, const ImageRgbF& film, const color::ColorSpace& film_space,
                           const DisplayCliOptions& o, const std::optional<ImageRgbF>& normals) {
   validate_display_output(out, o);

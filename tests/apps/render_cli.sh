@@ -34,6 +34,10 @@ expect_error 2 "unknown output extension '.jpg'" render cornell-box -o "$work/ou
 expect_error 1 "does not exist" render cornell-box -o "$work/out/missing-dir/x.exr"
 expect_error 1 "cannot write" render cornell-box -o /proc/prism-cannot-write-here.exr
 expect_error 2 "estimator" render cornell-box --estimator nope "${o[@]}"
+expect_error 2 "unknown --aov 'bogus'" render cornell-box --aov bogus "${o[@]}"
+expect_error 2 "unknown --aov ''" render cornell-box --aov albedo, "${o[@]}"
+expect_error 2 "lists 'depth' twice" render cornell-box --aov depth,normal,depth "${o[@]}"
+expect_error 2 "unknown --aov 'Z'" render cornell-box --aov Z "${o[@]}"
 expect_error 2 "" render cornell-box --no-such-option
 expect_error 2 "" frobnicate
 
@@ -48,6 +52,24 @@ if "$prism" render cornell-box --width 32 --height 24 --spp 2 "${o[@]}" >"$work/
 else
   fail "small render failed: $(cat "$work/stderr")"
 fi
+
+# --aov with good values: the EXR gains the layers, the PNG stays the beauty; --help says so.
+rm -rf "$work/out"; mkdir -p "$work/out"
+if "$prism" render cornell-box --width 16 --height 12 --spp 1 --aov albedo,normal,depth "${o[@]}" >"$work/stdout" 2>"$work/stderr"; then
+  [ -s "$work/out/x.exr" ] && [ -s "$work/out/x.png" ] || fail "--aov render did not write both files"
+  [ "$(ls -A "$work/out" | wc -l)" -eq 2 ] || fail "--aov render left extra files: $(ls -A "$work/out")"
+  for channel in albedo.R N.x Z.coverage; do
+    grep -aq "$channel" "$work/out/x.exr" || fail "--aov EXR lacks channel $channel"
+  done
+else
+  fail "--aov render failed: $(cat "$work/stderr")"
+fi
+for subset in normal depth,albedo; do
+  "$prism" render cornell-box --width 8 --height 8 --spp 1 --aov "$subset" -o "$work/out/s.exr" >/dev/null 2>&1 ||
+    fail "--aov $subset failed"
+done
+"$prism" render --help | tr -s ' \n' ' ' | grep -q "PNG and AVIF outputs hold the beauty only" ||
+  fail "render --help does not say PNG outputs hold the beauty only"
 
 # SIGINT/SIGTERM mid-render: exit 128+signal with both images holding the passes so far.
 for sig in INT TERM; do

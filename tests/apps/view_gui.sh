@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # GUI test (CTest label gui): `prism view --frames N --screenshot` under Xvfb with Mesa's
 # software OpenGL. The screenshot has the window's size, is not blank, and a higher
-# --ev100 gives a darker image. Usage: view_gui.sh PATH/TO/prism
+# --ev100 gives a darker image; --view normal shows the normal AOV. Usage: view_gui.sh PATH/TO/prism
 set -u
 prism="$1"
 source "$(dirname "$0")/view_xvfb.bash"
@@ -31,4 +31,15 @@ sd=$(grep -o 'stddev=[0-9.]*' "$tmp/log_1.txt" | cut -d= -f2)
 awk -v s="$sd" 'BEGIN { exit !(s > 0.02) }' || { echo "FAIL: screenshot is flat (stddev $sd)"; exit 1; }
 awk -v b="$bright" -v d="$dark" 'BEGIN { exit !(b > d + 0.002) }' ||
   { echo "FAIL: --ev100 4 mean $dark is not darker than --ev100 1 mean $bright"; exit 1; }
-echo "ok: mean code value $bright at EV100 1, $dark at EV100 4"
+# --view normal starts in the normal debug view (the film's normal AOV): it must render
+# and show something other than the beauty.
+if ! timeout 300 "$prism" view cornell-box --frames 2 --view normal --screenshot "$tmp/shot_normal.png" \
+     --log-events >"$tmp/log_normal.txt" 2>"$tmp/err_normal.txt"; then
+  echo "FAIL: prism view --view normal failed: $(cat "$tmp/err_normal.txt")" >&2; exit 1
+fi
+normal=$(grep -o 'mean=[0-9.]*' "$tmp/log_normal.txt" | cut -d= -f2)
+nsd=$(grep -o 'stddev=[0-9.]*' "$tmp/log_normal.txt" | cut -d= -f2)
+awk -v s="$nsd" 'BEGIN { exit !(s > 0.02) }' || { echo "FAIL: normal view is flat (stddev $nsd)"; exit 1; }
+awk -v n="$normal" -v b="$bright" 'BEGIN { d = n - b; exit !(d > 0.01 || d < -0.01) }' ||
+  { echo "FAIL: normal view mean $normal looks like the beauty's $bright"; exit 1; }
+echo "ok: mean code value $bright at EV100 1, $dark at EV100 4, $normal in the normal view"

@@ -8,6 +8,7 @@
 #include <fstream>
 
 #include "prism/core/error.h"
+#include "prism/render/aov_images.h"
 #include "prism/render/merge_partial_renders.h"
 #include "prism/render/renderer.h"
 #include "prism/scene/builtin_scenes.h"
@@ -113,6 +114,71 @@ TEST(Checkpoint, CorruptTruncatedAndForeignFilesAreRefused) {
   EXPECT_THROW(read_checkpoint(path), IoError);
 }
 
+bool aovs_identical(const Film& a, const Film& b) {
+  const FilmAovSums &x = a.aov_sums(), &y = b.aov_sums();
+  return x.set == y.set && x.albedo == y.albedo && x.normal == y.normal && x.depth == y.depth &&
+         x.depth_hits == y.depth_hits;
+}
+
+TEST(Checkpoint, AovsRoundTripAndResumeBitwiseIdentically) {
+  const Scene scene = make_cornell_box();
+  RenderSettings full = settings_for_test(5);
+  full.aovs = AovSet{true, true, true};
+  const RenderResult reference = render(scene, full);
+  for (const AovSet set : {AovSet{true, true, true}, AovSet{false, true, false}, AovSet{true, false, true}}) {
+    RenderSettings s = full;
+    s.aovs = set;
+    std::atomic<bool> cancel{false};
+    std::optional<Checkpoint> saved;
+    RenderHooks hooks;
+    hooks.cancel = &cancel;
+    hooks.on_pass = [&](const RenderProgress& p) { cancel = p.passes_done == 2; };
+    hooks.on_checkpoint = [&](const Film& film, int next) { saved = Checkpoint{7, 0, next, film}; };
+    render(scene, s, hooks);
+    ASSERT_TRUE(saved);
+    const fs::path path = temp_file("aov.ckp");
+    write_checkpoint(path, *saved);
+    const Checkpoint loaded = read_checkpoint(path);
+    fs::remove(path);
+    EXPECT_EQ(loaded.film.aovs(), set);
+    EXPECT_TRUE(films_identical(loaded.film, saved->film) && aovs_identical(loaded.film, saved->film));
+
+    const ResumeState resume{loaded.film, loaded.next_sample};
+    const RenderResult resumed = render(scene, s, RenderHooks{}, &resume);
+    const RenderResult uninterrupted = set == full.aovs ? reference : render(scene, s);
+    EXPECT_TRUE(films_identical(resumed.film, uninterrupted.film));
+    EXPECT_TRUE(aovs_identical(resumed.film, uninterrupted.film)) << "resumed AOVs differ (set " << set.bits() << ")";
+    // A checkpoint resumes only into a render that keeps the same AOVs.
+    RenderSettings other = s;
+    other.aovs.normal = !other.aovs.normal;
+    EXPECT_THROW(render(scene, other, RenderHooks{}, &resume), UsageError);
+  }
+}
+
+TEST(Checkpoint, OldFormatVersionIsRefusedWithAClearMessage) {
+  const Scene scene = make_cornell_box();
+  const RenderResult r = render(scene, settings_for_test(1));
+  const fs::path path = temp_file("v1.ckp");
+  write_checkpoint(path, Checkpoint{1, 0, 1, r.film});
+  std::string bytes;
+  {
+    std::ifstream in(path, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  bytes[8] = 1;  // the u32 version after the magic, as version 1 wrote it
+  bytes[9] = bytes[10] = bytes[11] = 0;
+  std::ofstream(path, std::ios::binary) << bytes;
+  try {
+    read_checkpoint(path);
+    ADD_FAILURE() << "a version-1 checkpoint was accepted";
+  } catch (const IoError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("version 1 is not supported"), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << "not one line: " << what;
+  }
+  fs::remove(path);
+}
+
 TEST(Fingerprint, CoversWhatChangesPixelsOnly) {
   const Scene scene = make_cornell_box();
   const RenderSettings base = settings_for_test(8);
@@ -136,7 +202,7 @@ PartialRender partial(const Scene& scene, int begin, int end) {
   RenderSettings s = settings_for_test(end);
   s.first_sample = begin;
   const RenderResult r = render(scene, s);
-  return {"part", ImageRgbF{s.width, s.height, r.film.mean_rgb()}, begin, r.next_sample, "same"};
+  return {"part", ImageRgbF{s.width, s.height, r.film.mean_rgb()}, begin, r.next_sample, "same", {}};
 }
 
 TEST(MergePartialRenders, SplitRangesMergeToTheSingleRender) {
@@ -155,15 +221,67 @@ TEST(MergePartialRenders, SplitRangesMergeToTheSingleRender) {
   }
 }
 
+PartialRender partial_with_aovs(const Scene& scene, int begin, int end) {
+  RenderSettings s = settings_for_test(end);
+  s.first_sample = begin;
+  s.aovs = AovSet{true, true, true};
+  const RenderResult r = render(scene, s);
+  return {"part", ImageRgbF{s.width, s.height, r.film.mean_rgb()}, begin, r.next_sample, "same",
+          film_aov_images(r.film, Mat3::identity())};
+}
+
+TEST(MergePartialRenders, AovsMergeToTheSingleRendersAovs) {
+  Scene scene = make_cornell_box();
+  scene.camera.fov_degrees = 60.0f;  // wider than the box: edge pixels are partly covered
+  RenderSettings s = settings_for_test(8);
+  s.aovs = AovSet{true, true, true};
+  const RenderResult whole = render(scene, s);
+  const AovImages expected = film_aov_images(whole.film, Mat3::identity());
+  const std::vector<PartialRender> parts{partial_with_aovs(scene, 3, 8), partial_with_aovs(scene, 0, 3)};
+  const MergedRender merged = merge_partial_renders(parts);
+  ASSERT_EQ(merged.aovs.set, s.aovs);
+  // As for the beauty: each part's mean was rounded to float once (error ≤ 2⁻²⁴ |part|),
+  // the weighted sum is formed in double and rounded once more, and the single render's
+  // mean was rounded once too. Normals are signed, so parts can cancel: the bound scales
+  // with the largest magnitude involved, not with the result. Depth is weighted by
+  // samples × coverage, a float of the part: the same bound.
+  const auto near = [&](float got, float want, const std::vector<float> AovImages::*channel, std::size_t i) {
+    float scale = std::abs(want);
+    for (const auto& p : parts) scale = std::max(scale, std::abs((p.aovs.*channel)[i]));
+    return got == want || std::abs(got - want) <= 4e-7f * scale + 1e-30f;
+  };
+  const auto near_rgb = [&](float got, float want, ImageRgbF AovImages::*layer, std::size_t i) {
+    float scale = std::abs(want);
+    for (const auto& p : parts) scale = std::max(scale, std::abs((p.aovs.*layer).rgb[i]));
+    return got == want || std::abs(got - want) <= 4e-7f * scale + 1e-30f;
+  };
+  int partly_covered = 0;
+  for (std::size_t i = 0; i < expected.depth.size(); ++i) {
+    for (std::size_t k = 3 * i; k < 3 * i + 3; ++k) {
+      EXPECT_TRUE(near_rgb(merged.aovs.albedo.rgb[k], expected.albedo.rgb[k], &AovImages::albedo, k)) << "albedo " << k;
+      EXPECT_TRUE(near_rgb(merged.aovs.normal.rgb[k], expected.normal.rgb[k], &AovImages::normal, k))
+          << "normal " << k << ": " << merged.aovs.normal.rgb[k] << " vs " << expected.normal.rgb[k];
+    }
+    EXPECT_TRUE(near(merged.aovs.depth[i], expected.depth[i], &AovImages::depth, i))
+        << "depth at " << i << ": " << merged.aovs.depth[i] << " vs " << expected.depth[i];
+    EXPECT_TRUE(near(merged.aovs.depth_coverage[i], expected.depth_coverage[i], &AovImages::depth_coverage, i))
+        << "coverage at " << i;
+    partly_covered += expected.depth_coverage[i] > 0.0f && expected.depth_coverage[i] < 1.0f;
+  }
+  EXPECT_GT(partly_covered, 0) << "the test needs pixels whose samples partly miss";
+  PartialRender plain = partial(scene, 8, 9);
+  EXPECT_THROW(merge_partial_renders({partial_with_aovs(scene, 0, 3), plain}), UsageError);
+}
+
 TEST(MergePartialRenders, RejectsIncompatibleParts) {
   const ImageRgbF a{2, 2, std::vector<float>(12, 1.0f)};
   const ImageRgbF b{3, 2, std::vector<float>(18, 1.0f)};
   EXPECT_THROW(merge_partial_renders({}), UsageError);
-  EXPECT_THROW(merge_partial_renders({{"a", a, 0, 4, "f"}, {"b", b, 4, 8, "f"}}), UsageError);
-  EXPECT_THROW(merge_partial_renders({{"a", a, 0, 4, "f"}, {"b", a, 4, 8, "g"}}), UsageError);
-  EXPECT_THROW(merge_partial_renders({{"a", a, 0, 4, "f"}, {"b", a, 3, 8, "f"}}), UsageError);
-  EXPECT_THROW(merge_partial_renders({{"a", a, 4, 4, "f"}}), UsageError);
-  const MergedRender gap = merge_partial_renders({{"a", a, 0, 2, "f"}, {"b", a, 5, 8, "f"}});
+  EXPECT_THROW(merge_partial_renders({{"a", a, 0, 4, "f", {}}, {"b", b, 4, 8, "f", {}}}), UsageError);
+  EXPECT_THROW(merge_partial_renders({{"a", a, 0, 4, "f", {}}, {"b", a, 4, 8, "g", {}}}), UsageError);
+  EXPECT_THROW(merge_partial_renders({{"a", a, 0, 4, "f", {}}, {"b", a, 3, 8, "f", {}}}), UsageError);
+  EXPECT_THROW(merge_partial_renders({{"a", a, 4, 4, "f", {}}}), UsageError);
+  const MergedRender gap = merge_partial_renders({{"a", a, 0, 2, "f", {}}, {"b", a, 5, 8, "f", {}}});
   EXPECT_EQ(gap.ranges.size(), 2u);
   EXPECT_EQ(gap.samples, 5);
 }

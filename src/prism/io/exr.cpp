@@ -32,6 +32,17 @@ Imf::FrameBuffer rgb_frame_buffer(float* base, int width, int min_x, int min_y,
   return fb;
 }
 
+// `names.size()` interleaved float channels.
+Imf::FrameBuffer float_frame_buffer(float* base, int width, int min_x, int min_y, const std::vector<std::string>& names) {
+  const std::size_t x_stride = names.size() * sizeof(float), y_stride = x_stride * static_cast<std::size_t>(width);
+  char* origin = reinterpret_cast<char*>(base) - static_cast<std::ptrdiff_t>(min_x) * static_cast<std::ptrdiff_t>(x_stride) -
+                 static_cast<std::ptrdiff_t>(min_y) * static_cast<std::ptrdiff_t>(y_stride);
+  Imf::FrameBuffer fb;
+  for (std::size_t c = 0; c < names.size(); ++c)
+    fb.insert(names[c], Imf::Slice(Imf::FLOAT, origin + c * sizeof(float), x_stride, y_stride, 1, 1, 0.0));
+  return fb;
+}
+
 // The same for half-float pixels (written only; pixels start at (0, 0)).
 Imf::FrameBuffer rgb_half_frame_buffer(half* base, int width) {
   const std::size_t x_stride = 3 * sizeof(half), y_stride = x_stride * static_cast<std::size_t>(width);
@@ -45,15 +56,25 @@ Imf::FrameBuffer rgb_half_frame_buffer(half* base, int width) {
 }  // namespace
 
 void write_exr(const std::filesystem::path& path, const ImageRgbF& image, const ExrChromaticities& c,
-               const ExrMetadata& metadata, const ExrWriteOptions& options) {
+               const ExrMetadata& metadata, const ExrWriteOptions& options,
+               const std::vector<ExrChannelGroup>& extra_channels) {
   if (image.width <= 0 || image.height <= 0 || image.rgb.size() != 3u * image.width * image.height)
     throw IoError(fmt::format("cannot write '{}': image has inconsistent size", path.string()));
+  for (const auto& g : extra_channels)
+    if (g.names.empty() || g.pixels.size() != g.names.size() * image.width * image.height)
+      throw IoError(fmt::format("cannot write '{}': extra channels have inconsistent size", path.string()));
   AtomicFile file(path);
   try {
     Imf::Header header(image.width, image.height);
     header.compression() = Imf::ZIP_COMPRESSION;
     const bool as_half = options.pixel_type == ExrPixelType::half;
     for (const char* name : {"R", "G", "B"}) header.channels().insert(name, Imf::Channel(as_half ? Imf::HALF : Imf::FLOAT));
+    for (const auto& g : extra_channels)
+      for (const auto& name : g.names) {
+        if (header.channels().findChannel(name) != nullptr)
+          throw IoError(fmt::format("channel '{}' is given twice", name));
+        header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+      }
     Imf::addChromaticities(header, Imf::Chromaticities(Imath::V2f(c.red_x, c.red_y), Imath::V2f(c.green_x, c.green_y),
                                                        Imath::V2f(c.blue_x, c.blue_y), Imath::V2f(c.white_x, c.white_y)));
     for (const auto& [k, v] : metadata.strings) header.insert(k, Imf::StringAttribute(v));
@@ -63,13 +84,21 @@ void write_exr(const std::filesystem::path& path, const ImageRgbF& image, const 
     std::vector<float> pixels;
     std::vector<half> half_pixels;
     Imf::OutputFile out(file.temporary_path().c_str(), header);
+    Imf::FrameBuffer fb;
     if (as_half) {
       half_pixels.assign(image.rgb.begin(), image.rgb.end());
-      out.setFrameBuffer(rgb_half_frame_buffer(half_pixels.data(), image.width));
+      fb = rgb_half_frame_buffer(half_pixels.data(), image.width);
     } else {
       pixels = image.rgb;
-      out.setFrameBuffer(rgb_frame_buffer(pixels.data(), image.width, 0, 0));
+      fb = rgb_frame_buffer(pixels.data(), image.width, 0, 0);
     }
+    // OpenEXR only reads through the slices' pointers while writing; the const_cast never
+    // leads to a write.
+    for (const auto& g : extra_channels) {
+      const Imf::FrameBuffer extra = float_frame_buffer(const_cast<float*>(g.pixels.data()), image.width, 0, 0, g.names);
+      for (auto it = extra.begin(); it != extra.end(); ++it) fb.insert(it.name(), it.slice());
+    }
+    out.setFrameBuffer(fb);
     out.writePixels(image.height);
   } catch (const std::exception& e) {
     throw IoError(fmt::format("cannot write '{}': {}", path.string(), e.what()));
@@ -109,6 +138,27 @@ ExrFile read_exr(const std::filesystem::path& path) {
     throw IoError(fmt::format("cannot read '{}': {}", path.string(), e.what()));
   }
   return result;
+}
+
+std::optional<std::vector<float>> read_exr_channels(const std::filesystem::path& path,
+                                                    const std::vector<std::string>& names) {
+  try {
+    Imf::InputFile in(path.c_str());
+    const Imf::Header& header = in.header();
+    for (const auto& n : names)
+      if (header.channels().findChannel(n) == nullptr) return std::nullopt;
+    const Imath::Box2i dw = header.dataWindow();
+    const long width = static_cast<long>(dw.max.x) - dw.min.x + 1, height = static_cast<long>(dw.max.y) - dw.min.y + 1;
+    constexpr long kMaxSide = 32768;  // the same limit as read_exr
+    if (width <= 0 || height <= 0 || width > kMaxSide || height > kMaxSide)
+      throw IoError(fmt::format("image size {}x{} is out of range", width, height));
+    std::vector<float> pixels(names.size() * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0.0f);
+    in.setFrameBuffer(float_frame_buffer(pixels.data(), static_cast<int>(width), dw.min.x, dw.min.y, names));
+    in.readPixels(dw.min.y, dw.max.y);
+    return pixels;
+  } catch (const std::exception& e) {
+    throw IoError(fmt::format("cannot read '{}': {}", path.string(), e.what()));
+  }
 }
 
 std::optional<ImageRgbF> read_exr_vector_layer(const std::filesystem::path& path, const std::string& name) {

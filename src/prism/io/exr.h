@@ -5,6 +5,7 @@
 #include <map>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "prism/io/image.h"
 
@@ -29,10 +30,19 @@ struct ExrWriteOptions {
   std::optional<double> white_luminance_nits;
 };
 
+// Channels written beside the beauty's R, G, B (AOVs), always as 32-bit float whatever
+// ExrWriteOptions::pixel_type says: `names` are full OpenEXR channel names, "layer.channel"
+// for a channel of a layer ("albedo.R") or a bare name for the default layer ("Z"); `pixels`
+// holds names.size() interleaved values per pixel, row-major from the top-left pixel.
+struct ExrChannelGroup {
+  std::vector<std::string> names;
+  std::vector<float> pixels;
+};
+
 // Writes atomically (temporary file + rename). Throws IoError.
 void write_exr(const std::filesystem::path& path, const ImageRgbF& image,
                const ExrChromaticities& chromaticities, const ExrMetadata& metadata = {},
-               const ExrWriteOptions& options = {});
+               const ExrWriteOptions& options = {}, const std::vector<ExrChannelGroup>& extra_channels = {});
 
 struct ExrFile {
   ImageRgbF image;
@@ -43,6 +53,11 @@ struct ExrFile {
 
 // Reads R, G, B channels (missing channels read as 0). Throws IoError on any failure.
 ExrFile read_exr(const std::filesystem::path& path);
+
+// The channels `names` (full names), interleaved as ExrChannelGroup::pixels, or nothing when
+// the file lacks any of them. Throws IoError.
+std::optional<std::vector<float>> read_exr_channels(const std::filesystem::path& path,
+                                                    const std::vector<std::string>& names);
 
 // The layer `name`.x, `name`.y, `name`.z of an EXR (e.g. the shading-normal AOV "N") as a
 // three-channel image, or nothing when the file lacks any of the three. Throws IoError.

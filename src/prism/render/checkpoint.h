@@ -3,9 +3,12 @@
 // counts), the next sample index and the image fingerprint, so that `prism render
 // --resume` continues to a result bitwise identical to an uninterrupted render.
 //
-// Layout (little-endian): "PRISMCKP", u32 version, u64 fingerprint, i32 width, i32 height,
-// i32 first_sample, i32 next_sample, then width·height × (3 f64 sums, 3 f64 squared sums,
-// u32 count), then the u64 FNV-1a hash of everything before it.
+// Layout (little-endian), version 2: "PRISMCKP", u32 version, u64 fingerprint, i32 width,
+// i32 height, i32 first_sample, i32 next_sample, u32 AOV bits (AovSet::bits), then
+// width·height × (3 f64 sums, 3 f64 squared sums, u32 count, and for each AOV present:
+// albedo 3 f64 sums; normal 3 f64 sums; depth f64 sum, u32 hits), then the u64 FNV-1a hash
+// of everything before it. Version 1 (no AOV bits or sums) is refused with a message
+// naming the version: its renders can be finished only by the Prism that wrote them.
 #include <cstdint>
 #include <filesystem>
 

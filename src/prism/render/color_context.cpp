@@ -41,7 +41,8 @@ color::ColorSpace film_color_space(const TransportSettings& settings) {
 
 template <int N>
 ColorContext<SpectralMode<N>>::ColorContext(const Scene& scene, const TransportSettings& settings)
-    : settings_(settings) {
+    : settings_(settings),
+      srgb_to_film_(color::conversion_matrix(color::color_space("srgb"), film_color_space(settings))) {
   const color::JakobHanikaTable& table = color::JakobHanikaTable::get("srgb");
   for (const Material& m : scene.materials) {
     base_color_jh_.push_back(table.lookup(Vec3d(m.base_color)));

@@ -50,6 +50,9 @@ class ColorContext<SpectralMode<N>> {
   // the table's D65 fit for E.
   Spectrum<Mode> rgb_radiance(const Vec3f& linear_rec709_nits, const Wavelengths<Mode>& w) const;
   Vec3d to_film(const Spectrum<Mode>& value, const Wavelengths<Mode>& w) const;
+  // A linear Rec.709 reflectance (the albedo AOV) as film values: CIE XYZ relative to E,
+  // with Bradford adaptation from D65, so a white reflector is (1, 1, 1).
+  Vec3d reflectance_to_film(const Vec3f& linear_srgb) const { return srgb_to_film_ * Vec3d(linear_srgb); }
   // Keeps only channel 0's wavelength after a dispersive event (hero wavelength, Wilkie
   // et al. 2014): the other channels' pdfs become 0 and channel 0's estimate must become
   // the one-sample estimator f(λ0)/p0(λ0), with p0 the density λ0 was actually drawn with
@@ -60,6 +63,7 @@ class ColorContext<SpectralMode<N>> {
 
  private:
   TransportSettings settings_;
+  Mat3 srgb_to_film_;
   std::vector<color::SigmoidPolynomial> base_color_jh_;
   std::vector<Vec3d> base_color_rgb_;
   std::vector<color::EmissionSpectrum> emitters_;
@@ -79,6 +83,8 @@ class ColorContext<RgbMode> {
     return reflectance(linear_rec709_nits, w);  // the same sRGB → working conversion
   }
   Vec3d to_film(const Spectrum<Mode>& value, const Wavelengths<Mode>&) const { return {value[0], value[1], value[2]}; }
+  // A linear Rec.709 reflectance (the albedo AOV) in the working space.
+  Vec3d reflectance_to_film(const Vec3f& linear_srgb) const { return srgb_to_working_ * Vec3d(linear_srgb); }
   void terminate_secondary(Wavelengths<Mode>&) const {}
 
  private:

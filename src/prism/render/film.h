@@ -2,20 +2,31 @@
 // Accumulation buffer: per-pixel sums of radiance and of its square (for a per-pixel
 // variance estimate) in double precision, and per-pixel sample counts. Each pixel is only
 // ever written by one thread at a time, in sample order, so sums are deterministic.
+// Optional AOV sums (aov.h) are kept only for the AOVs a render asks for.
 #include <cstdint>
 #include <vector>
 
 #include "prism/core/vec.h"
+#include "prism/render/aov.h"
 
 namespace prism {
+
+// Raw AOV state: sums over the pixel's samples (albedo, normal, depth over the samples
+// that hit) and the number of samples that hit. Vectors of AOVs not in `set` are empty.
+struct FilmAovSums {
+  AovSet set;
+  std::vector<Vec3d> albedo, normal;
+  std::vector<double> depth;
+  std::vector<std::uint32_t> depth_hits;
+};
 
 class Film {
  public:
   Film() = default;
-  Film(int width, int height);
+  Film(int width, int height, AovSet aovs = {});
   // Restores a film from its raw state (checkpoints, merging). Sizes must match.
   Film(int width, int height, std::vector<Vec3d> sums, std::vector<Vec3d> sum_squares,
-       std::vector<std::uint32_t> counts);
+       std::vector<std::uint32_t> counts, FilmAovSums aovs = {});
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -25,6 +36,16 @@ class Film {
     sum_[pixel] += v;
     sum_squares_[pixel] += v * v;
     ++count_[pixel];
+  }
+
+  // Adds the AOVs of the sample just given to add_sample (they share its count).
+  void add_aov_sample(std::size_t pixel, const AovSample& a) {
+    if (aov_.set.albedo) aov_.albedo[pixel] += Vec3d(a.albedo);
+    if (aov_.set.normal) aov_.normal[pixel] += Vec3d(a.normal);
+    if (aov_.set.depth && a.hit) {
+      aov_.depth[pixel] += a.depth_scene_units;
+      ++aov_.depth_hits[pixel];
+    }
   }
 
   std::uint32_t sample_count(std::size_t pixel) const { return count_[pixel]; }
@@ -41,10 +62,22 @@ class Film {
   // Interleaved RGB means in single precision, row-major from the top-left pixel.
   std::vector<float> mean_rgb() const;
 
+  const AovSet& aovs() const { return aov_.set; }
+  const FilmAovSums& aov_sums() const { return aov_; }
+  // Pixel means of the AOVs (zero without samples); only for AOVs in aovs().
+  Vec3d albedo_mean(std::size_t pixel) const;
+  Vec3d normal_mean(std::size_t pixel) const;
+  // Mean over the samples that hit a surface; +inf when none did.
+  double depth_mean(std::size_t pixel) const;
+  // Fraction of the pixel's samples whose camera ray hit a surface (what depth averages
+  // over; `prism merge` weights depth by it).
+  double depth_coverage(std::size_t pixel) const;
+
  private:
   int width_ = 0, height_ = 0;
   std::vector<Vec3d> sum_, sum_squares_;
   std::vector<std::uint32_t> count_;
+  FilmAovSums aov_;
 };
 
 }  // namespace prism

@@ -12,6 +12,8 @@
 namespace prism {
 namespace {
 
+static_assert(sizeof(AovSample) <= kAovSlotBytesPerPixel, "the memory estimate must cover the first-hit record");
+
 std::uint64_t mesh_bytes(const TriangleMesh& m) {
   return m.positions.size() * sizeof(Vec3f) + m.normals.size() * sizeof(Vec3f) + m.uvs.size() * sizeof(Vec2f) +
          m.tangents.size() * sizeof(Vec3f) + m.indices.size() * sizeof(std::uint32_t);
@@ -23,9 +25,13 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderSettings& 
   MemoryEstimate e;
   const std::uint64_t pixels = static_cast<std::uint64_t>(settings.width > 0 ? settings.width : 0) *
                                static_cast<std::uint64_t>(settings.height > 0 ? settings.height : 0);
-  e.film = pixels * kFilmBytesPerPixel;
-  e.path_pool = pixels * kPathPoolBytesPerPixel;
-  e.images = pixels * kImageBytesPerPixel;
+  const AovSet& a = settings.aovs;
+  const std::uint64_t aov_film = (a.albedo ? kAlbedoBytesPerPixel : 0) + (a.normal ? kNormalBytesPerPixel : 0) +
+                                 (a.depth ? kDepthBytesPerPixel : 0);
+  const std::uint64_t aov_channels = (a.albedo ? 3 : 0) + (a.normal ? 3 : 0) + (a.depth ? 2 : 0);  // Z + coverage
+  e.film = pixels * (kFilmBytesPerPixel + aov_film);
+  e.path_pool = pixels * (kPathPoolBytesPerPixel + (a.any() ? kAovSlotBytesPerPixel : 0));
+  e.images = pixels * (kImageBytesPerPixel + aov_channels * kAovImageBytesPerChannel);
 
   // The loaded texels, the flattened scene's copy and a mip pyramid (4/3 of the image).
   std::uint64_t texels = 0;

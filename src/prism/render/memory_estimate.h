@@ -12,7 +12,7 @@
 namespace prism {
 
 struct MemoryEstimate {
-  std::uint64_t film = 0;       // sums, squared sums (2 × Vec3d) and counts (u32) per pixel
+  std::uint64_t film = 0;       // sums, squared sums (2 × Vec3d) and counts (u32) per pixel, plus AOV sums
   std::uint64_t path_pool = 0;  // wavefront path state, about 250 B per pixel
   std::uint64_t images = 0;     // output conversion buffers (float RGB per pixel, twice)
   std::uint64_t textures = 0;   // loaded texels, the renderer's copy and mip pyramids
@@ -22,8 +22,16 @@ struct MemoryEstimate {
 
 // Bytes per pixel and per triangle the estimate assumes (documented in docs/reliability.md).
 inline constexpr std::uint64_t kFilmBytesPerPixel = 2 * 3 * sizeof(double) + sizeof(std::uint32_t);
+// AOV sums per pixel (film.h FilmAovSums) and the per-slot first-hit record (aov.h) the
+// integrator keeps while any AOV is on.
+inline constexpr std::uint64_t kAlbedoBytesPerPixel = 3 * sizeof(double);
+inline constexpr std::uint64_t kNormalBytesPerPixel = 3 * sizeof(double);
+inline constexpr std::uint64_t kDepthBytesPerPixel = sizeof(double) + sizeof(std::uint32_t);
+inline constexpr std::uint64_t kAovSlotBytesPerPixel = 32;  // sizeof(AovSample), checked in memory_estimate.cpp
 inline constexpr std::uint64_t kPathPoolBytesPerPixel = 250;
 inline constexpr std::uint64_t kImageBytesPerPixel = 2 * 3 * sizeof(float);
+// Output conversion buffers per AOV channel (one float image per channel, like the beauty).
+inline constexpr std::uint64_t kAovImageBytesPerChannel = sizeof(float);
 inline constexpr std::uint64_t kBvhBytesPerTriangle = 96;  // Embree BVH4 with triangle data
 
 MemoryEstimate estimate_render_memory(const Scene& scene, const RenderSettings& settings);

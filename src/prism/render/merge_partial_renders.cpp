@@ -1,12 +1,76 @@
 #include "prism/render/merge_partial_renders.h"
 
 #include <algorithm>
+#include <limits>
 
 #include <fmt/format.h>
 
 #include "prism/core/error.h"
 
 namespace prism {
+namespace {
+
+// Σ w_p x_p / Σ w_p per value, in double.
+std::vector<float> weighted_mean(const std::vector<PartialRender>& parts, const std::vector<float> AovImages::*channel) {
+  const std::size_t size = (parts.front().aovs.*channel).size();
+  std::vector<double> sum(size, 0.0);
+  double total = 0.0;
+  for (const auto& p : parts) {
+    const double weight = p.sample_end - p.sample_begin;
+    const std::vector<float>& v = p.aovs.*channel;
+    for (std::size_t i = 0; i < size; ++i) sum[i] += weight * v[i];
+    total += weight;
+  }
+  std::vector<float> out(size);
+  for (std::size_t i = 0; i < size; ++i) out[i] = static_cast<float>(sum[i] / total);
+  return out;
+}
+
+ImageRgbF weighted_mean(const std::vector<PartialRender>& parts, ImageRgbF AovImages::*layer) {
+  const ImageRgbF& first = parts.front().aovs.*layer;
+  std::vector<double> sum(first.rgb.size(), 0.0);
+  double total = 0.0;
+  for (const auto& p : parts) {
+    const double weight = p.sample_end - p.sample_begin;
+    const ImageRgbF& v = p.aovs.*layer;
+    for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += weight * v.rgb[i];
+    total += weight;
+  }
+  ImageRgbF out{first.width, first.height, std::vector<float>(sum.size())};
+  for (std::size_t i = 0; i < sum.size(); ++i) out.rgb[i] = static_cast<float>(sum[i] / total);
+  return out;
+}
+
+// Depth is the mean over the samples that hit: each part counts with samples × coverage
+// (its number of hits); a pixel no part hit stays +inf.
+std::vector<float> merged_depth(const std::vector<PartialRender>& parts) {
+  const std::size_t size = parts.front().aovs.depth.size();
+  std::vector<double> sum(size, 0.0), hits(size, 0.0);
+  for (const auto& p : parts) {
+    const double samples = p.sample_end - p.sample_begin;
+    for (std::size_t i = 0; i < size; ++i) {
+      const double h = samples * p.aovs.depth_coverage[i];
+      if (h > 0.0) {
+        sum[i] += h * p.aovs.depth[i];
+        hits[i] += h;
+      }
+    }
+  }
+  std::vector<float> out(size);
+  for (std::size_t i = 0; i < size; ++i)
+    out[i] = hits[i] > 0.0 ? static_cast<float>(sum[i] / hits[i]) : std::numeric_limits<float>::infinity();
+  return out;
+}
+
+void check_aov_sizes(const PartialRender& p) {
+  const std::size_t pixels = static_cast<std::size_t>(p.image.width) * static_cast<std::size_t>(p.image.height);
+  const AovImages& a = p.aovs;
+  const bool ok = (!a.set.albedo || a.albedo.rgb.size() == 3 * pixels) && (!a.set.normal || a.normal.rgb.size() == 3 * pixels) &&
+                  (!a.set.depth || (a.depth.size() == pixels && a.depth_coverage.size() == pixels));
+  if (!ok) throw UsageError(fmt::format("'{}' has AOV layers of the wrong size", p.name));
+}
+
+}  // namespace
 
 MergedRender merge_partial_renders(const std::vector<PartialRender>& parts) {
   if (parts.empty()) throw UsageError("nothing to merge");
@@ -18,6 +82,10 @@ MergedRender merge_partial_renders(const std::vector<PartialRender>& parts) {
                                    first.name, first.image.width, first.image.height));
     if (p.fingerprint != first.fingerprint)
       throw UsageError(fmt::format("'{}' was rendered from a different scene or settings than '{}'", p.name, first.name));
+    if (p.aovs.set != first.aovs.set)
+      throw UsageError(fmt::format("'{}' holds the AOVs '{}' but '{}' holds '{}'", p.name, format_aov_list(p.aovs.set),
+                                   first.name, format_aov_list(first.aovs.set)));
+    check_aov_sizes(p);
     if (p.sample_end <= p.sample_begin)
       throw UsageError(fmt::format("'{}' holds no samples (range {}:{})", p.name, p.sample_begin, p.sample_end));
     ranges.emplace_back(p.sample_begin, p.sample_end);
@@ -41,6 +109,13 @@ MergedRender merge_partial_renders(const std::vector<PartialRender>& parts) {
   }
   merged.image = ImageRgbF{first.image.width, first.image.height, std::vector<float>(sum.size())};
   for (std::size_t i = 0; i < sum.size(); ++i) merged.image.rgb[i] = static_cast<float>(sum[i] / merged.samples);
+  merged.aovs.set = first.aovs.set;
+  if (first.aovs.set.albedo) merged.aovs.albedo = weighted_mean(parts, &AovImages::albedo);
+  if (first.aovs.set.normal) merged.aovs.normal = weighted_mean(parts, &AovImages::normal);
+  if (first.aovs.set.depth) {
+    merged.aovs.depth = merged_depth(parts);
+    merged.aovs.depth_coverage = weighted_mean(parts, &AovImages::depth_coverage);
+  }
   return merged;
 }
 

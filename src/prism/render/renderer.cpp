@@ -94,6 +94,8 @@ std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settin
     h.value(l.color);
     h.value(l.intensity);
   }
+  // Only when requested, so renders without AOVs keep the fingerprints of earlier versions.
+  if (settings.aovs.any()) h.value(settings.aovs.bits());
   return h.digest();
 }
 
@@ -192,10 +194,13 @@ RenderResult render(const PreparedScene& prepared, const RenderSettings& setting
     if (resume->next_sample < settings.first_sample || resume->next_sample > settings.samples_per_pixel)
       throw UsageError(fmt::format("checkpoint ends at sample {}, outside the requested range {}:{}",
                                    resume->next_sample, settings.first_sample, settings.samples_per_pixel));
+    if (resume->film.aovs() != settings.aovs)
+      throw UsageError(fmt::format("checkpoint film keeps the AOVs '{}' but the render asks for '{}'",
+                                   format_aov_list(resume->film.aovs()), format_aov_list(settings.aovs)));
     result.film = resume->film;
     next_sample = resume->next_sample;
   } else {
-    result.film = Film(settings.width, settings.height);
+    result.film = Film(settings.width, settings.height, settings.aovs);
   }
 
   const TransportSettings& t = settings.transport;

@@ -28,6 +28,7 @@ struct RenderSettings {
   TransportSettings transport;
   int samples_per_pass = 0;         // 0: sized from the measured speed (about 0.5 s a pass)
   bool regenerate_paths = true;     // off: one wave per sample (for measuring the benefit)
+  AovSet aovs;                      // first-hit AOVs the film keeps (aov.h); none by default
   // Refuse (Error) before allocating when estimate_render_memory() exceeds this
   // (memory_estimate.h); 0: 90 % of physical memory.
   std::uint64_t memory_limit_bytes = 0;
@@ -37,8 +38,9 @@ struct RenderSettings {
 void validate_render_settings(const RenderSettings& settings);
 
 // A fingerprint of everything that determines the pixel values of sample i: the scene,
-// image size, seed and path settings (not spp, threads or time limits). Checkpoints and
-// partial renders carry it so that only compatible states are resumed or merged.
+// image size, seed and path settings (not spp, threads or time limits), and the AOV set
+// when it is not empty (the files then hold more layers). Checkpoints and partial renders
+// carry it so that only compatible states are resumed or merged.
 std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settings);
 
 struct RenderProgress {

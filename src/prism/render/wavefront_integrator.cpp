@@ -56,17 +56,23 @@ WavefrontIntegrator<Mode>::~WavefrontIntegrator() = default;
 template <class Mode>
 Spectrum<Mode> WavefrontIntegrator<Mode>::base_color(const Material& m, const SurfaceInteraction& si, float cone_width,
                                                      const Ray& ray, const Wavelengths<Mode>& wl) const {
+  if (const auto rgb = textured_base_color(m, si, cone_width, ray)) return colors_.reflectance(*rgb, wl);
+  return colors_.base_color(si.material, wl);
+}
+
+template <class Mode>
+std::optional<Vec3f> WavefrontIntegrator<Mode>::textured_base_color(const Material& m, const SurfaceInteraction& si,
+                                                                   float cone_width, const Ray& ray) const {
   const int t = m.base_color_texture;
   const TriangleMesh& mesh = scene_.meshes[si.mesh];
-  if (t < 0 || static_cast<std::size_t>(t) >= textures_.size() || mesh.uvs.empty())
-    return colors_.base_color(si.material, wl);
+  if (t < 0 || static_cast<std::size_t>(t) >= textures_.size() || mesh.uvs.empty()) return std::nullopt;
   const TextureImage& image = scene_.textures[static_cast<std::size_t>(t)];
   const float lod = mip_level_from_ray_cone(textures_[static_cast<std::size_t>(t)], cone_width,
                                             std::abs(dot(ray.direction, si.geometric_normal)), si.uv_area, si.world_area);
   const TexelRgba texel = sample_trilinear(textures_[static_cast<std::size_t>(t)], apply_uv_transform(image, si.uv), lod);
   // Grey and two-channel textures carry luminance in their first channel.
   const Vec3f rgb = image.channels >= 3 ? Vec3f(texel[0], texel[1], texel[2]) : Vec3f(texel[0]);
-  return colors_.reflectance(rgb * m.base_color, wl);
+  return rgb * m.base_color;
 }
 
 template <class Mode>
@@ -101,6 +107,8 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   const Ray& ray = p.ray[slot];
   const bool use_nee = settings_.estimator != LightEstimator::bsdf_only && !lights_.empty();
   const bool weight_bsdf_hits = settings_.estimator == LightEstimator::mis;
+  if (p.depth[slot] == 0 && !first_hit_aovs_.empty())
+    record_first_hit_aovs(slot, ray, p.hit_found[slot] ? &p.hit[slot] : nullptr, p.cone_spread[slot]);
 
   if (!p.hit_found[slot]) {
     // Escaped: only directional lights with an angular size can be hit.
@@ -240,6 +248,7 @@ template <class Mode>
 PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t first_sample, std::uint32_t count) {
   const auto slots = static_cast<std::uint32_t>(film.pixel_count());
   Paths& p = *paths_;
+  first_hit_aovs_.resize(film.aovs().any() ? slots : 0u);
   std::vector<std::uint32_t> live(slots);
   for (std::uint32_t s = 0; s < slots; ++s) live[s] = s;
   parallel_for(slots, 4096, [&](std::size_t b, std::size_t e) {
@@ -292,6 +301,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
             const Vec3d value = colors_.to_film(p.radiance[s], p.wavelengths[s]);
             if (is_finite(value)) {
               film.add_sample(s, value);
+              if (!first_hit_aovs_.empty()) film.add_aov_sample(s, first_hit_aovs_[s]);
             } else {
               ++local_invalid;  // never written to the film; reported at the end
             }

@@ -13,9 +13,11 @@
 #include <atomic>
 #include <memory>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "prism/accel/embree_accel.h"
+#include "prism/render/aov.h"
 #include "prism/render/color_context.h"
 #include "prism/render/film.h"
 #include "prism/render/material_bsdf.h"
@@ -66,9 +68,19 @@ class WavefrontIntegrator {
   void shade(Paths& paths, std::uint32_t slot) const;
   Spectrum<Mode> base_color(const Material& material, const SurfaceInteraction& si, float cone_width,
                             const Ray& ray, const Wavelengths<Mode>& wl) const;
+  // Base colour × texel (linear Rec.709) of a textured material; nothing when untextured.
+  std::optional<Vec3f> textured_base_color(const Material& material, const SurfaceInteraction& si, float cone_width,
+                                           const Ray& ray) const;
+  // Writes first_hit_aovs_[slot] for a camera ray (wavefront_integrator_aovs.cpp); `hit`
+  // is null when the ray escaped.
+  void record_first_hit_aovs(std::uint32_t slot, const Ray& ray, const Hit* hit, float cone_spread) const;
   PassStatistics run_wave(Film& film, std::uint32_t first_sample, std::uint32_t count);
 
   std::unique_ptr<Paths> paths_;  // allocated once, reused by every wave
+  // Per slot: the AOVs of its current sample, written by shade() at depth 0 (each slot by
+  // the one thread shading it) and added to the film with the sample. Empty unless the
+  // film keeps AOVs.
+  mutable std::vector<AovSample> first_hit_aovs_;
   MaterialTables tables_;
   std::vector<MipPyramid> textures_;  // one per Scene::textures entry
   const Scene& scene_;

@@ -91,8 +91,13 @@ void fill_frame(const DisplayJob& job, DisplayFrame& out) {
       to_rgba8(display::canvas_to_srgb8(display::chromaticity_diagram(film, space, shown)), out);
       return;
     }
-    case DebugView::normal:
-      throw UsageError("the normal view needs a shading-normal AOV, which the interactive film does not keep");
+    case DebugView::normal: {
+      if (!job.film->normals) throw UsageError("the normal view needs the film's shading-normal AOV");
+      display::Canvas canvas(job.film->normals->width, job.film->normals->height, {0, 0, 0});
+      canvas.image = display::normal_view(*job.film->normals);
+      to_rgba8(display::canvas_to_srgb8(canvas), out);
+      return;
+    }
   }
 }
 

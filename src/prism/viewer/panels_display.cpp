@@ -92,8 +92,7 @@ bool primaries_section(display::DisplaySettings& s) {
 
 bool view_section(DisplayControls& c) {
   std::vector<std::string> names{"none"};
-  for (const std::string& n : display::debug_view_names())
-    if (n != "normal") names.push_back(n);  // the interactive film keeps no normal AOV
+  for (const std::string& n : display::debug_view_names()) names.push_back(n);
   int index = 0;
   for (std::size_t i = 1; i < names.size(); ++i)
     if (display::parse_debug_view(names[i]) == c.view) index = static_cast<int>(i);

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <exception>
 
+#include "prism/render/aov_images.h"
 #include "prism/render/color_context.h"
 
 namespace prism::viewer {
@@ -106,6 +107,7 @@ void RenderSession::render_one(const RenderRequest& request, std::uint64_t gener
     auto frame = std::make_shared<FilmFrame>();
     frame->generation = generation;
     frame->film = ImageRgbF{film.width(), film.height(), film.mean_rgb()};
+    if (film.aovs().normal) frame->normals = film_aov_images(film, Mat3::identity()).normal;
     frame->film_space = film_space;
     frame->passes = groups;
     frame->spp = next_sample - request.settings.first_sample;

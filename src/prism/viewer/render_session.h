@@ -34,6 +34,7 @@ struct FilmFrame {
   std::uint64_t generation = 0;  // which restart this belongs to
   std::uint64_t serial = 0;      // increases with every published frame
   ImageRgbF film;                // scene-linear means in film_space
+  std::optional<ImageRgbF> normals;  // the normal AOV (world space), when the film keeps it
   color::ColorSpace film_space;
   int passes = 0;                // progressive updates (groups of samples_per_pass samples)
   int spp = 0;                   // samples per pixel in the film

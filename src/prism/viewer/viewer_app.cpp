@@ -88,11 +88,15 @@ class ViewerApp {
     s.threads = options.threads;
     s.transport.kind = options.mode == "rgb" ? TransportKind::rgb : TransportKind::spectral;
     s.samples_per_pixel = options.frames > 0 ? options.frames * s.samples_per_pass : kContinuousSpp;
+    // The film always keeps the normal AOV, so the normal debug view needs no restart; it
+    // costs one surface evaluation per camera ray and 56 bytes per pixel.
+    s.aovs.normal = true;
     render_.resolution_scale = std::clamp(options.resolution_scale, 0.125, 1.0);
     render_.camera = orbit_pivot_camera(scene);
     render_.materials = scene.materials;
     render_.lights = scene.lights;
     display_.settings.odt = display::parse_odt(options.odt);
+    if (!options.view.empty()) display_.view = display::parse_debug_view(options.view);
     if (options.ev100) {
       display_.auto_exposure = false;
       display_.ev100 = *options.ev100;
@@ -321,6 +325,7 @@ int run_viewer(const ViewerOptions& options) {
   if (!options.screenshot.empty() && options.frames <= 0) throw UsageError("--screenshot needs --frames N");
   if (options.mode != "spectral" && options.mode != "rgb") throw UsageError("--mode must be spectral or rgb");
   display::parse_odt(options.odt);
+  if (!options.view.empty()) display::parse_debug_view(options.view);
   // The display check comes first: without one there is nothing to show the scene in.
   ViewerWindow window(options.window_width, options.window_height, "Prism - " + options.scene);
   Scene scene = load_scene(options.scene, LoadOptions{.allow_external_paths = options.allow_external_paths});

@@ -14,6 +14,7 @@ struct ViewerOptions {
   std::string screenshot;          // with frames: write what the window shows (PNG)
   std::optional<double> ev100;     // initial exposure; none: auto exposure
   std::string odt = "srgb-100nit";
+  std::string view;                // initial debug view (display/debug_views.h); empty: none
   std::string mode = "spectral";   // spectral | rgb
   int samples_per_pass = 1;
   int max_depth = 8;

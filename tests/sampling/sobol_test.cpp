@@ -23,13 +23,15 @@ TEST(Sobol, FirstPointsAreTheKnownSequence) {
   }
 }
 
-TEST(Sobol, ClosedFormDimensionZeroEqualsItsMatrix) {
-  const auto columns = sobol_generator_matrix(0);
-  for (std::uint32_t i : {0u, 1u, 6u, 0x80000001u, 0xdeadbeefu, 0xffffffffu}) {
-    std::uint32_t x = 0;
-    for (int j = 0; j < 32; ++j)
-      if ((i >> j) & 1u) x ^= columns[static_cast<std::size_t>(j)];
-    EXPECT_EQ(sobol_sample_bits(i, 0), x) << i;
+TEST(Sobol, FastProductsEqualTheMatrixProduct) {
+  for (int dimension : {0, 1}) {
+    const auto columns = sobol_generator_matrix(dimension);
+    for (std::uint32_t i : {0u, 1u, 6u, 255u, 256u, 0x80000001u, 0xdeadbeefu, 0xffffffffu}) {
+      std::uint32_t x = 0;
+      for (int j = 0; j < 32; ++j)
+        if ((i >> j) & 1u) x ^= columns[static_cast<std::size_t>(j)];
+      EXPECT_EQ(sobol_sample_bits(i, dimension), x) << "dim " << dimension << " index " << i;
+    }
   }
 }
 

@@ -14,6 +14,7 @@ struct ViewerOptions {
   std::optional<double> ev100;     // initial exposure; none: auto exposure
   std::string odt = "srgb-100nit";
   std::string mode = "spectral";   // spectral | rgb
+  std::string sampler;             // independent | sobol | zsobol; empty: the renderer's default
   int samples_per_pass = 1;
   int max_depth = 8;
   int threads = 0;

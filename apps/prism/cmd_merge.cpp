@@ -46,6 +46,8 @@ int run_merge(const MergeOptions& o) {
   meta.strings["prism:fingerprint"] = parts.front().fingerprint;
   if (first_file.metadata.strings.contains("prism:scene"))
     meta.strings["prism:scene"] = first_file.metadata.strings.at("prism:scene");
+  if (first_file.metadata.strings.contains("prism:sampler"))
+    meta.strings["prism:sampler"] = first_file.metadata.strings.at("prism:sampler");  // the fingerprint covers it
   meta.ints["prism:spp"] = merged.samples;
   if (merged.aovs.set.any()) meta.strings["prism:aovs"] = format_aov_list(merged.aovs.set);
   // A contiguous union can be merged again with further parts; otherwise list the ranges.

@@ -45,6 +45,7 @@ struct RenderOptions {
   double time_limit_seconds = 0.0;
   int width = 0, height = 0;  // 0: the scene's default
   std::string estimator = "mis";
+  std::string sampler = std::string(sampler_name(PathSettings{}.sampler));
   std::string mode = "spectral";
   int wavelengths = 4;
   std::string wavelength_sampling = "cosh3";
@@ -100,6 +101,11 @@ LightEstimator parse_estimator(const std::string& name) {
   throw UsageError(fmt::format("unknown --estimator '{}' (mis, nee, bsdf)", name));
 }
 
+SamplerKind parse_sampler_option(const std::string& name) {
+  if (const auto kind = parse_sampler(name)) return *kind;
+  throw UsageError(fmt::format("unknown --sampler '{}' (independent, sobol, zsobol)", name));
+}
+
 // SIGINT/SIGTERM ask the render to stop after the current row; a second signal uses the
 // default action (immediate exit). Outputs are written atomically, so an immediate exit
 // never leaves a truncated image.
@@ -141,6 +147,7 @@ void write_outputs(const std::vector<std::filesystem::path>& outputs, const Rend
       meta.strings["prism:version"] = kVersion;
       meta.strings["prism:scene"] = scene_name;
       meta.strings["prism:transport"] = describe(settings.transport);
+      meta.strings["prism:sampler"] = std::string(sampler_name(settings.path.sampler));
       meta.ints["prism:spp"] = result.passes_done;
       meta.doubles["prism:renderSeconds"] = result.elapsed_seconds;
       // What `prism merge` needs to combine partial renders of one image.
@@ -168,6 +175,7 @@ int run_render(const RenderOptions& o) {
   settings.samples_per_pixel = o.spp;
   settings.path.max_depth = o.max_depth;
   settings.path.estimator = parse_estimator(o.estimator);
+  settings.path.sampler = parse_sampler_option(o.sampler);
   if (o.mode != "spectral" && o.mode != "rgb") throw UsageError(fmt::format("unknown --mode '{}' (spectral, rgb)", o.mode));
   settings.transport.kind = o.mode == "rgb" ? TransportKind::rgb : TransportKind::spectral;
   settings.transport.wavelengths = o.wavelengths;
@@ -321,6 +329,11 @@ void add_render_command(CLI::App& root, Action& action) {
   cmd->add_option("--estimator", options->estimator,
                   "Direct-light estimator: mis (NEE + BSDF sampling, power heuristic), nee (light sampling only), "
                   "bsdf (BSDF sampling only); all converge to the same image")
+      ->capture_default_str();
+  cmd->add_option("--sampler", options->sampler,
+                  "Random numbers of each path: independent (PCG32), sobol (padded Owen-scrambled Sobol', "
+                  "stratified per pixel) or zsobol (blue-noise ordering across pixels, one layer per sample); "
+                  "every choice is deterministic per (seed, pixel, sample, dimension)")
       ->capture_default_str();
   cmd->add_option("--mode", options->mode,
                   "Transport: spectral (N wavelengths per path, film in CIE XYZ) or rgb (in --working-space)")

@@ -22,6 +22,7 @@ void add_view_command(CLI::App& root, Action& action) {
                   "Initial debug view: normal (shading-normal AOV as 0.5 + 0.5·N), luminance, luminance-display, "
                   "gamut-clip, sdr-hdr-split, chromaticity");
   cmd->add_option("--mode", o->mode, "Initial transport: spectral or rgb")->capture_default_str();
+  cmd->add_option("--sampler", o->sampler, "Random numbers of each path: independent, sobol or zsobol (default: as render)");
   cmd->add_option("--samples-per-pass", o->samples_per_pass, "Samples per pixel per displayed pass")
       ->capture_default_str();
   cmd->add_option("--max-depth", o->max_depth, "Maximum number of bounces")->capture_default_str();

@@ -10,6 +10,8 @@ const std::vector<SuiteEntry>& all_suites() {
       {"convergence", "relMSE vs time/spp and chromaticity error vs spp per wavelength strategy", run_convergence_suite},
       {"efficiency", "1/(time x relMSE) on the 512^2 Cornell box as a ratio to pbrt-v4's figure quoted in issue 8",
        run_efficiency_suite},
+      {"sampler", "RMSE vs a 4096-spp reference per --sampler (independent, sobol, zsobol) at equal spp and equal time",
+       run_sampler_suite},
       {"display", "4K exposure+ACES SDR and 1000-nit PQ, Mpixels/s vs OpenColorIO's CPU processor", run_display_suite},
       {"scaling", "samples/s with 1 and 2 threads (parallel efficiency)", run_scaling_suite},
       {"startup", "scene build + BVH build time and peak RSS for a generated large mesh", run_startup_suite},

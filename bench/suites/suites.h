@@ -38,5 +38,6 @@ SuiteReport run_display_suite(const BenchOptions& options);
 SuiteReport run_scaling_suite(const BenchOptions& options);
 SuiteReport run_startup_suite(const BenchOptions& options);
 SuiteReport run_efficiency_suite(const BenchOptions& options);
+SuiteReport run_sampler_suite(const BenchOptions& options);
 
 }  // namespace prism::bench

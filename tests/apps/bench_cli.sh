@@ -16,7 +16,7 @@ if "$prism" bench --list 2>&1 | grep -q "without the bench suites"; then
 fi
 suites=$("$prism" bench --list | awk '{print $1}')
 [ -n "$suites" ] || fail "bench --list printed no suites"
-for expected in limit throughput steadiness convergence display scaling startup efficiency; do
+for expected in limit throughput steadiness convergence sampler display scaling startup efficiency; do
   grep -qx "$expected" <<<"$suites" || fail "bench --list lacks $expected"
 done
 

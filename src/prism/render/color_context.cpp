@@ -57,8 +57,7 @@ ColorContext<SpectralMode<N>>::ColorContext(const Scene& scene, const TransportS
 
 template <int N>
 Wavelengths<SpectralMode<N>> ColorContext<SpectralMode<N>>::sample_wavelengths(std::uint64_t sample_index,
-                                                                                Pcg32& rng) const {
-  const double jitter = rng.next_double();
+                                                                                double jitter) const {
   const double u = settings_.stratify_first_wavelengths ? color::stratified_wavelength_u(sample_index, jitter) : jitter;
   return color::sample_wavelengths<N>(settings_.wavelength_strategy, u);
 }

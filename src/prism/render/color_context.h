@@ -15,7 +15,6 @@
 #include "prism/color/color_space.h"
 #include "prism/color/emission_spectrum.h"
 #include "prism/color/sigmoid_polynomial.h"
-#include "prism/core/pcg32.h"
 #include "prism/render/transport_mode.h"
 #include "prism/scene/scene.h"
 
@@ -38,7 +37,8 @@ class ColorContext<SpectralMode<N>> {
   using Mode = SpectralMode<N>;
   ColorContext(const Scene& scene, const TransportSettings& settings);
 
-  Wavelengths<Mode> sample_wavelengths(std::uint64_t sample_index, Pcg32& rng) const;
+  // `u` is the sample's primary number of wavelength sampling, uniform in [0, 1).
+  Wavelengths<Mode> sample_wavelengths(std::uint64_t sample_index, double u) const;
   Spectrum<Mode> reflectance(const Vec3f& linear_srgb, const Wavelengths<Mode>& w) const;
   Spectrum<Mode> base_color(std::uint32_t material, const Wavelengths<Mode>& w) const;
   // Emitted radiance (or intensity / illuminance for delta lights) of an emitter.
@@ -75,7 +75,7 @@ class ColorContext<RgbMode> {
   using Mode = RgbMode;
   ColorContext(const Scene& scene, const TransportSettings& settings);
 
-  Wavelengths<Mode> sample_wavelengths(std::uint64_t, Pcg32&) const { return {}; }
+  Wavelengths<Mode> sample_wavelengths(std::uint64_t, double) const { return {}; }
   Spectrum<Mode> reflectance(const Vec3f& linear_srgb, const Wavelengths<Mode>& w) const;
   Spectrum<Mode> base_color(std::uint32_t material, const Wavelengths<Mode>&) const { return base_colors_[material]; }
   Spectrum<Mode> emission(std::uint32_t emitter, const Wavelengths<Mode>&) const { return emitters_[emitter]; }

@@ -81,6 +81,7 @@ std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settin
   h.value(settings.path.max_depth);
   h.value(settings.path.russian_roulette_depth);
   h.value(settings.path.estimator);
+  h.value(settings.path.sampler);
   h.value(settings.transport.kind);
   h.value(settings.transport.wavelengths);
   h.value(settings.transport.wavelength_strategy);

@@ -38,9 +38,9 @@ struct RenderSettings {
 void validate_render_settings(const RenderSettings& settings);
 
 // A fingerprint of everything that determines the pixel values of sample i: the scene,
-// image size, seed and path settings (not spp, threads or time limits), and the AOV set
-// when it is not empty (the files then hold more layers). Checkpoints and partial renders
-// carry it so that only compatible states are resumed or merged.
+// image size, seed and path settings, sampler included (not spp, threads or time limits),
+// and the AOV set when it is not empty (the files then hold more layers). Checkpoints and
+// partial renders carry it so that only compatible states are resumed or merged.
 std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settings);
 
 struct RenderProgress {

@@ -7,7 +7,6 @@
 
 #include "prism/core/frame.h"
 #include "prism/core/parallel.h"
-#include "prism/core/sample_stream.h"
 #include "prism/render/material_bsdf.h"
 #include "prism/render/surface_interaction.h"
 #include "prism/sampling/warps.h"
@@ -17,13 +16,12 @@ namespace prism {
 template <class Mode>
 struct WavefrontIntegrator<Mode>::Paths {
   explicit Paths(std::size_t n)
-      : ray(n), throughput(n), radiance(n), wavelengths(n), rng(n), hit(n), hit_found(n), shadow_ray(n),
+      : ray(n), throughput(n), radiance(n), wavelengths(n), hit(n), hit_found(n), shadow_ray(n),
         shadow_contribution(n), shadow_pending(n), prev_position(n), prev_pdf(n), eta_scale(n), cone_width(n), cone_spread(n), prev_specular(n), depth(n),
         finished(n), sample_index(n), sample_end(n) {}
   std::vector<Ray> ray;
   std::vector<Spectrum<Mode>> throughput, radiance;
   std::vector<Wavelengths<Mode>> wavelengths;
-  std::vector<Pcg32> rng;
   std::vector<Hit> hit;
   std::vector<std::uint8_t> hit_found;
   std::vector<Ray> shadow_ray;
@@ -77,14 +75,11 @@ std::optional<Vec3f> WavefrontIntegrator<Mode>::textured_base_color(const Materi
 
 template <class Mode>
 void WavefrontIntegrator<Mode>::generate(Paths& p, std::uint32_t slot, std::uint32_t sample_index) const {
-  Pcg32 rng = make_sample_stream(seed_, slot, sample_index);
-  const float jitter_x = rng.next_float(), jitter_y = rng.next_float();
-  const Vec2f u_lens(rng.next_float(), rng.next_float());
-  p.wavelengths[slot] = colors_.sample_wavelengths(sample_index, rng);
-  const auto x = static_cast<float>(slot % static_cast<std::uint32_t>(width_));
-  const auto y = static_cast<float>(slot / static_cast<std::uint32_t>(width_));
-  p.ray[slot] = camera_.generate_ray(x + jitter_x, y + jitter_y, u_lens);
-  p.rng[slot] = rng;
+  const std::uint32_t x = slot % static_cast<std::uint32_t>(width_), y = slot / static_cast<std::uint32_t>(width_);
+  const CameraSamples u = camera_samples(settings_.sampler, PixelSample{seed_, x, y, slot, sample_index});
+  p.wavelengths[slot] = colors_.sample_wavelengths(sample_index, u.wavelength);
+  p.ray[slot] = camera_.generate_ray(static_cast<float>(x) + u.pixel_jitter.x, static_cast<float>(y) + u.pixel_jitter.y,
+                                     u.lens);
   p.throughput[slot] = Spectrum<Mode>(1.0f);
   p.radiance[slot] = Spectrum<Mode>(0.0f);
   p.depth[slot] = 0;
@@ -100,7 +95,6 @@ void WavefrontIntegrator<Mode>::generate(Paths& p, std::uint32_t slot, std::uint
 template <class Mode>
 void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   p.shadow_pending[slot] = 0;
-  Pcg32& rng = p.rng[slot];
   Spectrum<Mode>& beta = p.throughput[slot];
   Spectrum<Mode>& L = p.radiance[slot];
   Wavelengths<Mode>& wl = p.wavelengths[slot];
@@ -151,11 +145,13 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     if (Mode::kChannels > 1 && bsdf.is_dispersive() && wl.pdf[1] != 0.0f) colors_.terminate_secondary(wl);
   }
   const Vec3f wo_local = si.shading.to_local(-ray.direction);
+  // The bounce's whole block of dimensions, used or not, so dimensions stay aligned.
+  const auto row = static_cast<std::uint32_t>(width_);
+  const BounceSamples u = bounce_samples(settings_.sampler,
+                                         PixelSample{seed_, slot % row, slot / row, slot, p.sample_index[slot]}, p.depth[slot]);
 
   if (use_nee && !bsdf.is_specular()) {
-    const float u_select = rng.next_float();
-    const Vec2f u_light(rng.next_float(), rng.next_float());
-    if (const auto ls = lights_.sample(si.position, u_select, u_light)) {
+    if (const auto ls = lights_.sample(si.position, u.light_select, u.light)) {
       const Vec3f wi_local = si.shading.to_local(ls->wi);
       // The geometric and the shading side must agree, or light leaks through edges.
       if ((dot(ls->wi, si.geometric_normal) > 0.0f) == (wi_local.z > 0.0f) && ls->pdf > 0.0f) {
@@ -186,9 +182,7 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     }
   }
 
-  const float u_lobe = rng.next_float();
-  const Vec2f u_dir(rng.next_float(), rng.next_float());
-  const auto bs = bsdf.sample(wo_local, u_lobe, u_dir);
+  const auto bs = bsdf.sample(wo_local, u.lobe, u.direction);
   if (!bs || bs->pdf <= 0.0f || bs->f.is_black()) {
     p.finished[slot] = 1;
     return;
@@ -218,7 +212,7 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     float max_beta = 0.0f;
     for (int i = 0; i < Mode::kChannels; ++i) max_beta = std::max(max_beta, beta[i]);
     const float survive = std::min(1.0f, max_beta * p.eta_scale[slot]);
-    if (rng.next_float() >= survive) {
+    if (u.roulette >= survive) {
       p.finished[slot] = 1;
       return;
     }

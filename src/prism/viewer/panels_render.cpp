@@ -104,6 +104,11 @@ bool render_settings_panel(RenderControls& c) {
     c.settings.path.estimator = static_cast<LightEstimator>(estimator);
     changed = true;
   }
+  int sampler = static_cast<int>(c.settings.path.sampler);  // SamplerKind's order
+  if (combo("sampler", sampler, {"independent", "sobol", "zsobol"})) {
+    c.settings.path.sampler = static_cast<SamplerKind>(sampler);
+    changed = true;
+  }
   changed |= ImGui::SliderInt("max depth", &c.settings.path.max_depth, 1, 64);
   // The integrator's pass is a group of whole samples per pixel (the seed's #Bounce/Frame).
   changed |= ImGui::SliderInt("samples per pass", &c.settings.samples_per_pass, 1, 64);

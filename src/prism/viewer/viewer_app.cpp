@@ -15,6 +15,7 @@
 
 #include "prism/core/bounds.h"
 #include "prism/display/exposure.h"
+#include "prism/sampling/pixel_sampler.h"
 #include "prism/scene/camera_json.h"
 #include "prism/scene/camera_selection.h"
 #include "prism/scene/load_scene.h"
@@ -84,6 +85,7 @@ class ViewerApp {
         session_(scene) {
     RenderSettings& s = render_.settings;
     s.path.max_depth = options.max_depth;
+    if (!options.sampler.empty()) s.path.sampler = *parse_sampler(options.sampler);  // checked by run_viewer
     s.samples_per_pass = std::max(options.samples_per_pass, 1);
     s.threads = options.threads;
     s.transport.kind = options.mode == "rgb" ? TransportKind::rgb : TransportKind::spectral;
@@ -324,6 +326,8 @@ int run_viewer(const ViewerOptions& options) {
   if (options.frames < 0) throw UsageError("--frames must be at least 1");
   if (!options.screenshot.empty() && options.frames <= 0) throw UsageError("--screenshot needs --frames N");
   if (options.mode != "spectral" && options.mode != "rgb") throw UsageError("--mode must be spectral or rgb");
+  if (!options.sampler.empty() && !parse_sampler(options.sampler))
+    throw UsageError(fmt::format("unknown --sampler '{}' (independent, sobol, zsobol)", options.sampler));
   display::parse_odt(options.odt);
   if (!options.view.empty()) display::parse_debug_view(options.view);
   // The display check comes first: without one there is nothing to show the scene in.

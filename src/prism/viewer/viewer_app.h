@@ -16,6 +16,7 @@ struct ViewerOptions {
   std::string odt = "srgb-100nit";
   std::string view;                // initial debug view (display/debug_views.h); empty: none
   std::string mode = "spectral";   // spectral | rgb
+  std::string sampler;             // independent | sobol | zsobol; empty: the renderer's default
   int samples_per_pass = 1;
   int max_depth = 8;
   int threads = 0;

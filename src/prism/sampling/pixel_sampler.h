@@ -1,0 +1,79 @@
+#pragma once
+// The random numbers of one path sample, as a pure function of (seed, pixel, sample
+// index, dimension): no state lives in the path, and a sample's numbers never depend on
+// the thread, on the pass it is rendered in, or on how many samples the render will take
+// (time-limited renders, --resume and --sample-range chunks all see the same numbers).
+//
+// Fixed dimension layout, so that dimension k means the same decision in every sample
+// (required for low-discrepancy samplers to stratify anything):
+//   0-1 pixel jitter, 2-3 lens, 4 wavelength,
+//   then per bounce (depth d ≥ 0) a block of 7 at 5 + 7·d: light select, light 2D, lobe,
+//   direction 2D, Russian roulette. A block is drawn whole whether or not a branch uses
+//   all of it.
+//
+// Samplers:
+//   independent: a PCG32 stream (O'Neill 2014) per (seed, pixel, sample, block).
+//   sobol: padded Owen-scrambled Sobol' (Burley 2020): every 1D/2D request uses Sobol'
+//          dimensions 0(/1) at the sample index shuffled by a nested uniform scramble
+//          seeded per (seed, pixel, dimension), and the point Owen-scrambled per (seed,
+//          pixel, dimension). Any aligned run of 2^m samples of a pixel is a scrambled
+//          (0,m,2)-net in every 2D request, for every m — the net property needs no spp.
+//   zsobol: blue-noise ordering across pixels (Ahmed & Wonka 2020; pbrt-v4's
+//          ZSobolSampler). pbrt puts the sample index below the Morton digits, which
+//          needs the final spp (log2 spp bits); here the bound is fixed at ONE sample per
+//          layer: sample index s is layer s, in which every aligned 2^k×2^k tile of pixels
+//          shares one (0,2k,2)-net of the Sobol' sequence (Morton index, base-4 digits
+//          permuted per layer and dimension); layers are scrambled independently. So at
+//          every spp the error is spread as blue noise and the first pass is stratified
+//          across pixels (wavelengths included), but within one pixel successive samples
+//          are independent: per-pixel variance is that of independent sampling.
+#include <cstdint>
+#include <optional>
+#include <string_view>
+
+#include "prism/core/vec.h"
+
+namespace prism {
+
+enum class SamplerKind : std::uint8_t { independent, sobol, zsobol };
+
+std::string_view sampler_name(SamplerKind kind);
+std::optional<SamplerKind> parse_sampler(std::string_view name);  // nullopt for unknown names
+
+inline constexpr std::uint32_t kPixelJitterDimension = 0;
+inline constexpr std::uint32_t kLensDimension = 2;
+inline constexpr std::uint32_t kWavelengthDimension = 4;
+inline constexpr std::uint32_t kFirstBounceDimension = 5;
+inline constexpr std::uint32_t kDimensionsPerBounce = 7;
+
+struct PixelSample {
+  std::uint64_t seed = 0;
+  std::uint32_t pixel_x = 0, pixel_y = 0;
+  std::uint32_t pixel_index = 0;  // y · width + x
+  std::uint32_t sample_index = 0;
+};
+
+struct CameraSamples {
+  Vec2f pixel_jitter;  // [0,1)² inside the pixel
+  Vec2f lens;
+  double wavelength = 0.0;  // the primary number of wavelength sampling
+};
+
+struct BounceSamples {
+  float light_select = 0.0f;
+  Vec2f light;
+  float lobe = 0.0f;
+  Vec2f direction;
+  float roulette = 0.0f;
+};
+
+// One switch over the sampler per block, not per number.
+CameraSamples camera_samples(SamplerKind kind, const PixelSample& sample);
+BounceSamples bounce_samples(SamplerKind kind, const PixelSample& sample, int depth);
+
+// Single requests, for tests and tools: dimension `dimension` (and `dimension + 1` for 2D)
+// of a sample, as laid out above for the low-discrepancy samplers.
+float sample_1d(SamplerKind kind, const PixelSample& sample, std::uint32_t dimension);
+Vec2f sample_2d(SamplerKind kind, const PixelSample& sample, std::uint32_t dimension);
+
+}  // namespace prism

@@ -1,0 +1,134 @@
+// The samplers behind --sampler: the fixed dimension layout, per-pixel nets of the padded
+// Sobol' sampler for any aligned run of samples (so no spp needs to be known), the
+// cross-pixel nets of the blue-noise (zsobol) layers, and uniformity.
+#include "prism/sampling/pixel_sampler.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "prism/sampling/zsobol_index.h"
+#include "support/chi_square.h"
+
+namespace prism {
+namespace {
+
+std::uint32_t bits(float u) { return static_cast<std::uint32_t>(static_cast<double>(u) * 0x1p32); }
+
+// Same criterion as sobol_test.cpp, on floats (24 significant bits suffice for m ≤ 12).
+void expect_same(Vec2f a, Vec2f b) {
+  EXPECT_EQ(a.x, b.x);
+  EXPECT_EQ(a.y, b.y);
+}
+
+bool is_zero_m_2_net(const std::vector<Vec2f>& points, int m) {
+  const std::size_t n = std::size_t{1} << m;
+  if (points.size() != n) return false;
+  for (int k = 0; k <= m; ++k) {
+    std::vector<int> count(n, 0);
+    for (const Vec2f& p : points) {
+      const std::uint64_t a = k == 0 ? 0 : bits(p.x) >> (32 - k);
+      const std::uint64_t b = m - k == 0 ? 0 : bits(p.y) >> (32 - (m - k));
+      if (++count[(a << (m - k)) | b] > 1) return false;
+    }
+  }
+  return true;
+}
+
+TEST(PixelSampler, ParsesAndNamesEverySampler) {
+  for (SamplerKind k : {SamplerKind::independent, SamplerKind::sobol, SamplerKind::zsobol})
+    EXPECT_EQ(parse_sampler(sampler_name(k)), k);
+  EXPECT_FALSE(parse_sampler("halton"));
+  EXPECT_FALSE(parse_sampler(""));
+}
+
+TEST(PixelSampler, BlocksFollowTheFixedDimensionLayout) {
+  for (SamplerKind k : {SamplerKind::independent, SamplerKind::sobol, SamplerKind::zsobol}) {
+    const PixelSample s{11, 5, 9, 9 * 64 + 5, 37};
+    const CameraSamples c = camera_samples(k, s);
+    expect_same(c.pixel_jitter, sample_2d(k, s, 0));
+    expect_same(c.lens, sample_2d(k, s, 2));
+    // The wavelength number keeps more bits (double); a float request truncates to 24.
+    EXPECT_NEAR(c.wavelength, sample_1d(k, s, 4), 0x1p-24);
+    for (int depth : {0, 3}) {
+      const std::uint32_t base = 5 + 7 * static_cast<std::uint32_t>(depth);
+      const BounceSamples b = bounce_samples(k, s, depth);
+      EXPECT_EQ(b.light_select, sample_1d(k, s, base));
+      expect_same(b.light, sample_2d(k, s, base + 1));
+      EXPECT_EQ(b.lobe, sample_1d(k, s, base + 3));
+      expect_same(b.direction, sample_2d(k, s, base + 4));
+      EXPECT_EQ(b.roulette, sample_1d(k, s, base + 6));
+    }
+  }
+}
+
+TEST(PixelSampler, SobolRunsOfSamplesArePerPixelNetsWhateverTheirLength) {
+  // Progressive rendering: samples [j·2^m, (j+1)·2^m) of a pixel are a net in every 2D
+  // request, for every m — a render stopped or split anywhere on such a boundary is
+  // stratified without the sampler knowing the final spp.
+  for (std::uint32_t pixel : {0u, 1u, 4097u})
+    for (std::uint32_t dimension : {0u, 2u, 6u, 9u, 5u + 7u * 5u + 1u})
+      for (int m = 1; m <= 10; ++m)
+        for (std::uint32_t run : {0u, 1u, 3u}) {
+          std::vector<Vec2f> points;
+          for (std::uint32_t i = 0; i < (1u << m); ++i)
+            points.push_back(sample_2d(SamplerKind::sobol, PixelSample{5, pixel, 0, pixel, (run << m) + i}, dimension));
+          EXPECT_TRUE(is_zero_m_2_net(points, m)) << "pixel " << pixel << " dim " << dimension << " m " << m;
+        }
+}
+
+TEST(PixelSampler, ZSobolTilesOfPixelsAreNetsInEverySample) {
+  // Blue-noise layers: for one sample index, the pixels of an aligned 2^k × 2^k tile hold
+  // a (0,2k,2)-net in every 2D request and one point in each of the 4^k strata of every 1D
+  // request (the wavelength dimension included: the first pass is stratified across pixels).
+  for (std::uint32_t sample : {0u, 1u, 17u})
+    for (int k = 1; k <= 4; ++k)
+      for (std::uint32_t tile : {0u, 3u}) {
+        const std::uint32_t side = 1u << k, x0 = tile * side, y0 = 2 * tile * side;
+        for (std::uint32_t dimension : {0u, 2u, 6u, 9u}) {
+          std::vector<Vec2f> points;
+          std::vector<int> strata(std::size_t{1} << (2 * k), 0);
+          for (std::uint32_t y = y0; y < y0 + side; ++y)
+            for (std::uint32_t x = x0; x < x0 + side; ++x) {
+              const PixelSample s{5, x, y, y * 1000 + x, sample};
+              points.push_back(sample_2d(SamplerKind::zsobol, s, dimension));
+              ++strata[bits(sample_1d(SamplerKind::zsobol, s, dimension + 2)) >> (32 - 2 * k)];
+            }
+          EXPECT_TRUE(is_zero_m_2_net(points, 2 * k)) << "sample " << sample << " k " << k << " dim " << dimension;
+          for (int c : strata) EXPECT_EQ(c, 1) << "sample " << sample << " k " << k << " dim " << dimension + 2;
+        }
+      }
+}
+
+TEST(PixelSampler, ZSobolDigitPermutationKeepsAlignedBlocks) {
+  for (std::uint32_t seed : {1u, 99u})
+    for (int k = 1; k <= 4; ++k) {
+      const std::uint32_t block = 0x1234u << (2 * k), size = 1u << (2 * k);
+      std::vector<int> seen(size, 0);
+      for (std::uint32_t i = 0; i < size; ++i) {
+        const std::uint32_t j = permute_base4_digits(block + i, seed);
+        EXPECT_EQ(j >> (2 * k), permute_base4_digits(block, seed) >> (2 * k));
+        ++seen[j & (size - 1)];
+      }
+      for (int c : seen) EXPECT_EQ(c, 1);
+    }
+}
+
+TEST(PixelSampler, EverySamplerIsUniformPerPixel) {
+  // One pixel's numbers over its samples, 2D histogram 16×16, 100 expected per cell:
+  // each sampler must be uniform in a bounce dimension (Šidák over the 3 samplers).
+  constexpr int kBins = 16, kSamples = 25600;
+  for (SamplerKind k : {SamplerKind::independent, SamplerKind::sobol, SamplerKind::zsobol}) {
+    std::vector<double> observed(kBins * kBins, 0.0);
+    for (int i = 0; i < kSamples; ++i) {
+      const Vec2f u = sample_2d(k, PixelSample{2, 3, 4, 4 * 640 + 3, static_cast<std::uint32_t>(i)}, 5 + 7 * 2 + 4);
+      observed[static_cast<std::size_t>(static_cast<int>(u.x * kBins) * kBins + static_cast<int>(u.y * kBins))] += 1;
+    }
+    const std::vector<double> expected(kBins * kBins, double(kSamples) / (kBins * kBins));
+    const test::ChiSquareResult r = test::chi_square_test(observed, expected);
+    EXPECT_GT(r.p_value, test::sidak_alpha(1e-3, 3)) << sampler_name(k) << ": " << r.message;
+  }
+}
+
+}  // namespace
+}  // namespace prism

@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "prism/scene/surface_alpha.h"
+
 namespace prism {
 
 std::string_view material_type_name(MaterialType type) {
@@ -42,6 +44,7 @@ SceneSummary summarize_scene(const Scene& scene) {
   for (const auto& m : scene.materials) {
     ++s.materials_by_type[std::string(material_type_name(m.type))];
     if (m.is_emissive()) ++s.emissive_materials;
+    if (has_alpha_coverage(m)) ++s.alpha_tested_materials;
   }
   for (const auto& l : scene.lights) ++s.lights_by_type[std::string(light_type_name(l.type))];
   return s;
@@ -65,8 +68,9 @@ std::string format_scene_summary(const Scene& scene) {
   out += fmt::format("triangles {} ({} placed)\n", s.triangles, s.placed_triangles);
   out += fmt::format("meshes {}\n", s.meshes);
   out += fmt::format("instances {}\n", s.instances);
-  out += fmt::format("materials {} ({}; {} emissive)\n", scene.materials.size(), counts(s.materials_by_type),
-                     s.emissive_materials);
+  out += fmt::format("materials {} ({}; {} emissive{})\n", scene.materials.size(), counts(s.materials_by_type),
+                     s.emissive_materials,
+                     s.alpha_tested_materials ? fmt::format(", {} alpha-tested", s.alpha_tested_materials) : std::string());
   out += fmt::format("lights {} ({})\n", scene.lights.size(), counts(s.lights_by_type));
   out += fmt::format("textures {} ({})\n", s.textures, mebibytes(s.texture_bytes));
   for (const auto& t : scene.textures)

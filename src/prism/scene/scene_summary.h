@@ -14,6 +14,7 @@ struct SceneSummary {
   std::size_t meshes = 0, instances = 0, cameras = 0, textures = 0;
   std::size_t texture_bytes = 0;
   std::size_t emissive_materials = 0;
+  std::size_t alpha_tested_materials = 0;  // alpha mask/blend that can let rays through (surface_alpha.h)
   std::map<std::string, std::size_t> materials_by_type;  // "diffuse" → count
   std::map<std::string, std::size_t> lights_by_type;     // "point" → count
 };

@@ -1,5 +1,6 @@
 #include "prism/scene/loaders/atrium_generator.h"
 
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -7,6 +8,7 @@
 
 #include "prism/core/error.h"
 #include "prism/scene/emission.h"
+#include "prism/scene/loaders/atrium_textures.h"
 #include "prism/scene/loaders/sphere_mesh.h"
 
 namespace prism::loaders {
@@ -20,7 +22,12 @@ constexpr float kHalfWidth = 7.0f, kHalfLength = 14.0f, kStorey = 6.0f, kWallGap
 constexpr int kColumnsLong = 9, kColumnsShort = 5, kStoreys = 2;
 constexpr float kColumnRadius = 0.35f, kArchThickness = 0.4f;
 
-enum Materials : std::uint32_t { kStone, kTileA, kTileB, kPlaster, kGold, kGlass, kLight, kMaterialCount };
+enum Materials : std::uint32_t { kStone, kFloor, kWall, kGold, kGlass, kLight, kLeaves, kMaterialCount };
+enum Textures : int { kFloorTexture, kWallTexture, kLeafTexture };
+
+// Planters in the courtyard (centres, metres) and the foliage cards standing in them.
+constexpr float kPlanterHalf = 0.6f, kPlanterHeight = 0.6f, kCardWidth = 1.4f, kCardHeight = 1.6f;
+constexpr float kPlanters[4][2] = {{-4.5f, -9.0f}, {4.5f, -9.0f}, {-4.5f, 9.0f}, {4.5f, 9.0f}};
 
 void add_quad(TriangleMesh& m, Vec3f a, Vec3f b, Vec3f c, Vec3f d) {
   const auto base = static_cast<std::uint32_t>(m.positions.size());
@@ -90,10 +97,37 @@ void add_arch(TriangleMesh& m, Vec3f a, Vec3f b, int segments) {
   }
 }
 
-Material diffuse(const char* name, Vec3f color) {
+// A quad with per-vertex uvs.
+void add_quad_uv(TriangleMesh& m, const std::array<Vec3f, 4>& p, const std::array<Vec2f, 4>& uv) {
+  add_quad(m, p[0], p[1], p[2], p[3]);
+  m.uvs.insert(m.uvs.end(), uv.begin(), uv.end());
+}
+
+// A wall quad from `a` to `b` along the floor, `height` high, facing the side a
+// counter-clockwise winding seen from inside gives; u runs along the wall, v down it.
+void add_wall(TriangleMesh& m, Vec3f a, Vec3f b, float height) {
+  const float along = length(b - a) / kWallTextureMeters, top = 0.0f, bottom = height / kWallTextureMeters;
+  const float u0 = (a.x + a.z) / kWallTextureMeters;  // continuous enough at the corners
+  add_quad_uv(m, {a, b, b + Vec3f(0, height, 0), a + Vec3f(0, height, 0)},
+              {Vec2f(u0, bottom), Vec2f(u0 + along, bottom), Vec2f(u0 + along, top), Vec2f(u0, top)});
+}
+
+// A plant: three vertical cards crossed at 60°, standing on `foot`, the leaf texture's
+// top edge (v = 0) at the top of each card.
+void add_plant(TriangleMesh& m, Vec3f foot, float turn_radians) {
+  for (int k = 0; k < 3; ++k) {
+    const float theta = turn_radians + static_cast<float>(k) * kPi / 3.0f;
+    const Vec3f half = Vec3f(std::cos(theta), 0.0f, std::sin(theta)) * (0.5f * kCardWidth), up(0.0f, kCardHeight, 0.0f);
+    add_quad_uv(m, {foot - half, foot + half, foot + half + up, foot - half + up},
+                {Vec2f(0, 1), Vec2f(1, 1), Vec2f(1, 0), Vec2f(0, 0)});
+  }
+}
+
+Material diffuse(const char* name, Vec3f color, int texture = -1) {
   Material m;
   m.name = name;
   m.base_color = color;
+  m.base_color_texture = texture;
   return m;
 }
 
@@ -104,8 +138,9 @@ Scene generate_atrium(std::size_t target) {
     throw UsageError(fmt::format("atrium: --triangles must be between {} and {}", kAtriumMinTriangles, kAtriumMaxTriangles));
   Scene scene;
   scene.name = "atrium";
-  scene.materials = {diffuse("stone", {0.55f, 0.5f, 0.42f}), diffuse("tile-a", {0.6f, 0.58f, 0.52f}),
-                     diffuse("tile-b", {0.25f, 0.12f, 0.08f}), diffuse("plaster", {0.7f, 0.62f, 0.5f})};
+  scene.textures = {make_floor_tile_texture(), make_wall_block_texture(), make_leaf_texture()};
+  scene.materials = {diffuse("stone", {0.55f, 0.5f, 0.42f}), diffuse("floor-tiles", Vec3f(1.0f), kFloorTexture),
+                     diffuse("wall-blocks", Vec3f(1.0f), kWallTexture)};
   Material gold;
   gold.name = "gold";
   gold.type = MaterialType::conductor;
@@ -125,6 +160,11 @@ Scene generate_atrium(std::size_t target) {
   scene.materials.push_back(gold);
   scene.materials.push_back(glass);
   scene.materials.push_back(light);
+  // Foliage: the leaf texture's alpha cuts the cards out (glTF alphaMode MASK, cutoff 0.5).
+  Material leaves = diffuse("leaves", Vec3f(1.0f), kLeafTexture);
+  leaves.alpha_mode = AlphaMode::mask;
+  leaves.alpha_cutoff = 0.5f;
+  scene.materials.push_back(leaves);
 
   const int columns = kStoreys * 2 * (kColumnsLong + kColumnsShort);
   const int arches = kStoreys * 2 * (kColumnsLong - 1 + kColumnsShort - 1);
@@ -134,31 +174,30 @@ Scene generate_atrium(std::size_t target) {
   const double qa = 2.0 * columns + 1.0, qb = 4.0 * arches, qc = fixed - static_cast<double>(target);
   const int s = std::max(8, static_cast<int>(std::lround((-qb + std::sqrt(qb * qb - 4.0 * qa * qc)) / (2.0 * qa))));
 
-  // Floor: tiles in two colours (a checkerboard of 1 m tiles, one mesh per colour).
-  TriangleMesh tiles[2];
+  // Floor: one quad per 1 m tile, uvs from the position so the tile texture (4 × 4 tiles
+  // of 1 m) lines up with the quads.
+  TriangleMesh floor;
+  floor.name = "floor-tiles";
+  floor.material = kFloor;
   const int nx = static_cast<int>(2.0f * (kHalfWidth + kWallGap)), nz = static_cast<int>(2.0f * (kHalfLength + kWallGap));
+  const auto floor_uv = [](const Vec3f& p) { return Vec2f(p.x / kFloorTextureMeters, p.z / kFloorTextureMeters); };
   for (int i = 0; i < nx; ++i)
     for (int k = 0; k < nz; ++k) {
       const float x0 = -(kHalfWidth + kWallGap) + static_cast<float>(i), z0 = -(kHalfLength + kWallGap) + static_cast<float>(k);
       const Vec3f a(x0, 0, z0), b(x0, 0, z0 + 1), c(x0 + 1, 0, z0 + 1), d(x0 + 1, 0, z0);
-      TriangleMesh& t = tiles[(i + k) % 2];
-      add_quad(t, a, b, c, d);
-      t.uvs.insert(t.uvs.end(), {Vec2f(0, 0), Vec2f(0, 1), Vec2f(1, 1), Vec2f(1, 0)});
+      add_quad_uv(floor, {a, b, c, d}, {floor_uv(a), floor_uv(b), floor_uv(c), floor_uv(d)});
     }
-  tiles[0].name = "floor-tiles-a", tiles[0].material = kTileA;
-  tiles[1].name = "floor-tiles-b", tiles[1].material = kTileB;
-  scene.meshes.push_back(std::move(tiles[0]));
-  scene.meshes.push_back(std::move(tiles[1]));
+  scene.meshes.push_back(std::move(floor));
 
   // Outer walls (inward-facing), open to the sky.
   TriangleMesh walls;
   walls.name = "walls";
-  walls.material = kPlaster;
+  walls.material = kWall;
   const float wx = kHalfWidth + kWallGap, wz = kHalfLength + kWallGap, wh = kStorey * kStoreys + 1.0f;
-  add_quad(walls, {-wx, 0, -wz}, {wx, 0, -wz}, {wx, wh, -wz}, {-wx, wh, -wz});
-  add_quad(walls, {wx, 0, wz}, {-wx, 0, wz}, {-wx, wh, wz}, {wx, wh, wz});
-  add_quad(walls, {-wx, 0, wz}, {-wx, 0, -wz}, {-wx, wh, -wz}, {-wx, wh, wz});
-  add_quad(walls, {wx, 0, -wz}, {wx, 0, wz}, {wx, wh, wz}, {wx, wh, -wz});
+  add_wall(walls, {-wx, 0, -wz}, {wx, 0, -wz}, wh);
+  add_wall(walls, {wx, 0, wz}, {-wx, 0, wz}, wh);
+  add_wall(walls, {-wx, 0, wz}, {-wx, 0, -wz}, wh);
+  add_wall(walls, {wx, 0, -wz}, {wx, 0, wz}, wh);
   scene.meshes.push_back(std::move(walls));
 
   // Gallery floor between the storeys: a slab ring around the courtyard.
@@ -212,6 +251,23 @@ Scene generate_atrium(std::size_t target) {
   block.material = kGlass;
   add_box(block, {1.0f, 0.0f, -3.0f}, {3.0f, 1.5f, -1.0f});
   scene.meshes.push_back(std::move(block));
+
+  // Planters with foliage cards: two plants in each, turned differently.
+  TriangleMesh planters, foliage;
+  planters.name = "planters";
+  planters.material = kStone;
+  foliage.name = "foliage";
+  foliage.material = kLeaves;
+  for (int i = 0; i < 4; ++i) {
+    const Vec3f centre(kPlanters[i][0], 0.0f, kPlanters[i][1]);
+    add_box(planters, centre - Vec3f(kPlanterHalf, 0.0f, kPlanterHalf), centre + Vec3f(kPlanterHalf, kPlanterHeight, kPlanterHalf));
+    for (int plant = 0; plant < 2; ++plant) {
+      const Vec3f foot = centre + Vec3f(plant == 0 ? -0.25f : 0.25f, kPlanterHeight, plant == 0 ? 0.2f : -0.2f);
+      add_plant(foliage, foot, 0.4f * static_cast<float>(i) + 0.9f * static_cast<float>(plant));
+    }
+  }
+  scene.meshes.push_back(std::move(planters));
+  scene.meshes.push_back(std::move(foliage));
 
   // A skylight over the courtyard, emitting downwards, and a sky environment.
   TriangleMesh sky;

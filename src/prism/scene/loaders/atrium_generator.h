@@ -1,8 +1,11 @@
 #pragma once
 // `prism generate atrium`: a deterministic, Sponza-like test scene built in code — a
-// courtyard with two storeys of columns and arches around it, a tiled floor, outer walls,
-// a gallery floor, a gold sphere and a glass block, an area light overhead and a sky
-// environment — whose size is set by the tessellation of the columns and arches.
+// courtyard with two storeys of columns and arches around it, a floor of procedurally
+// textured tiles, outer walls of textured stone blocks, a gallery floor, a gold sphere and
+// a glass block, four planters with alpha-masked foliage cards (crossed quads, leaf
+// texture, alpha_mode mask, cutoff 0.5), an area light overhead and a sky environment —
+// whose size is set by the tessellation of the columns and arches. Textures:
+// atrium_textures.h (floor, walls, leaves; scene.textures in that order).
 #include <cstddef>
 
 #include "prism/scene/scene.h"

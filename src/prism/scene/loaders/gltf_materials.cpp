@@ -115,6 +115,14 @@ Material GltfBuilder::make_material(const tinygltf::Material& src, int index) {
   m.base_color_texture = texture(pbr.baseColorTexture, TextureEncoding::srgb, where + ".baseColorTexture");
   m.metallic_roughness_texture =
       texture(pbr.metallicRoughnessTexture, TextureEncoding::linear, where + ".metallicRoughnessTexture");
+  // KHR_materials_specular factor 0 on a dielectric (metallic 0) removes the specular
+  // layer, leaving the Lambertian base: Prism's diffuse (Prism's own GLB writer says so).
+  if (const tinygltf::Value* specular = extension(src.extensions, "KHR_materials_specular")) {
+    if (number(*specular, "specularFactor", 1.0) == 0.0 && m.metallic == 0.0f && m.metallic_roughness_texture < 0)
+      m.type = MaterialType::diffuse;
+    else
+      warnings_.push_back(fmt::format("glTF: {}: KHR_materials_specular ignored (only factor 0 on a dielectric is read)", where));
+  }
   if (src.alphaMode == "MASK") m.alpha_mode = AlphaMode::mask;
   else if (src.alphaMode == "BLEND") m.alpha_mode = AlphaMode::blend;
   m.alpha_cutoff = static_cast<float>(src.alphaCutoff);

@@ -10,6 +10,7 @@
 #include "prism/core/error.h"
 #include "prism/io/atomic_file.h"
 #include "prism/scene/emission.h"
+#include "prism/scene/loaders/texture_png.h"
 
 namespace prism::loaders {
 namespace {
@@ -40,18 +41,53 @@ class BinaryChunk {
     doc["accessors"].push_back(accessor);
     return static_cast<int>(doc["accessors"].size() - 1);
   }
+  // Appends raw bytes as a buffer view without a target (an embedded image); returns the view.
+  int add_view(json& doc, const std::vector<unsigned char>& data) {
+    while (bin_.size() % 4) bin_.push_back('\0');
+    const std::size_t offset = bin_.size();
+    bin_.append(reinterpret_cast<const char*>(data.data()), data.size());
+    doc["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", offset}, {"byteLength", data.size()}});
+    return static_cast<int>(doc["bufferViews"].size() - 1);
+  }
   std::string& bytes() { return bin_; }
 
  private:
   std::string bin_;
 };
 
-json material_json(const Material& m) {
+int wrap_code(TextureWrap w) {
+  switch (w) {
+    case TextureWrap::repeat: return 10497;
+    case TextureWrap::clamp: return 33071;
+    case TextureWrap::mirror: return 33648;
+  }
+  return 10497;
+}
+
+bool has_uv_transform(const TextureImage& t) {
+  return t.offset_u != 0.0f || t.offset_v != 0.0f || t.scale_u != 1.0f || t.scale_v != 1.0f || t.rotation_radians != 0.0f;
+}
+
+// A textureInfo: the texture (one per image, same index) and its uv transform, if any.
+json texture_info(const Scene& scene, int index) {
+  json info = {{"index", index}};
+  const TextureImage& t = scene.textures[static_cast<std::size_t>(index)];
+  if (has_uv_transform(t))
+    info["extensions"]["KHR_texture_transform"] = {
+        {"offset", {t.offset_u, t.offset_v}}, {"scale", {t.scale_u, t.scale_v}}, {"rotation", t.rotation_radians}};
+  return info;
+}
+
+json material_json(const Scene& scene, const Material& m) {
   json j = {{"name", m.name}};
   json pbr = {{"baseColorFactor", {m.base_color.x, m.base_color.y, m.base_color.z, m.opacity}},
               {"metallicFactor", 0.0}, {"roughnessFactor", m.roughness}};
   switch (m.type) {
-    case MaterialType::diffuse: pbr["roughnessFactor"] = 1.0; break;
+    case MaterialType::diffuse:
+      // Lambert: metallic 0 and no specular layer (KHR_materials_specular factor 0).
+      pbr["roughnessFactor"] = 1.0;
+      j["extensions"]["KHR_materials_specular"] = {{"specularFactor", 0.0}};
+      break;
     case MaterialType::mirror: pbr["metallicFactor"] = 1.0, pbr["roughnessFactor"] = 0.0; break;
     case MaterialType::conductor: {
       pbr["metallicFactor"] = 1.0;
@@ -64,10 +100,19 @@ json material_json(const Material& m) {
     case MaterialType::dielectric:
       j["extensions"]["KHR_materials_transmission"] = {{"transmissionFactor", 1.0}};
       j["extensions"]["KHR_materials_ior"] = {{"ior", m.ior}};
+      // A solid (not thin-walled) dielectric needs KHR_materials_volume: without it glTF
+      // readers, Prism's included, take a thin surface. The thickness only feeds
+      // rasterisers' refraction approximations.
+      if (!m.thin_walled) j["extensions"]["KHR_materials_volume"] = {{"thicknessFactor", 1.0}};
       break;
     case MaterialType::metallic_roughness: pbr["metallicFactor"] = m.metallic; break;
   }
+  if (m.base_color_texture >= 0) pbr["baseColorTexture"] = texture_info(scene, m.base_color_texture);
+  if (m.metallic_roughness_texture >= 0) pbr["metallicRoughnessTexture"] = texture_info(scene, m.metallic_roughness_texture);
   j["pbrMetallicRoughness"] = pbr;
+  if (m.alpha_mode == AlphaMode::mask) j["alphaMode"] = "MASK", j["alphaCutoff"] = m.alpha_cutoff;
+  if (m.alpha_mode == AlphaMode::blend) j["alphaMode"] = "BLEND";
+  if (m.alpha_mode != AlphaMode::opaque) j["doubleSided"] = true;  // cards are seen from both sides
   if (m.is_emissive()) {
     // Prism reads emissive (1, 1, 1) × strength 1 as 1 nit: scale the colour to Y = 1.
     const double y = relative_luminance(m.emission.color, ColorPickerSpace::srgb);
@@ -76,6 +121,7 @@ json material_json(const Material& m) {
     j["emissiveFactor"] = {c.x / peak, c.y / peak, c.z / peak};
     j["extensions"]["KHR_materials_emissive_strength"] = {{"emissiveStrength", m.emission.luminance_nits * peak}};
     if (m.emission.two_sided) j["doubleSided"] = true;
+    if (m.emission.texture >= 0) j["emissiveTexture"] = texture_info(scene, m.emission.texture);
   }
   return j;
 }
@@ -83,15 +129,28 @@ json material_json(const Material& m) {
 }  // namespace
 
 void write_scene_glb(const Scene& scene, const std::filesystem::path& path) {
-  if (!scene.textures.empty() || !scene.instances.empty()) throw UsageError("glTF writer: textures and instances are not supported");
+  if (!scene.instances.empty()) throw UsageError("glTF writer: instances are not supported");
   for (const Light& l : scene.lights)
     if (l.type != LightType::environment) throw UsageError("glTF writer: punctual lights are not supported");
   json doc = {{"asset", {{"version", "2.0"}, {"generator", "Prism"}}},
-              {"extensionsUsed", {"KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior"}},
+              {"extensionsUsed", {"KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior",
+                                  "KHR_materials_specular", "KHR_materials_volume"}},
               {"bufferViews", json::array()}, {"accessors", json::array()}, {"meshes", json::array()},
               {"materials", json::array()}, {"nodes", json::array()}};
-  for (const Material& m : scene.materials) doc["materials"].push_back(material_json(m));
+  for (const Material& m : scene.materials) doc["materials"].push_back(material_json(scene, m));
   BinaryChunk bin;
+  // Textures: each image embedded as PNG (a buffer view), with its own sampler and texture.
+  const std::vector<TextureEncoding> encodings = texture_encodings(scene);
+  bool transformed = false;
+  for (std::size_t i = 0; i < scene.textures.size(); ++i) {
+    const TextureImage& t = scene.textures[i];
+    const int view = bin.add_view(doc, encode_texture_png(t, encodings[i]));
+    doc["images"].push_back({{"name", t.name}, {"bufferView", view}, {"mimeType", "image/png"}});
+    doc["samplers"].push_back({{"magFilter", 9729}, {"minFilter", 9987}, {"wrapS", wrap_code(t.wrap_u)}, {"wrapT", wrap_code(t.wrap_v)}});
+    doc["textures"].push_back({{"name", t.name}, {"sampler", i}, {"source", i}});
+    transformed |= has_uv_transform(t);
+  }
+  if (transformed) doc["extensionsUsed"].push_back("KHR_texture_transform");
   json scene_nodes = json::array();
   for (const TriangleMesh& mesh : scene.meshes) {
     Vec3f lo(INFINITY), hi(-INFINITY);

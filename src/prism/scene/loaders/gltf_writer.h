@@ -1,11 +1,14 @@
 #pragma once
 // Writing a Scene as a binary glTF 2.0 file (.glb), for generated scenes (`prism generate`).
 // Meshes are written inline (uint32 indices, normals and uvs when present); materials as
-// PBR metallic-roughness (conductors: metallic 1 with the metal's approximate sRGB F0;
-// dielectrics: KHR_materials_transmission + KHR_materials_ior; emission with
-// KHR_materials_emissive_strength); the camera as a perspective camera node. Textures,
-// instances, punctual lights and the environment are not written (the environment has no
-// glTF equivalent): UsageError for the first three.
+// PBR metallic-roughness (diffuse: metallic 0 with KHR_materials_specular factor 0, i.e.
+// Lambert; conductors: metallic 1 with the metal's approximate sRGB F0; dielectrics:
+// KHR_materials_transmission + KHR_materials_ior; emission with
+// KHR_materials_emissive_strength; alphaMode MASK/BLEND with alphaCutoff, double-sided);
+// textures as PNG images embedded in the binary chunk (texture_png.h) with a sampler each
+// (wrap modes; KHR_texture_transform when a texture has a uv transform); the camera as a
+// perspective camera node. Instances, punctual lights and the environment are not written
+// (the environment has no glTF equivalent): UsageError for the first two.
 #include <filesystem>
 
 #include "prism/scene/scene.h"

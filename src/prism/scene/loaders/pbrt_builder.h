@@ -52,12 +52,15 @@ class PbrtBuilder {
   void make_material(const std::string& type, const PbrtParams& params, const std::string& name);
   void texture(const std::string& name, const std::string& value_type, const std::string& klass,
                const PbrtParams& params);
+  PbrtTexture imagemap(const std::string& name, const PbrtParams& params);
   void shape(const std::string& type, const PbrtParams& params);
   void light_source(const std::string& type, const PbrtParams& params);
   void area_light_source(const std::string& type, const PbrtParams& params);
 
   void add_mesh(TriangleMesh mesh, const PbrtParams& params, bool has_normals);
   std::uint32_t shape_material(const PbrtParams& params, double area);
+  std::uint32_t alpha_material(std::uint32_t material, const PbrtParams& params);
+  int texture_with_alpha(int base, int alpha);
   std::optional<Vec3f> reflectance(const PbrtParams& params, std::string_view name, int& texture);
   std::filesystem::path resolve(const PbrtParams& params, std::string_view param, const std::string& file) const;
   void ignore(std::string_view what, const PbrtParams& params);
@@ -71,6 +74,8 @@ class PbrtBuilder {
   PbrtGraphicsState state_;
   std::map<std::string, int> named_materials_;
   std::map<std::string, PbrtTexture> named_textures_;
+  std::map<std::string, PbrtTexture> float_textures_;
+  std::map<std::pair<std::uint32_t, std::string>, std::uint32_t> alpha_materials_;  // (material, alpha) → material
   std::map<std::string, PbrtMatrix> coordinate_systems_;
   std::map<std::string, std::vector<std::uint32_t>> objects_;
   std::optional<std::string> current_object_;

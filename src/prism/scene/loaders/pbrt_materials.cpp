@@ -133,52 +133,63 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
   }
 }
 
+PbrtTexture PbrtBuilder::imagemap(const std::string& name, const PbrtParams& p) {
+  PbrtTexture t;
+  const std::string file = p.get_string("filename", "");
+  if (file.empty()) throw SceneError(fmt::format("{}:{}: Texture '{}': imagemap needs a filename", p.source, p.line, name));
+  const std::string encoding = p.get_string("encoding", "sRGB");
+  const std::string wrap = p.get_string("wrap", "repeat");
+  TextureWrap w = TextureWrap::repeat;
+  if (wrap == "clamp" || wrap == "black") w = TextureWrap::clamp;
+  else if (wrap == "octahedralsphere") w = TextureWrap::mirror;
+  else if (wrap != "repeat") p.fail(*p.find("wrap"), "expected repeat, clamp, black or octahedralsphere");
+  if (wrap == "black") approximations_.push_back(fmt::format("Texture '{}' wrap \"black\" as clamp", name));
+  const TextureEncoding enc = encoding == "linear" ? TextureEncoding::linear : TextureEncoding::srgb;
+  if (encoding != "linear" && encoding != "sRGB")
+    approximations_.push_back(fmt::format("Texture '{}' encoding \"{}\" as sRGB", name, encoding));
+  try {
+    t.image = textures_->load(resolve(p, "filename", file), enc, w, w);
+  } catch (const IoError& e) {
+    throw IoError(fmt::format("{}:{}: Texture: {}", p.source, p.line, e.what()));
+  }
+  // pbrt-v4 looks images up at t = 1 − (vscale·v + vdelta) with v up the image, Prism at
+  // offset + scale·v' with v' = 1 − v down it (uvs are flipped in pbrt_shapes.cpp):
+  // scale = vscale, offset = 1 − vscale − vdelta.
+  const double su = p.get_float("uscale", 1.0), sv = p.get_float("vscale", 1.0);
+  const double du = p.get_float("udelta", 0.0), dv = p.get_float("vdelta", 0.0);
+  if (su != 1.0 || sv != 1.0 || du != 0.0 || dv != 0.0) {
+    TextureImage copy = scene_.textures[t.image];
+    copy.scale_u = static_cast<float>(su);
+    copy.scale_v = static_cast<float>(sv);
+    copy.offset_u = static_cast<float>(du);
+    copy.offset_v = static_cast<float>(1.0 - sv - dv);
+    scene_.textures.push_back(std::move(copy));
+    t.image = static_cast<int>(scene_.textures.size() - 1);
+  }
+  const double scale = p.get_float("scale", 1.0);
+  t.value = Vec3f(static_cast<float>(scale));
+  for (const char* n : {"filter", "maxanisotropy", "invert"}) p.find(n);
+  return t;
+}
+
 void PbrtBuilder::texture(const std::string& name, const std::string& value_type, const std::string& klass,
                           const PbrtParams& p) {
   PbrtTexture t;
   if (value_type != "spectrum" && value_type != "float")
     throw SceneError(fmt::format("{}:{}: Texture '{}': type must be \"spectrum\" or \"float\"", p.source, p.line, name));
-  if (value_type == "float") ignore(fmt::format("float Texture '{}'", name), p);
+  const bool is_float = value_type == "float";
   if (klass == "constant") {
-    t.value = p.get_color("value", PbrtSpectrumUse::reflectance, approximations_).value_or(Vec3f(1.0f));
+    if (is_float) t.value = Vec3f(static_cast<float>(p.get_float("value", 1.0)));
+    else t.value = p.get_color("value", PbrtSpectrumUse::reflectance, approximations_).value_or(Vec3f(1.0f));
   } else if (klass == "imagemap") {
-    const std::string file = p.get_string("filename", "");
-    if (file.empty()) throw SceneError(fmt::format("{}:{}: Texture '{}': imagemap needs a filename", p.source, p.line, name));
-    const std::string encoding = p.get_string("encoding", "sRGB");
-    const std::string wrap = p.get_string("wrap", "repeat");
-    TextureWrap w = TextureWrap::repeat;
-    if (wrap == "clamp" || wrap == "black") w = TextureWrap::clamp;
-    else if (wrap == "octahedralsphere") w = TextureWrap::mirror;
-    else if (wrap != "repeat") p.fail(*p.find("wrap"), "expected repeat, clamp, black or octahedralsphere");
-    if (wrap == "black") approximations_.push_back(fmt::format("Texture '{}' wrap \"black\" as clamp", name));
-    const TextureEncoding enc = encoding == "linear" ? TextureEncoding::linear : TextureEncoding::srgb;
-    if (encoding != "linear" && encoding != "sRGB")
-      approximations_.push_back(fmt::format("Texture '{}' encoding \"{}\" as sRGB", name, encoding));
-    try {
-      t.image = textures_->load(resolve(p, "filename", file), enc, w, w);
-    } catch (const IoError& e) {
-      throw IoError(fmt::format("{}:{}: Texture: {}", p.source, p.line, e.what()));
-    }
-    const double su = p.get_float("uscale", 1.0), sv = p.get_float("vscale", 1.0);
-    const double du = p.get_float("udelta", 0.0), dv = p.get_float("vdelta", 0.0);
-    if (su != 1.0 || sv != 1.0 || du != 0.0 || dv != 0.0) {
-      TextureImage copy = scene_.textures[t.image];
-      copy.scale_u = static_cast<float>(su);
-      copy.scale_v = static_cast<float>(sv);
-      copy.offset_u = static_cast<float>(du);
-      copy.offset_v = static_cast<float>(dv);
-      scene_.textures.push_back(std::move(copy));
-      t.image = static_cast<int>(scene_.textures.size() - 1);
-    }
-    const double scale = p.get_float("scale", 1.0);
-    t.value = Vec3f(static_cast<float>(scale));
-    for (const char* n : {"filter", "maxanisotropy", "invert"}) p.find(n);
+    t = imagemap(name, p);
   } else {
     ignore(fmt::format("Texture \"{}\" '{}' (treated as constant 1)", klass, name), p);
     for (const auto& param : p.params) param.used = true;
   }
   note_unused(fmt::format("Texture '{}'", name), p);
-  named_textures_[name] = t;
+  // Float textures are read only as a Shape's "alpha" (pbrt_alpha.cpp).
+  (is_float ? float_textures_ : named_textures_)[name] = t;
 }
 
 }  // namespace prism::loaders

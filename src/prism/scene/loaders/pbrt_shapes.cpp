@@ -109,6 +109,9 @@ void PbrtBuilder::shape(const std::string& type, const PbrtParams& p) {
     for (const auto& param : p.params) param.used = true;
     return;
   }
+  // pbrt-v4 looks images up at t = 1 − v (v up the image); Prism's v points down it.
+  if (type != "sphere")
+    for (Vec2f& uv : mesh.uvs) uv.y = 1.0f - uv.y;
   add_mesh(std::move(mesh), p, !p.has("N") ? false : true);
 }
 
@@ -147,6 +150,7 @@ void PbrtBuilder::add_mesh(TriangleMesh mesh, const PbrtParams& p, bool) {
     return;
   }
   mesh.material = shape_material(p, state_.area_light && state_.area_light->power ? transformed_area(mesh) : 0.0);
+  mesh.material = alpha_material(mesh.material, p);
   note_unused(fmt::format("Shape \"{}\"", mesh.name), p);
   scene_.meshes.push_back(std::move(mesh));
   const auto index = static_cast<std::uint32_t>(scene_.meshes.size() - 1);

@@ -2,12 +2,15 @@
 
 #include <cmath>
 #include <fstream>
+#include <optional>
 
 #include <fmt/format.h>
 
 #include "prism/core/error.h"
 #include "prism/io/atomic_file.h"
 #include "prism/scene/emission.h"
+#include "prism/scene/loaders/texture_png.h"
+#include "prism/scene/surface_alpha.h"
 
 namespace prism::loaders {
 namespace {
@@ -41,14 +44,42 @@ class Writer {
 };
 
 void check_writable(const Scene& scene) {
-  if (!scene.textures.empty() || !scene.instances.empty())
-    throw UsageError("scene writer: textures and instances are not supported");
+  if (!scene.instances.empty()) throw UsageError("scene writer: instances are not supported");
   for (const Light& l : scene.lights)
     if (l.type != LightType::environment || l.environment_texture >= 0)
       throw UsageError("scene writer: only a constant environment light is supported");
 }
 
 std::string vec(const Vec3f& v) { return fmt::format("[{}, {}, {}]", v.x, v.y, v.z); }
+
+const char* wrap_name(TextureWrap w) {
+  switch (w) {
+    case TextureWrap::repeat: return "repeat";
+    case TextureWrap::clamp: return "clamp";
+    case TextureWrap::mirror: return "mirror";
+  }
+  return "repeat";
+}
+
+// A prism-scene/1 texture reference: the PNG's name, with wrap modes when not repeat.
+std::string json_texture(const Scene& scene, const std::vector<std::string>& files, int index) {
+  const TextureImage& t = scene.textures[static_cast<std::size_t>(index)];
+  if (t.offset_u != 0.0f || t.offset_v != 0.0f || t.scale_u != 1.0f || t.scale_v != 1.0f || t.rotation_radians != 0.0f)
+    throw UsageError(fmt::format("JSON writer: texture '{}' has a uv transform, which prism-scene/1 cannot hold", t.name));
+  const std::string& file = files[static_cast<std::size_t>(index)];
+  if (t.wrap_u == TextureWrap::repeat && t.wrap_v == TextureWrap::repeat) return fmt::format("\"{}\"", file);
+  return fmt::format("{{\"file\": \"{}\", \"wrap_u\": \"{}\", \"wrap_v\": \"{}\"}}", file, wrap_name(t.wrap_u),
+                     wrap_name(t.wrap_v));
+}
+
+const char* alpha_mode_name(AlphaMode a) {
+  switch (a) {
+    case AlphaMode::opaque: return "opaque";
+    case AlphaMode::mask: return "mask";
+    case AlphaMode::blend: return "blend";
+  }
+  return "opaque";
+}
 
 const char* type_name(MaterialType t) {
   switch (t) {
@@ -71,6 +102,8 @@ Vec3f radiance_rgb(const Vec3f& color, float nits) {
 
 void write_scene_json(const Scene& scene, const std::filesystem::path& path) {
   check_writable(scene);
+  // Textures first, so the scene file never names a PNG that is not there yet.
+  const std::vector<std::string> files = write_scene_textures(scene, path);
   Writer w(path);
   const Camera& c = scene.camera;
   w("{{\n \"format\": \"prism-scene/1\",\n \"name\": \"{}\",\n \"meters_per_unit\": 1.0,\n", scene.name);
@@ -84,11 +117,19 @@ void write_scene_json(const Scene& scene, const std::filesystem::path& path) {
       vec(m.base_color), m.roughness);
     if (m.type == MaterialType::conductor && m.conductor_fresnel == ConductorFresnel::complex_ior)
       w(", \"conductor\": \"{}\"", m.conductor_name);
-    if (m.type == MaterialType::dielectric) w(", \"ior\": {}", m.ior);
+    if (m.type == MaterialType::dielectric) w(", \"ior\": {}{}", m.ior, m.thin_walled ? ", \"thin_walled\": true" : "");
     if (m.type == MaterialType::metallic_roughness) w(", \"metallic\": {}", m.metallic);
-    if (m.is_emissive())
-      w(", \"emission\": {{\"color\": {}, \"luminance_nits\": {}, \"two_sided\": {}}}", vec(m.emission.color),
+    if (m.base_color_texture >= 0) w(", \"base_color_texture\": {}", json_texture(scene, files, m.base_color_texture));
+    if (m.metallic_roughness_texture >= 0)
+      w(", \"metallic_roughness_texture\": {}", json_texture(scene, files, m.metallic_roughness_texture));
+    if (m.alpha_mode != AlphaMode::opaque) w(", \"alpha_mode\": \"{}\", \"alpha_cutoff\": {}", alpha_mode_name(m.alpha_mode), m.alpha_cutoff);
+    if (m.opacity != 1.0f) w(", \"opacity\": {}", m.opacity);
+    if (m.is_emissive()) {
+      w(", \"emission\": {{\"color\": {}, \"luminance_nits\": {}, \"two_sided\": {}", vec(m.emission.color),
         m.emission.luminance_nits, m.emission.two_sided);
+      if (m.emission.texture >= 0) w(", \"texture\": {}", json_texture(scene, files, m.emission.texture));
+      w("}}");
+    }
     w("}}{}\n", i + 1 < scene.materials.size() ? "," : "");
   }
   w(" ],\n \"meshes\": [\n");
@@ -117,8 +158,75 @@ void write_scene_json(const Scene& scene, const std::filesystem::path& path) {
   w.finish(path);
 }
 
+namespace {
+
+// pbrt-v4 texture names of what a material needs: its reflectance image and, for
+// alpha-tested materials, a float alpha image (pbrt puts alpha on the Shape).
+struct PbrtMaterialTextures {
+  std::string reflectance;  // empty: none
+  std::string alpha;        // empty: none
+  std::optional<float> constant_alpha;
+};
+
+// pbrt-v4's image t axis points up (it looks up 1 − v), Prism's down: v_pbrt = 1 − v,
+// and a texture's v transform becomes vscale = s, vdelta = 1 − s − offset.
+std::string pbrt_image_params(const TextureImage& t, const std::string& file, const char* encoding) {
+  if (t.rotation_radians != 0.0f) throw UsageError(fmt::format("pbrt writer: texture '{}' is rotated", t.name));
+  if (t.wrap_u != t.wrap_v || t.wrap_u == TextureWrap::mirror)
+    throw UsageError(fmt::format("pbrt writer: texture '{}' wraps in a way pbrt-v4 cannot say", t.name));
+  std::string out = fmt::format(" \"string filename\" \"{}\" \"string encoding\" \"{}\" \"string wrap\" \"{}\"", file,
+                                encoding, t.wrap_u == TextureWrap::repeat ? "repeat" : "clamp");
+  if (t.offset_u != 0.0f || t.offset_v != 0.0f || t.scale_u != 1.0f || t.scale_v != 1.0f)
+    out += fmt::format(" \"float uscale\" [ {} ] \"float vscale\" [ {} ] \"float udelta\" [ {} ] \"float vdelta\" [ {} ]",
+                       t.scale_u, t.scale_v, t.offset_u, 1.0f - t.scale_v - t.offset_v);
+  return out;
+}
+
+// Writes the Texture directives of material `index` (and its alpha PNG next to the scene).
+PbrtMaterialTextures write_pbrt_textures(Writer& w, const Scene& scene, std::size_t index, const std::vector<std::string>& files,
+                                         const std::filesystem::path& path) {
+  const Material& m = scene.materials[index];
+  PbrtMaterialTextures out;
+  if (m.base_color_texture >= 0) {
+    if (m.type != MaterialType::diffuse && m.type != MaterialType::metallic_roughness)
+      throw UsageError(fmt::format("pbrt writer: material '{}': only diffuse reflectance can be textured", m.name));
+    if (m.base_color.x != m.base_color.y || m.base_color.x != m.base_color.z)
+      throw UsageError(fmt::format("pbrt writer: material '{}': a texture tinted other than grey", m.name));
+    const auto t = static_cast<std::size_t>(m.base_color_texture);
+    out.reflectance = fmt::format("{}-reflectance", m.name);
+    w("Texture \"{}\" \"spectrum\" \"imagemap\"{} \"float scale\" [ {} ]\n", out.reflectance,
+      pbrt_image_params(scene.textures[t], files[t], "sRGB"), m.base_color.x);
+  }
+  if (!has_alpha_coverage(m)) return out;
+  const int t = m.base_color_texture;
+  const TextureImage* image = t >= 0 ? &scene.textures[static_cast<std::size_t>(t)] : nullptr;
+  if (!image || (image->channels != 2 && image->channels != 4)) {
+    // Constant coverage: pbrt keeps a hit with probability alpha (MASK: all or nothing).
+    const float alpha = m.alpha_mode == AlphaMode::mask ? (m.opacity >= m.alpha_cutoff ? 1.0f : 0.0f) : m.opacity;
+    if (alpha < 1.0f) out.constant_alpha = alpha;
+    return out;
+  }
+  // pbrt-v4 keeps a hit with probability alpha; MASK becomes a 0/1 image so that it cuts
+  // exactly where Prism's cutoff does at the texels.
+  TextureImage alpha = *image;
+  alpha.channels = 1;
+  alpha.texels.resize(static_cast<std::size_t>(image->width) * image->height);
+  for (std::size_t i = 0; i < alpha.texels.size(); ++i) {
+    const float a = m.opacity * image->texels[i * image->channels + image->channels - 1];
+    alpha.texels[i] = m.alpha_mode == AlphaMode::mask ? (a >= m.alpha_cutoff ? 1.0f : 0.0f) : a;
+  }
+  const std::string file = texture_file_name(path, *image, static_cast<std::size_t>(t), fmt::format("-alpha-{}", index));
+  write_file_atomically(path.parent_path() / file, encode_texture_channel_png(alpha, 0));
+  out.alpha = fmt::format("{}-alpha", m.name);
+  w("Texture \"{}\" \"float\" \"imagemap\"{}\n", out.alpha, pbrt_image_params(alpha, file, "linear"));
+  return out;
+}
+
+}  // namespace
+
 void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
   check_writable(scene);
+  const std::vector<std::string> files = write_scene_textures(scene, path);
   Writer w(path);
   const Camera& c = scene.camera;
   w("# {} — written by Prism (pbrt-v4 scene format)\n", scene.name);
@@ -135,7 +243,10 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
     const Vec3f L = radiance_rgb(l.color, l.intensity);
     w("LightSource \"infinite\" \"rgb L\" [ {} {} {} ]\n\n", L.x, L.y, L.z);
   }
-  for (const Material& m : scene.materials) {
+  std::vector<PbrtMaterialTextures> textures;
+  for (std::size_t i = 0; i < scene.materials.size(); ++i) {
+    const Material& m = scene.materials[i];
+    textures.push_back(write_pbrt_textures(w, scene, i, files, path));
     // Prism's perceptual roughness r has α = r²; written with remaproughness false.
     const float alpha = m.roughness * m.roughness;
     w("MakeNamedMaterial \"{}\"", m.name);
@@ -149,11 +260,17 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
         w(" \"float roughness\" [ {} ] \"bool remaproughness\" false\n", m.type == MaterialType::mirror ? 0.0f : alpha);
         break;
       case MaterialType::dielectric:
-        w(" \"string type\" \"dielectric\" \"float eta\" [ {} ] \"float roughness\" [ {} ] \"bool remaproughness\" false\n",
-          m.ior, alpha);
+        if (m.thin_walled)  // pbrt-v4's thindielectric is smooth: it takes eta only
+          w(" \"string type\" \"thindielectric\" \"float eta\" [ {} ]\n", m.ior);
+        else
+          w(" \"string type\" \"dielectric\" \"float eta\" [ {} ] \"float roughness\" [ {} ] \"bool remaproughness\" false\n",
+            m.ior, alpha);
         break;
       default:
-        w(" \"string type\" \"diffuse\" \"rgb reflectance\" [ {} {} {} ]\n", m.base_color.x, m.base_color.y, m.base_color.z);
+        if (!textures.back().reflectance.empty())
+          w(" \"string type\" \"diffuse\" \"texture reflectance\" \"{}\"\n", textures.back().reflectance);
+        else
+          w(" \"string type\" \"diffuse\" \"rgb reflectance\" [ {} {} {} ]\n", m.base_color.x, m.base_color.y, m.base_color.z);
     }
   }
   for (const TriangleMesh& mesh : scene.meshes) {
@@ -172,11 +289,15 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
     }
     if (!mesh.uvs.empty()) {
       w(" ]\n    \"point2 uv\" [");
-      for (const Vec2f& uv : mesh.uvs) w(" {} {}", uv.x, uv.y);
+      for (const Vec2f& uv : mesh.uvs) w(" {} {}", uv.x, 1.0f - uv.y);  // pbrt's v points up the image
     }
     w(" ]\n    \"integer indices\" [");
     for (std::uint32_t i : mesh.indices) w(" {}", i);
-    w(" ]\nAttributeEnd\n");
+    w(" ]\n");
+    const PbrtMaterialTextures& t = textures[mesh.material];
+    if (!t.alpha.empty()) w("    \"texture alpha\" \"{}\"\n", t.alpha);
+    else if (t.constant_alpha) w("    \"float alpha\" [ {} ]\n", *t.constant_alpha);
+    w("AttributeEnd\n");
   }
   w.finish(path);
 }

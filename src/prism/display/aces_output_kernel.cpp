@@ -112,9 +112,11 @@ float red_hue_weight(float r, float g, float b) {
   const float x = 2.0f * r - g - b, y = kSqrt3 * (g - b);
   const float ax = std::fabs(x), ay = std::fabs(y);
   const float hi = std::max(ax, ay), lo = std::min(ax, ay);
-  const float z = hi > 0.0f ? lo / hi : 0.0f;
+  // Both sides of every select are computed, so the loop stays branch-free (vectorised).
+  const float z = lo / std::max(hi, std::numeric_limits<float>::min());  // hi = 0: 0
   const bool reduced = z > kTanPi12;
-  const float zr = reduced ? (kSqrt3 * z - 1.0f) / (z + kSqrt3) : z;
+  const float z_reduced = (kSqrt3 * z - 1.0f) / (z + kSqrt3);
+  const float zr = reduced ? z_reduced : z;
   const float z2 = zr * zr;
   float a = zr * (1.0f + z2 * (-1.0f / 3.0f + z2 * (1.0f / 5.0f + z2 * (-1.0f / 7.0f + z2 * (1.0f / 9.0f)))));
   a = reduced ? a + kPi / 6.0f : a;

@@ -206,6 +206,7 @@ void AcesOutputKernel::sweeteners(Block& b) const {
     b.v[1][i] = std::max(g, 0.0f);
     b.v[2][i] = std::max(bl, 0.0f);
   }
+  // RRT.ctl: AP0 → AP1, clamp to [0, HALF_MAX], global desaturation RRT_SAT_FACTOR 0.96.
   apply(ap0_to_ap1_, b.v);
   constexpr float kHalfMaxF = static_cast<float>(kHalfMax);
   for (auto& channel : b.v)
@@ -230,6 +231,10 @@ void AcesOutputKernel::normalized_block(const float* film_rgb, float* cv_ap1, st
   } else {
     apply(film_to_aces_, b.v);
     sweeteners(b);
+    // Per AP1 channel: SDR segmented_spline_c5_fwd then, after the RRT's AP1 → AP0 and the
+    // ODT's AP0 → AP1 (inverse matrices, folded away), segmented_spline_c9_fwd
+    // (ACESlib.Tonescales.ctl) and Y_2_linCV(48, 0.02); HDR ssts (ACESlib.SSTS.ctl) and
+    // Y_2_linCV(Y_MAX, Y_MIN) (ACESlib.OutputTransforms.ctl).
     for (auto& channel : b.v)
       for (float& v : channel) {
         const float root = std::max((*sqrt_tone_)(v), 0.0f);
@@ -258,7 +263,10 @@ void AcesOutputKernel::normalized_block(const float* film_rgb, float* cv_ap1, st
 }
 
 // AcesOutputTransform::display_nits_from_normalized, then the pipeline's output matrix and
-// clamp, then encode_display_nits.
+// clamp, then encode_display_nits. SDR (ODT.Academy.*_100nits_dim.ctl): AP1 → XYZ →
+// Bradford D60 → D65 → display RGB as one matrix, clamp [0, 1], × peak. HDR
+// (ACESlib.OutputTransforms.ctl): limit_to_primaries (AP1 → XYZ → limiting RGB, clamp), then
+// limiting RGB → XYZ → Bradford → display RGB as one matrix, clamp ≥ 0, linCV_2_Y.
 void AcesOutputKernel::display_block(const float* cv_ap1, const float* peak_nits, float* nits, float* code,
                                      std::size_t n) const {
   Block b;

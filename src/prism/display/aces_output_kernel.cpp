@@ -67,12 +67,10 @@ const Log2SpacedTable* encode_table(DisplayEncoding e) {
   if (e == DisplayEncoding::scrgb) return nullptr;  // linear
   const auto id = static_cast<std::size_t>(e);
   std::call_once(once[id], [&] {
-    if (e == DisplayEncoding::pq)
-      tables[id] = std::make_unique<Log2SpacedTable>([](double nits) { return encode_display_nits(DisplayEncoding::pq, nits, 1.0); },
-                                                     -40, 14, kEncodeSegmentsPerOctaveLog2);
-    else
-      tables[id] = std::make_unique<Log2SpacedTable>([e](double rel) { return encode_display_nits(e, rel, 1.0); }, -60, 0,
-                                                     kEncodeSegmentsPerOctaveLog2);
+    // With white = 1 the relative encodings take nits / white; PQ ignores white.
+    const auto encode = [e](double x) { return encode_display_nits(e, x, 1.0); };
+    const bool pq = e == DisplayEncoding::pq;
+    tables[id] = std::make_unique<Log2SpacedTable>(encode, pq ? -40 : -60, pq ? 14 : 0, kEncodeSegmentsPerOctaveLog2);
   });
   return tables[id].get();
 }
@@ -281,7 +279,8 @@ void AcesOutputKernel::display_block(const float* cv_ap1, const float* peak_nits
       for (std::size_t i = 0; i < kBlock; ++i) channel[i] *= b.peak[i];
   } else if (!odt_->hdr) {
     for (auto& channel : b.v)
-      for (std::size_t i = 0; i < kBlock; ++i) channel[i] = std::min(std::max(channel[i], 0.0f), white / b.peak[i]) * b.peak[i];
+      for (std::size_t i = 0; i < kBlock; ++i)
+        channel[i] = std::min(std::max(channel[i], 0.0f), white / b.peak[i]) * b.peak[i];
   } else {
     for (auto& channel : b.v)
       for (std::size_t i = 0; i < kBlock; ++i) channel[i] = std::min(std::max(channel[i], 0.0f), white / b.peak[i]);

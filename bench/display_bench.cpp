@@ -6,6 +6,7 @@
 
 #include "prism/color/color_space.h"
 #include "prism/core/pcg32.h"
+#include "prism/display/aces_output_kernel.h"
 #include "prism/display/aces_output_transform.h"
 #include "prism/display/display_pipeline.h"
 
@@ -27,6 +28,29 @@ void BM_AcesOutputTransformPixel(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_AcesOutputTransformPixel)->Arg(0)->Arg(1)->ArgName("sdr0_pq1");
+
+// The float block kernel the pipeline uses: film (here ACES2065-1) → normalised AP1 →
+// display light and code values, per pixel, on the same 4096 values.
+void BM_AcesOutputKernelPixel(benchmark::State& state) {
+  const auto odt = state.range(0) ? prism::display::OdtId::rec2020_pq_1000nit : prism::display::OdtId::srgb_100nit;
+  const prism::display::AcesOutputTransform transform(odt);
+  prism::display::AcesKernelSettings settings;
+  settings.encoding = transform.description().default_encoding;
+  settings.white_nits = transform.description().white_nits;
+  const prism::display::AcesOutputKernel kernel(transform, settings);
+  std::vector<float> film;
+  for (const auto& a : aces_values()) film.insert(film.end(), {float(a.x), float(a.y), float(a.z)});
+  const std::size_t n = film.size() / 3;
+  std::vector<float> cv(film.size()), nits(film.size()), code(film.size());
+  for (auto _ : state) {
+    kernel.normalized_ap1(film.data(), cv.data(), n);
+    kernel.display(cv.data(), nullptr, nits.data(), code.data(), n);
+    benchmark::DoNotOptimize(code.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(n));
+}
+BENCHMARK(BM_AcesOutputKernelPixel)->Arg(0)->Arg(1)->ArgName("sdr0_pq1");
 
 void BM_DisplayPipelineImage(benchmark::State& state) {
   constexpr int kSize = 256;

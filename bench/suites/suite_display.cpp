@@ -2,7 +2,9 @@
 // Rec.2020 1000-nit ST 2084) in prism::display and in OpenColorIO 2.1's CPU processor
 // (its built-in ACES transforms, default optimisation, as `--ocio-config` would use it),
 // same image, same run. OCIO's apply() runs on the calling thread, so it is timed on one
-// thread and, for the like-for-like figure, on bands of rows in parallel.
+// thread and, for the like-for-like figure, on bands of rows in parallel. prism's exact
+// double-precision path (reference_path, the pipeline before the float kernel) is timed on
+// one thread beside it.
 #include <OpenColorIO/OpenColorIO.h>
 
 #include <algorithm>
@@ -109,9 +111,9 @@ SuiteReport run_display_suite(const BenchOptions& o) {
   };
   Table& t = report.add_table(
       fmt::format("{}x{} float RGB, exposure EV100 0, median of {} runs; Mpixels/s", width, height, repeat),
-      {"transform", "prism 1 thread", fmt::format("prism {} threads", threads), "OCIO 1 thread",
-       fmt::format("OCIO {} threads", threads), "prism/OCIO (1 thread)", fmt::format("prism/OCIO ({} threads)", threads),
-       "max |code diff|"});
+      {"transform", "prism exact path 1 thread", "prism 1 thread", fmt::format("prism {} threads", threads),
+       "OCIO 1 thread", fmt::format("OCIO {} threads", threads), "exact/OCIO (1 thread)", "prism/OCIO (1 thread)",
+       fmt::format("prism/OCIO ({} threads)", threads), "max |code diff|"});
   nlohmann::json rows = nlohmann::json::array();
   for (const Case& c : cases) {
     display::DisplaySettings settings;
@@ -125,9 +127,14 @@ SuiteReport run_display_suite(const BenchOptions& o) {
 
     display::DisplayImage shown;
     std::vector<float> ocio_out;
-    double prism1, prism_all;
+    double prism1, prism_all, prism_exact1;
     {
+      // The double-precision reference (DisplaySettings::reference_path): the pipeline as it
+      // was before the float block kernel, for the before/after figure in one run.
       const ThreadLimit one(1);
+      display::DisplaySettings exact = settings;
+      exact.reference_path = true;
+      prism_exact1 = median_seconds(repeat, [&] { shown = display::apply_display_pipeline(image, srgb, exact); });
       prism1 = median_seconds(repeat, [&] { shown = display::apply_display_pipeline(image, srgb, settings); });
     }
     {
@@ -146,10 +153,11 @@ SuiteReport run_display_suite(const BenchOptions& o) {
       const double oc = sdr ? std::clamp(ocio_out[i], 0.0f, 1.0f) : ocio_out[i];  // CTL clamps SDR, OCIO does not
       max_diff = std::max(max_diff, std::fabs(oc - shown.code[i]));
     }
-    t.add_row({c.name, mpix / prism1, mpix / prism_all, mpix / ocio1, mpix / ocio_all, ocio1 / prism1,
-               ocio_all / prism_all, max_diff});
-    rows.push_back({{"transform", c.name}, {"prism_1_thread_s", prism1}, {"prism_all_threads_s", prism_all},
-                    {"ocio_1_thread_s", ocio1}, {"ocio_all_threads_s", ocio_all}, {"max_code_diff", max_diff}});
+    t.add_row({c.name, mpix / prism_exact1, mpix / prism1, mpix / prism_all, mpix / ocio1, mpix / ocio_all,
+               ocio1 / prism_exact1, ocio1 / prism1, ocio_all / prism_all, max_diff});
+    rows.push_back({{"transform", c.name}, {"prism_exact_1_thread_s", prism_exact1}, {"prism_1_thread_s", prism1},
+                    {"prism_all_threads_s", prism_all}, {"ocio_1_thread_s", ocio1}, {"ocio_all_threads_s", ocio_all},
+                    {"max_code_diff", max_diff}});
   }
   report.data["rows"] = rows;
   report.notes.push_back("prism's pipeline also returns display-linear nits beside the code values; OCIO returns "

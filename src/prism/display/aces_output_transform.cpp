@@ -45,12 +45,19 @@ Vec3d dark_to_dim_surround(const Vec3d& linear_cv) {
   double divisor = XYZ.x + XYZ.y + XYZ.z;
   if (divisor == 0.0) divisor = 1e-10;
   const double x = XYZ.x / divisor, y = XYZ.y / divisor;
-  const double Y = std::pow(std::clamp(XYZ.y, 0.0, kHalfMax), kDimSurroundGamma);
+  const double Y = dim_surround_luminance(XYZ.y);
   const double yy = std::max(y, 1e-10);
   return m.xyz_to_ap1 * Vec3d{x * Y / yy, Y, (1.0 - x - y) * Y / yy};
 }
 
 }  // namespace
+
+double dim_surround_luminance(double y) { return std::pow(std::clamp(y, 0.0, kHalfMax), kDimSurroundGamma); }
+
+const Mat3& sdr_odt_desaturation() {
+  static const Mat3 desat = saturation_matrix(kOdtSatFactor, aces_matrices().ap1_luminance);
+  return desat;
+}
 
 const OdtDescription& odt_description(OdtId id) { return kOdts[static_cast<std::size_t>(id)]; }
 
@@ -102,8 +109,19 @@ Vec3d AcesOutputTransform::normalized_ap1(const Vec3d& aces) const {
   for (int c = 0; c < 3; ++c)
     cv[c] = (segmented_spline_c9_fwd(pre[c]) - kCinemaBlack) / (kCinemaWhite - kCinemaBlack);
   cv = dark_to_dim_surround(cv);
-  static const Mat3 kDesat = saturation_matrix(kOdtSatFactor, m.ap1_luminance);
-  return kDesat * cv;
+  return sdr_odt_desaturation() * cv;
+}
+
+double AcesOutputTransform::normalized_tone_curve_floor_end() const {
+  if (desc_->id == OdtId::none) return 0.0;
+  if (desc_->hdr) return ts_.min.x;
+  return 0.18 * std::exp2(-6.5);  // ODT_48nits: minPoint = C5(0.18·2^-6.5)
+}
+
+double AcesOutputTransform::normalized_tone_curve(double x) const {
+  if (desc_->id == OdtId::none) return x;
+  if (desc_->hdr) return (ssts(x, ts_) - desc_->y_min_nits) / (desc_->white_nits - desc_->y_min_nits);
+  return (segmented_spline_c9_fwd(segmented_spline_c5_fwd(x)) - kCinemaBlack) / (kCinemaWhite - kCinemaBlack);
 }
 
 Vec3d AcesOutputTransform::display_nits_from_normalized(const Vec3d& cv, double peak) const {

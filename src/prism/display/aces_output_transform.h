@@ -64,6 +64,22 @@ class AcesOutputTransform {
   Vec3d display_nits_from_normalized(const Vec3d& cv_ap1, double peak_nits) const;
   const OdtDescription& description() const { return *desc_; }
 
+  // The pieces of normalized_ap1 / display_nits_from_normalized that the float block kernel
+  // (aces_output_kernel.h) tabulates or folds, so that both paths draw on one definition.
+  //
+  // The per-channel tone curve from AP1 rendering-space RGB (the sweeteners' output) to the
+  // normalised linear code: SDR (C9(C5(x)) − 0.02)/(48 − 0.02), HDR (SSTS(x) − Y_MIN)/
+  // (Y_MAX − Y_MIN), none: x.
+  double normalized_tone_curve(double x) const;
+  // Where that curve leaves 0 (its black floor, zero slope in log–log): SDR 0.18·2^-6.5,
+  // whose C5 value is the C9 curve's low knee (ODT_48nits); HDR the SSTS's min.x; none 0.
+  double normalized_tone_curve_floor_end() const;
+  bool stretch_black() const { return stretch_black_; }
+  const Mat3& xyz_to_display() const { return xyz_to_display_; }
+  const Mat3& limit_xyz_to_rgb() const { return limit_xyz_to_rgb_; }
+  const Mat3& limit_rgb_to_xyz() const { return limit_rgb_to_xyz_; }
+  const Mat3& ap1_to_display() const { return ap1_to_display_; }
+
  private:
 
   const OdtDescription* desc_;
@@ -73,5 +89,12 @@ class AcesOutputTransform {
   Mat3 ap1_to_display_;      // for `none`: Bradford ACES white → display white
   TsParams ts_{};
 };
+
+// SDR ODT darkSurround_to_dimSurround (ODT_Common.ctl): the luminance Y (AP1 → XYZ, relative
+// to the ACES white) raised to the dim-surround gamma 0.9811, with the CTL's clamp to
+// [0, HALF_MAX]. The transform keeps xy, so the whole pixel scales by this ÷ Y.
+double dim_surround_luminance(double y);
+// The SDR ODT's desaturation by 0.93 about AP1 luminance (ODT_SAT_FACTOR).
+const Mat3& sdr_odt_desaturation();
 
 }  // namespace prism::display

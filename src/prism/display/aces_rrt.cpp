@@ -9,14 +9,7 @@
 namespace prism::display {
 namespace {
 
-// RRT constants (RRT.ctl / ACESlib.RRT_Common.ctl, published Academy data).
-constexpr double kGlowGain = 0.05;
-constexpr double kGlowMid = 0.08;
-constexpr double kRedScale = 0.82;
-constexpr double kRedPivot = 0.03;
-constexpr double kRedHueDegrees = 0.0;
-constexpr double kRedWidthDegrees = 135.0;
-constexpr double kSatFactor = 0.96;
+using namespace rrt;
 
 // glow_fwd: extra gain for dark, saturated colours, fading out between 2/3 and 2 × mid.
 double glow_gain(double yc, double gain, double mid) {

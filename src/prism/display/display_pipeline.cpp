@@ -8,6 +8,8 @@
 
 #include "prism/color/chromatic_adaptation.h"
 #include "prism/core/error.h"
+#include "prism/core/parallel.h"
+#include "prism/display/aces_output_kernel.h"
 #include "prism/display/blue_light_lmt.h"
 #include "prism/display/display_primaries.h"
 #include "prism/display/resampling.h"
@@ -15,6 +17,53 @@
 #include "prism/display/exposure.h"
 
 namespace prism::display {
+
+namespace {
+
+// Pixels per parallel task: large enough that scheduling is noise, small enough that a
+// 4K image makes ~500 tasks for any thread count.
+constexpr std::size_t kPixelsPerTask = 16384;
+
+// The exact path: AcesOutputTransform per pixel in double, as the CTL reads.
+void apply_reference(const ImageRgbF& film, const Mat3& to_aces, const AcesOutputTransform& transform,
+                     const Mat3& display_to_output, const DisplaySettings& s, DisplayImage& out) {
+  const OdtDescription& odt = transform.description();
+  // RRT + ODT up to the normalised AP1 step, at the render size.
+  const std::size_t n_in = static_cast<std::size_t>(film.width) * film.height;
+  ImageRgbF cv{film.width, film.height, std::vector<float>(3 * n_in)};
+  tbb::parallel_for(std::size_t{0}, n_in, [&](std::size_t i) {
+    Vec3d rgb{film.rgb[3 * i], film.rgb[3 * i + 1], film.rgb[3 * i + 2]};
+    for (int c = 0; c < 3; ++c)
+      if (!std::isfinite(rgb[c])) rgb[c] = 0.0;  // NaN/inf samples show as black, not as noise
+    const Vec3d v = transform.normalized_ap1(to_aces * rgb);
+    for (int c = 0; c < 3; ++c) cv.rgb[3 * i + c] = static_cast<float>(v[c]);
+  });
+  if (out.width != cv.width || out.height != cv.height) cv = upscale_bilinear(cv, out.width, out.height);
+
+  // Overlay, display light, gamut remap, encoding — at the output size.
+  const std::size_t n = static_cast<std::size_t>(out.width) * out.height;
+  const double remap_peak = odt.white_nits;
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+    Vec3d c{cv.rgb[3 * i], cv.rgb[3 * i + 1], cv.rgb[3 * i + 2]};
+    double peak = odt.white_nits;
+    if (s.overlay) {
+      const UiOverlay& o = *s.overlay;
+      const Vec3d ui{o.ap1[3 * i], o.ap1[3 * i + 1], o.ap1[3 * i + 2]};
+      const UiComposite comp = composite_ui(c, ui, o.alpha[i], odt.white_nits, o.ui_nits, o.blend_power);
+      c = comp.cv_ap1;
+      peak = comp.peak_nits;
+    }
+    Vec3d nits = display_to_output * transform.display_nits_from_normalized(c, peak);
+    if (s.display_primaries)
+      for (int k = 0; k < 3; ++k) nits[k] = std::clamp(nits[k], 0.0, remap_peak);
+    for (int k = 0; k < 3; ++k) {
+      out.nits[3 * i + k] = static_cast<float>(nits[k]);
+      out.code[3 * i + k] = static_cast<float>(encode_display_nits(out.encoding, nits[k], out.white_nits));
+    }
+  });
+}
+
+}  // namespace
 
 double exposure_scale(const DisplaySettings& s, const ImageRgbF& film, const color::ColorSpace& film_space) {
   if (s.exposure_ev100 && s.auto_exposure) throw UsageError("give either an EV100 or auto exposure, not both");
@@ -73,41 +122,59 @@ DisplayImage apply_display_pipeline(const ImageRgbF& film_in, const color::Color
       for (double& v : row) v *= out.exposure_scale;
   }
   const AcesOutputTransform transform(s.odt, s.stretch_black.value_or(true));
-
-  // RRT + ODT up to the normalised AP1 step, at the render size.
   const std::size_t n_in = static_cast<std::size_t>(film->width) * film->height;
-  ImageRgbF cv{film->width, film->height, std::vector<float>(3 * n_in)};
-  tbb::parallel_for(std::size_t{0}, n_in, [&](std::size_t i) {
-    Vec3d rgb{film->rgb[3 * i], film->rgb[3 * i + 1], film->rgb[3 * i + 2]};
-    for (int c = 0; c < 3; ++c)
-      if (!std::isfinite(rgb[c])) rgb[c] = 0.0;  // NaN/inf samples show as black, not as noise
-    const Vec3d v = transform.normalized_ap1(to_aces * rgb);
-    for (int c = 0; c < 3; ++c) cv.rgb[3 * i + c] = static_cast<float>(v[c]);
-  });
-  if (out.width != cv.width || out.height != cv.height) cv = upscale_bilinear(cv, out.width, out.height);
-
-  // Overlay, display light, gamut remap, encoding — at the output size.
   const std::size_t n = static_cast<std::size_t>(out.width) * out.height;
   const double remap_peak = odt.white_nits;
   out.code.resize(3 * n);
   out.nits.resize(3 * n);
-  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
-    Vec3d c{cv.rgb[3 * i], cv.rgb[3 * i + 1], cv.rgb[3 * i + 2]};
-    double peak = odt.white_nits;
-    if (s.overlay) {
-      const UiOverlay& o = *s.overlay;
-      const Vec3d ui{o.ap1[3 * i], o.ap1[3 * i + 1], o.ap1[3 * i + 2]};
-      const UiComposite comp = composite_ui(c, ui, o.alpha[i], odt.white_nits, o.ui_nits, o.blend_power);
-      c = comp.cv_ap1;
-      peak = comp.peak_nits;
-    }
-    Vec3d nits = display_to_output * transform.display_nits_from_normalized(c, peak);
-    if (s.display_primaries)
-      for (int k = 0; k < 3; ++k) nits[k] = std::clamp(nits[k], 0.0, remap_peak);
-    for (int k = 0; k < 3; ++k) {
-      out.nits[3 * i + k] = static_cast<float>(nits[k]);
-      out.code[3 * i + k] = static_cast<float>(encode_display_nits(out.encoding, nits[k], out.white_nits));
-    }
+  if (s.reference_path) {
+    apply_reference(*film, to_aces, transform, display_to_output, s, out);
+    return out;
+  }
+
+  AcesKernelSettings ks;
+  ks.film_to_aces = to_aces;
+  ks.display_to_output = display_to_output;
+  ks.clamp_output = s.display_primaries.has_value();
+  ks.clamp_nits = remap_peak;
+  ks.encoding = out.encoding;
+  ks.white_nits = out.white_nits;
+  const AcesOutputKernel kernel(transform, ks);
+  const bool same_size = out.width == film->width && out.height == film->height;
+  if (same_size && !s.overlay) {
+    // One pass: each block goes film → normalised code → light → code while in cache.
+    parallel_for(n, kPixelsPerTask, [&](std::size_t begin, std::size_t end) {
+      float cv[3 * AcesOutputKernel::kBlock];
+      for (std::size_t i = begin; i < end; i += AcesOutputKernel::kBlock) {
+        const std::size_t m = std::min(AcesOutputKernel::kBlock, end - i);
+        kernel.normalized_ap1(&film->rgb[3 * i], cv, m);
+        kernel.display(cv, nullptr, &out.nits[3 * i], &out.code[3 * i], m);
+      }
+    });
+    return out;
+  }
+  ImageRgbF cv{film->width, film->height, std::vector<float>(3 * n_in)};
+  parallel_for(n_in, kPixelsPerTask, [&](std::size_t begin, std::size_t end) {
+    kernel.normalized_ap1(&film->rgb[3 * begin], &cv.rgb[3 * begin], end - begin);
+  });
+  if (!same_size) cv = upscale_bilinear(cv, out.width, out.height);
+  std::vector<float> peak;
+  if (s.overlay) {
+    peak.resize(n);
+    const UiOverlay& o = *s.overlay;
+    parallel_for(n, kPixelsPerTask, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const Vec3d c{cv.rgb[3 * i], cv.rgb[3 * i + 1], cv.rgb[3 * i + 2]};
+        const Vec3d ui{o.ap1[3 * i], o.ap1[3 * i + 1], o.ap1[3 * i + 2]};
+        const UiComposite comp = composite_ui(c, ui, o.alpha[i], odt.white_nits, o.ui_nits, o.blend_power);
+        for (int k = 0; k < 3; ++k) cv.rgb[3 * i + k] = static_cast<float>(comp.cv_ap1[k]);
+        peak[i] = static_cast<float>(comp.peak_nits);
+      }
+    });
+  }
+  parallel_for(n, kPixelsPerTask, [&](std::size_t begin, std::size_t end) {
+    kernel.display(&cv.rgb[3 * begin], s.overlay ? &peak[begin] : nullptr, &out.nits[3 * begin],
+                   &out.code[3 * begin], end - begin);
   });
   return out;
 }

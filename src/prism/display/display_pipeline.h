@@ -4,6 +4,10 @@
 // render-scale upscale → overlay/UI → display light → gamut remap to the user's display →
 // encoding → optional quantisation with dither. Settings are a plain struct that the CLI, scene files and the
 // viewer fill the same way. See docs/display-pipeline.md.
+//
+// The per-pixel work runs in AcesOutputKernel (float, tabulated curves, blocks of pixels,
+// rows in parallel with prism::parallel_for); DisplaySettings::reference_path runs the
+// exact double-precision AcesOutputTransform per pixel instead (tests bound the difference).
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -35,6 +39,9 @@ struct DisplaySettings {
   // displayed image is upscaled bilinearly to round(size / render_scale).
   double render_scale = 1.0;
   std::optional<UiOverlay> overlay;             // composited at the output size
+  // true: the exact double-precision ACES path (AcesOutputTransform per pixel), the
+  // reference the tests hold the float/tabulated block kernel (aces_output_kernel.h) to.
+  bool reference_path = false;
 };
 
 // What the display shows, before quantisation.

@@ -144,7 +144,10 @@ TEST(Microfacet, VisibleNormalSamplingMatchesDensity) {
     cases.push_back({{MicrofacetType::ggx, 0.1f, 0.5f, method}, normalize(Vec3f(0.5f, 0.6f, 0.3f))});
     cases.push_back({MicrofacetDistribution::isotropic(MicrofacetType::ggx, 0.3f, method), flip(direction_at(60.0))});
   }
-  for (const auto& [d, wo] : cases) {
+  for (const auto& c : cases) {
+    // Named copies, not structured bindings: clang 14 (the asan preset) cannot capture those.
+    const auto& d = c.first;
+    const Vec3f wo = c.second;
     const auto r = test::stretched_chi_square(
         [&](Vec2f u, Vec3f& h) {
           h = d.sample_microfacet_normal(wo, u);

@@ -78,6 +78,9 @@ bsdf::Bsdf<Mode::kChannels> make_bsdf(const Material& m, std::uint32_t material_
         const double nm = Mode::kSpectral ? channel_wavelength_nm<Mode>(w, c) : kDLineWavelengthNm;
         eta[c] = static_cast<float>(dielectric_ior(m, nm));
       }
+      // Thin-walled (glTF transmission without KHR_materials_volume, pbrt's
+      // thindielectric): a smooth slab, roughness ignored (bsdf/thin_dielectric.h).
+      if (m.thin_walled) return {bsdf::ThinDielectric<N>{eta}};
       return {bsdf::Dielectric<N>{eta, distribution}};
     }
     case MaterialType::metallic_roughness:

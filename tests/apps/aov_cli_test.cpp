@@ -79,8 +79,16 @@ TEST_F(AovCli, LayersHaveOpenExrNamesAndTheBeautyIsUnchanged) {
   const auto z = read_exr_channels(path("aov.exr"), {"Z"});
   ASSERT_TRUE(n && z);
   for (float d : *z) EXPECT_GT(d, 0.0f);
-  const std::size_t centre = 10 * 24 + 12;
-  EXPECT_NEAR(std::hypot((*n)[3 * centre], (*n)[3 * centre + 1], (*n)[3 * centre + 2]), 1.0, 1e-6);
+  // Which pixels have all their samples on one plane depends on the sampler's numbers, so
+  // count them: no average of unit vectors is longer than 1, and most pixels of the box
+  // (walls, floor, blocks) see a single plane.
+  int unit = 0;
+  for (std::size_t p = 0; p < z->size(); ++p) {
+    const double length = std::hypot((*n)[3 * p], (*n)[3 * p + 1], (*n)[3 * p + 2]);
+    EXPECT_LE(length, 1.0 + 1e-6) << "pixel " << p;
+    if (std::abs(length - 1.0) < 1e-6) ++unit;
+  }
+  EXPECT_GT(unit, static_cast<int>(z->size()) / 2);
 }
 
 TEST_F(AovCli, MergedPartsCarryTheAovs) {

@@ -300,7 +300,7 @@ template <class Mode>
 PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t first_sample, std::uint32_t count) {
   const auto slots = static_cast<std::uint32_t>(film.pixel_count());
   Paths& p = *paths_;
-  first_hit_aovs_.resize(film.aovs().any() ? slots : 0u);
+  first_hit_aovs_.resize(film.aovs().first_hit() ? slots : 0u);
   std::vector<std::uint32_t> live(slots);
   for (std::uint32_t s = 0; s < slots; ++s) live[s] = s;
   parallel_for(slots, 4096, [&](std::size_t b, std::size_t e) {

@@ -9,6 +9,7 @@ const std::vector<std::string> kAlbedo{"albedo.R", "albedo.G", "albedo.B"};
 const std::vector<std::string> kNormal{"N.x", "N.y", "N.z"};
 const std::vector<std::string> kDepth{"Z"};
 const std::vector<std::string> kCoverage{"Z.coverage"};
+const std::vector<std::string> kVariance{"variance.R", "variance.G", "variance.B"};
 
 }  // namespace
 
@@ -20,6 +21,7 @@ std::vector<ExrChannelGroup> aov_exr_channels(const AovImages& aovs) {
     groups.push_back({kDepth, aovs.depth});
     groups.push_back({kCoverage, aovs.depth_coverage});
   }
+  if (aovs.set.variance) groups.push_back({kVariance, aovs.variance.rgb});
   return groups;
 }
 
@@ -39,6 +41,10 @@ AovImages read_aov_exr_channels(const std::filesystem::path& path, int width, in
     aovs.set.depth = true;
     aovs.depth = std::move(*depth);
     aovs.depth_coverage = std::move(*coverage);
+  }
+  if (auto variance = read_exr_channels(path, kVariance)) {
+    aovs.set.variance = true;
+    aovs.variance = ImageRgbF{width, height, std::move(*variance)};
   }
   return aovs;
 }

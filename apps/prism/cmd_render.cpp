@@ -64,7 +64,7 @@ struct RenderOptions {
   std::string resume;
   bool spp_given = false;
   std::string memory_limit;  // BYTES or SIZE with K/M/G/T; empty: 90 % of physical memory
-  std::string aovs;          // "albedo,normal,depth" subset; empty: none
+  std::string aovs;          // "albedo,normal,depth,variance" subset; empty: none
 };
 
 // Parses "START:END" (END exclusive) into first_sample / samples_per_pixel.
@@ -383,7 +383,8 @@ void add_render_command(CLI::App& root, Action& action) {
                   "Extra EXR layers about the first surface each camera ray hits, comma-separated: albedo "
                   "(albedo.R/G/B, base colour in the EXR's colour space), normal (N.x/N.y/N.z, world-space shading "
                   "normal) and depth (Z, distance along the camera ray in scene units, +inf for misses; with "
-                  "Z.coverage, the fraction of samples that hit). The beauty stays in R, G, B; PNG and AVIF outputs "
+                  "Z.coverage, the fraction of samples that hit); variance (variance.R/G/B, variance of the beauty's pixel "
+                  "mean in the EXR's colour space, per channel). The beauty stays in R, G, B; PNG and AVIF outputs "
                   "hold the beauty only (--view normal turns the normal AOV on and shows it)");
   cmd->add_flag("--allow-external-paths", options->allow_external_paths,
                 "Let the scene file refer to files outside its own folder (absolute paths, '..')");

@@ -120,6 +120,28 @@ TEST_F(AovCli, MergedPartsCarryTheAovs) {
   EXPECT_EQ(run("merge " + path("a.exr") + " " + path("c.exr") + " -o " + path("bad.exr")), 2) << log();
 }
 
+TEST_F(AovCli, VarianceLayerMergesToTheWholeRendersVariance) {
+  // --aov variance writes variance.R/G/B (the beauty's pixel-mean variance in the EXR's
+  // space); merging parts 0:3 and 3:8 reproduces the 8-sample render's layer. Bound: the
+  // parts' means and variances are floats, and the merge adds n(m − m̄)² terms of float
+  // means, so 1e-4 relative (docs/aovs.md; same bound as the library test).
+  const std::string aov = "--aov variance ";
+  ASSERT_EQ(run(kRender + aov + "--spp 8 -o " + path("full.exr")), 0) << log();
+  ASSERT_EQ(run(kRender + aov + "--sample-range 0:3 -o " + path("a.exr")), 0) << log();
+  ASSERT_EQ(run(kRender + aov + "--sample-range 3:8 -o " + path("b.exr")), 0) << log();
+  ASSERT_EQ(run("merge " + path("a.exr") + " " + path("b.exr") + " -o " + path("merged.exr")), 0) << log();
+  EXPECT_EQ(channel_names(path("full.exr")), (std::set<std::string>{"R", "G", "B", "variance.R", "variance.G", "variance.B"}));
+  const std::vector<std::string> names{"variance.R", "variance.G", "variance.B"};
+  const auto merged = read_exr_channels(path("merged.exr"), names), full = read_exr_channels(path("full.exr"), names);
+  ASSERT_TRUE(merged && full);
+  float largest = 0.0f;
+  for (std::size_t i = 0; i < full->size(); ++i) {
+    EXPECT_NEAR((*merged)[i], (*full)[i], 1e-4f * (*full)[i] + 1e-30f) << "value " << i;
+    largest = std::max(largest, (*full)[i]);
+  }
+  EXPECT_GT(largest, 0.0f);
+}
+
 TEST_F(AovCli, ViewNormalShowsTheNormalAov) {
   // --view normal turns the normal AOV on, so the EXR written beside the PNG holds it.
   ASSERT_EQ(run(kRender + "--spp 1 --view normal -o " + path("n.exr") + " -o " + path("n.png")), 0) << log();

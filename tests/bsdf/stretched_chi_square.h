@@ -24,7 +24,7 @@ inline ChiSquareResult stretched_chi_square(const std::function<bool(Vec2f, Vec3
                                             const std::function<double(const Vec3f&)>& pdf,
                                             const Vec3f& axis, float s, long sample_count,
                                             unsigned long long seed, int cos_bins = 20,
-                                            int phi_bins = 40) {
+                                            int phi_bins = 40, int simpson_intervals = 8) {
   const Frame frame = Frame::from_normal(normalize(axis));
   auto forward = [=](const Vec3f& w) {
     const Vec3f l = frame.to_local(w);
@@ -44,7 +44,7 @@ inline ChiSquareResult stretched_chi_square(const std::function<bool(Vec2f, Vec3
         const double len = length(Vec3<double>(v));
         return pdf(v / static_cast<float>(len)) * double(sx) * double(sy) / (len * len * len);
       },
-      cos_bins, phi_bins, sample_count, seed);
+      cos_bins, phi_bins, sample_count, seed, simpson_intervals);
   return chi_square_test(h.observed, h.expected);
 }
 

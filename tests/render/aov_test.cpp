@@ -44,9 +44,11 @@ TEST(AovList, ParsesSubsetsAndRejectsBadNames) {
   EXPECT_EQ(parse_aov_list("depth,albedo"), (AovSet{true, false, true}));
   EXPECT_EQ(parse_aov_list("normal"), (AovSet{false, true, false}));
   EXPECT_EQ(format_aov_list(parse_aov_list("depth,normal")), "normal,depth");
+  EXPECT_EQ(parse_aov_list("variance,albedo"), (AovSet{true, false, false, true}));
+  EXPECT_EQ(format_aov_list(parse_aov_list("variance,depth")), "depth,variance");
   for (const char* bad : {"", "albedo,", "Albedo", "z", "normal,normal", "albedo normal"})
     EXPECT_THROW(parse_aov_list(bad), UsageError) << bad;
-  for (unsigned bits = 0; bits < 8; ++bits) EXPECT_EQ(AovSet::from_bits(bits).bits(), bits);
+  for (unsigned bits = 0; bits < 16; ++bits) EXPECT_EQ(AovSet::from_bits(bits).bits(), bits);
 }
 
 // Rows 19–24 and columns 28–35 of a 64² render look at the back wall through

@@ -117,15 +117,16 @@ TEST(Checkpoint, CorruptTruncatedAndForeignFilesAreRefused) {
 bool aovs_identical(const Film& a, const Film& b) {
   const FilmAovSums &x = a.aov_sums(), &y = b.aov_sums();
   return x.set == y.set && x.albedo == y.albedo && x.normal == y.normal && x.depth == y.depth &&
-         x.depth_hits == y.depth_hits;
+         x.depth_hits == y.depth_hits && x.cross == y.cross;
 }
 
 TEST(Checkpoint, AovsRoundTripAndResumeBitwiseIdentically) {
   const Scene scene = make_cornell_box();
   RenderSettings full = settings_for_test(5);
-  full.aovs = AovSet{true, true, true};
+  full.aovs = AovSet{true, true, true, true};
   const RenderResult reference = render(scene, full);
-  for (const AovSet set : {AovSet{true, true, true}, AovSet{false, true, false}, AovSet{true, false, true}}) {
+  for (const AovSet set : {AovSet{true, true, true, true}, AovSet{false, true, false}, AovSet{true, false, true},
+                           AovSet{false, false, false, true}}) {
     RenderSettings s = full;
     s.aovs = set;
     std::atomic<bool> cancel{false};

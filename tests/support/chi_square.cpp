@@ -103,7 +103,7 @@ ChiSquareResult chi_square_test(std::span<const double> observed, std::span<cons
 SphericalHistogram spherical_histogram(const std::function<bool(Vec2f, Vec3f&)>& sample,
                                        const std::function<double(const Vec3f&)>& pdf,
                                        int cos_theta_bins, int phi_bins, long sample_count,
-                                       unsigned long long seed) {
+                                       unsigned long long seed, int simpson_intervals) {
   constexpr double kTwoPi = 6.283185307179586;
   SphericalHistogram h;
   h.observed.assign(static_cast<std::size_t>(cos_theta_bins * phi_bins), 0.0);
@@ -123,7 +123,7 @@ SphericalHistogram spherical_histogram(const std::function<bool(Vec2f, Vec3f&)>&
 
   // Integrate the pdf over each bin with a 2D Simpson rule in (cos θ, φ); the solid-angle
   // measure is exactly d(cos θ) dφ, so no Jacobian is needed.
-  constexpr int kSub = 8;  // Simpson intervals per bin and axis (even)
+  const int kSub = simpson_intervals + simpson_intervals % 2;  // per bin and axis (even)
   const double dc = 2.0 / cos_theta_bins, dp = kTwoPi / phi_bins;
   for (int ci = 0; ci < cos_theta_bins; ++ci) {
     for (int pi = 0; pi < phi_bins; ++pi) {

@@ -34,7 +34,10 @@ ChiSquareResult chi_square_test(std::span<const double> observed,
 
 // Histograms `sample_count` directions drawn by `sample` over a (cos θ, φ) grid covering
 // the whole sphere and integrates `pdf` (solid-angle density) over each bin. Directions
-// that `sample` reports as failed (returns false) count as absent mass.
+// that `sample` reports as failed (returns false) count as absent mass. Each bin's pdf
+// integral is a 2D Simpson rule with `simpson_intervals` (even) intervals per axis: ample
+// for smooth densities; a density that jumps inside a bin (a lobe cut off along a curve)
+// integrates only to O(1/intervals) there and needs more.
 struct SphericalHistogram {
   std::vector<double> observed;
   std::vector<double> expected;
@@ -42,6 +45,6 @@ struct SphericalHistogram {
 SphericalHistogram spherical_histogram(
     const std::function<bool(Vec2f u, Vec3f& direction)>& sample,
     const std::function<double(const Vec3f& direction)>& pdf, int cos_theta_bins, int phi_bins,
-    long sample_count, unsigned long long seed);
+    long sample_count, unsigned long long seed, int simpson_intervals = 8);
 
 }  // namespace prism::test

@@ -14,13 +14,14 @@
 #include "prism/bsdf/metallic_roughness.h"
 #include "prism/bsdf/rough_conductor.h"
 #include "prism/bsdf/specular_reflection.h"
+#include "prism/bsdf/thin_dielectric.h"
 
 namespace prism::bsdf {
 
 template <int N>
 struct Bsdf {
   using Lobe = std::variant<Lambertian<N>, SpecularReflection<N>, RoughConductor<N>,
-                            Dielectric<N>, MetallicRoughness<N>>;
+                            Dielectric<N>, MetallicRoughness<N>, ThinDielectric<N>>;
   Lobe lobe;
 
   color::SampledSpectrum<N> eval(const Vec3f& wo, const Vec3f& wi,
@@ -50,7 +51,7 @@ struct Bsdf {
     return std::visit(
         [](const auto& l) {
           using T = std::decay_t<decltype(l)>;
-          if constexpr (std::is_same_v<T, SpecularReflection<N>>) return true;
+          if constexpr (std::is_same_v<T, SpecularReflection<N>> || std::is_same_v<T, ThinDielectric<N>>) return true;
           else if constexpr (std::is_same_v<T, RoughConductor<N>> || std::is_same_v<T, Dielectric<N>>)
             return l.is_specular();
           else return false;

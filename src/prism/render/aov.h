@@ -14,6 +14,11 @@
 //   depth   distance along the (unit) camera ray to the first hit, in scene units; pixels
 //           average it over the samples that hit something (+inf where none did, the
 //           usual "no surface" value of an EXR Z channel).
+//   variance  of the beauty's pixel mean, per channel of the output space (EXR `--exr-space`):
+//           the film keeps the full second-moment matrix of the film-space samples (the
+//           three cross sums beside the beauty's squares), because per-channel variances do
+//           not convert through a 3×3 colour matrix; Var(m_k·x̄) = m_kᵀ C m_k / n is exact
+//           for any output row m_k. Not a first-hit AOV: it describes the whole estimate.
 // Each AOV is averaged over the pixel's samples with the beauty's box filter; a sample
 // whose beauty is discarded as NaN/Inf is discarded from the AOVs too.
 #include <string>
@@ -26,17 +31,24 @@ struct AovSet {
   bool albedo = false;
   bool normal = false;
   bool depth = false;
-  bool any() const { return albedo || normal || depth; }
+  bool variance = false;
+  bool any() const { return albedo || normal || depth || variance; }
+  bool first_hit() const { return albedo || normal || depth; }
   bool operator==(const AovSet&) const = default;
-  // One bit per AOV (albedo 1, normal 2, depth 4): checkpoints and fingerprints store it.
-  unsigned bits() const { return (albedo ? 1u : 0u) | (normal ? 2u : 0u) | (depth ? 4u : 0u); }
-  static AovSet from_bits(unsigned bits) { return {(bits & 1u) != 0, (bits & 2u) != 0, (bits & 4u) != 0}; }
+  // One bit per AOV (albedo 1, normal 2, depth 4, variance 8): checkpoints and fingerprints
+  // store it.
+  unsigned bits() const {
+    return (albedo ? 1u : 0u) | (normal ? 2u : 0u) | (depth ? 4u : 0u) | (variance ? 8u : 0u);
+  }
+  static AovSet from_bits(unsigned bits) {
+    return {(bits & 1u) != 0, (bits & 2u) != 0, (bits & 4u) != 0, (bits & 8u) != 0};
+  }
 };
 
-// "albedo,normal,depth" (any non-empty subset, any order, each at most once); throws
-// UsageError naming the bad entry and the valid names.
+// "albedo,normal,depth,variance" (any non-empty subset, any order, each at most once);
+// throws UsageError naming the bad entry and the valid names.
 AovSet parse_aov_list(const std::string& text);
-// "albedo,normal,depth" order; "" for the empty set.
+// "albedo,normal,depth,variance" order; "" for the empty set.
 std::string format_aov_list(const AovSet& aovs);
 
 // What one sample's camera ray saw first (written by the integrator, added by the film).

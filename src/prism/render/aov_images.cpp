@@ -9,6 +9,7 @@ AovImages film_aov_images(const Film& film, const Mat3& film_to_output) {
   const auto rgb_image = [&] { return ImageRgbF{film.width(), film.height(), std::vector<float>(3 * n)}; };
   if (out.set.albedo) out.albedo = rgb_image();
   if (out.set.normal) out.normal = rgb_image();
+  if (out.set.variance) out.variance = rgb_image();
   if (out.set.depth) {
     out.depth.resize(n);
     out.depth_coverage.resize(n);
@@ -21,6 +22,10 @@ AovImages film_aov_images(const Film& film, const Mat3& film_to_output) {
     if (out.set.normal) {
       const Vec3d v = film.normal_mean(i);
       for (int c = 0; c < 3; ++c) out.normal.rgb[3 * i + c] = static_cast<float>(v[c]);
+    }
+    if (out.set.variance) {
+      const Vec3d v = film.variance_of_mean(i, film_to_output);
+      for (int c = 0; c < 3; ++c) out.variance.rgb[3 * i + c] = static_cast<float>(v[c]);
     }
     if (out.set.depth) {
       out.depth[i] = static_cast<float>(film.depth_mean(i));

@@ -15,10 +15,11 @@ struct AovImages {
   ImageRgbF normal;                    // world-space x, y, z
   std::vector<float> depth;            // scene units; +inf where no sample hit a surface
   std::vector<float> depth_coverage;   // fraction of samples that hit (what depth averages over)
+  ImageRgbF variance;                  // of the beauty's pixel mean, per output channel
 };
 
 // `film_to_output` converts the film's colour space to the output's (the albedo's only
-// colour transform; identity keeps film values).
+// colour transform, and the one the variance is taken through; identity keeps film values).
 AovImages film_aov_images(const Film& film, const Mat3& film_to_output);
 
 }  // namespace prism

@@ -20,7 +20,7 @@ constexpr std::size_t kHeaderBytes = 8 + 4 + 8 + 4 * 4 + 4;
 constexpr std::size_t kPixelBytes = 6 * 8 + 4;
 
 std::size_t aov_pixel_bytes(const AovSet& a) {
-  return (a.albedo ? 3 * 8 : 0) + (a.normal ? 3 * 8 : 0) + (a.depth ? 8 + 4 : 0);
+  return (a.albedo ? 3 * 8 : 0) + (a.normal ? 3 * 8 : 0) + (a.depth ? 8 + 4 : 0) + (a.variance ? 3 * 8 : 0);
 }
 
 std::uint64_t fnv1a(const unsigned char* data, std::size_t size) {
@@ -84,6 +84,8 @@ void write_checkpoint(const std::filesystem::path& path, const Checkpoint& c) {
       w.put(aov.depth[i]);
       w.put(aov.depth_hits[i]);
     }
+    if (aov.set.variance)
+      for (int k = 0; k < 3; ++k) w.put(aov.cross[i][k]);
   }
   w.put(fnv1a(w.bytes().data(), w.bytes().size()));
 
@@ -119,7 +121,7 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
   c.first_sample = r.get<std::int32_t>();
   c.next_sample = r.get<std::int32_t>();
   const auto aov_bits = r.get<std::uint32_t>();
-  if (aov_bits > 7u) throw fail("corrupt header (unknown AOVs)");
+  if (aov_bits > 15u) throw fail("corrupt header (unknown AOVs)");
   FilmAovSums aov;
   aov.set = AovSet::from_bits(aov_bits);
   // Check the size before trusting the header's dimensions for an allocation.
@@ -140,6 +142,7 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
     aov.depth.resize(pixels);
     aov.depth_hits.resize(pixels);
   }
+  if (aov.set.variance) aov.cross.resize(pixels);
   for (std::size_t i = 0; i < pixels; ++i) {
     for (int k = 0; k < 3; ++k) sums[i][k] = r.get<double>();
     for (int k = 0; k < 3; ++k) squares[i][k] = r.get<double>();
@@ -153,6 +156,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
       aov.depth_hits[i] = r.get<std::uint32_t>();
       if (aov.depth_hits[i] > counts[i]) throw fail("corrupt depth AOV (more hits than samples)");
     }
+    if (aov.set.variance)
+      for (int k = 0; k < 3; ++k) aov.cross[i][k] = r.get<double>();
   }
   c.film = Film(width, height, std::move(sums), std::move(squares), std::move(counts), std::move(aov));
   return c;

@@ -12,7 +12,8 @@ namespace {
 bool aov_sizes_match(const FilmAovSums& a, std::size_t pixels) {
   const auto size_ok = [pixels](bool on, std::size_t size) { return size == (on ? pixels : 0u); };
   return size_ok(a.set.albedo, a.albedo.size()) && size_ok(a.set.normal, a.normal.size()) &&
-         size_ok(a.set.depth, a.depth.size()) && size_ok(a.set.depth, a.depth_hits.size());
+         size_ok(a.set.depth, a.depth.size()) && size_ok(a.set.depth, a.depth_hits.size()) &&
+         size_ok(a.set.variance, a.cross.size());
 }
 
 }  // namespace
@@ -23,6 +24,7 @@ Film::Film(int width, int height, AovSet aovs)
   aov_.set = aovs;
   if (aovs.albedo) aov_.albedo.resize(pixel_count());
   if (aovs.normal) aov_.normal.resize(pixel_count());
+  if (aovs.variance) aov_.cross.resize(pixel_count());
   if (aovs.depth) {
     aov_.depth.resize(pixel_count(), 0.0);
     aov_.depth_hits.resize(pixel_count(), 0u);
@@ -50,6 +52,22 @@ Vec3d Film::variance_of_mean(std::size_t pixel) const {
   Vec3d s2 = (sum_squares_[pixel] - m * m * n) / (n - 1.0);
   s2 = max(s2, Vec3d(0.0));
   return s2 / n;
+}
+
+Vec3d Film::variance_of_mean(std::size_t pixel, const Mat3& m) const {
+  const double n = count_[pixel];
+  if (n < 2.0) return Vec3d(0.0);
+  // Sample covariance C = (Σ x xᵀ − n x̄ x̄ᵀ) / (n − 1), from the squares and cross sums.
+  const Vec3d mean = sum_[pixel] / n, sq = sum_squares_[pixel], cr = aov_.cross[pixel];
+  const double second[3][3] = {{sq.x, cr.x, cr.y}, {cr.x, sq.y, cr.z}, {cr.y, cr.z, sq.z}};
+  Vec3d out;
+  for (int k = 0; k < 3; ++k) {
+    double q = 0.0;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) q += m(k, i) * m(k, j) * (second[i][j] - n * mean[i] * mean[j]);
+    out[k] = std::max(0.0, q / (n - 1.0)) / n;
+  }
+  return out;
 }
 
 Vec3d Film::albedo_mean(std::size_t pixel) const {

@@ -6,16 +6,19 @@
 #include <cstdint>
 #include <vector>
 
+#include "prism/core/mat3.h"
 #include "prism/core/vec.h"
 #include "prism/render/aov.h"
 
 namespace prism {
 
 // Raw AOV state: sums over the pixel's samples (albedo, normal, depth over the samples
-// that hit) and the number of samples that hit. Vectors of AOVs not in `set` are empty.
+// that hit) and the number of samples that hit; for the variance AOV the beauty's cross
+// sums (Σ xy, Σ xz, Σ yz of the film-space samples). Vectors of AOVs not in `set` are empty.
 struct FilmAovSums {
   AovSet set;
   std::vector<Vec3d> albedo, normal;
+  std::vector<Vec3d> cross;
   std::vector<double> depth;
   std::vector<std::uint32_t> depth_hits;
 };
@@ -35,6 +38,7 @@ class Film {
   void add_sample(std::size_t pixel, const Vec3d& v) {
     sum_[pixel] += v;
     sum_squares_[pixel] += v * v;
+    if (aov_.set.variance) aov_.cross[pixel] += Vec3d(v.x * v.y, v.x * v.z, v.y * v.z);
     ++count_[pixel];
   }
 
@@ -54,6 +58,9 @@ class Film {
   // Unbiased estimate of the variance of the pixel mean, per channel:
   // s² / n with s² the sample variance (needs n ≥ 2; zero otherwise).
   Vec3d variance_of_mean(std::size_t pixel) const;
+  // The same for each channel of `film_to_output` · x (variance AOV only): row k of the
+  // matrix applied to the sample covariance, m_kᵀ C m_k / n, exact for any linear output.
+  Vec3d variance_of_mean(std::size_t pixel, const Mat3& film_to_output) const;
 
   const std::vector<Vec3d>& sums() const { return sum_; }
   const std::vector<Vec3d>& sum_squares() const { return sum_squares_; }

@@ -52,10 +52,11 @@ float channel_wavelength_nm(const Wavelengths<Mode>& w, int channel) {
 
 template <class Mode>
 bsdf::Bsdf<Mode::kChannels> make_bsdf(const Material& m, std::uint32_t material_index, const Spectrum<Mode>& base,
-                                      const Wavelengths<Mode>& w, const MaterialTables& tables) {
+                                      const MaterialPoint& point, const Wavelengths<Mode>& w,
+                                      const MaterialTables& tables) {
   constexpr int N = Mode::kChannels;
   // glTF and pbrt give perceptual roughness r; the microfacet α is r² (Burley 2012).
-  const float alpha = m.roughness * m.roughness;
+  const float alpha = point.roughness * point.roughness;
   const auto distribution = bsdf::MicrofacetDistribution::isotropic(microfacet_type(m.microfacet), alpha);
   switch (m.type) {
     case MaterialType::mirror: return {bsdf::SpecularReflection<N>{base}};
@@ -77,22 +78,25 @@ bsdf::Bsdf<Mode::kChannels> make_bsdf(const Material& m, std::uint32_t material_
         const double nm = Mode::kSpectral ? channel_wavelength_nm<Mode>(w, c) : kDLineWavelengthNm;
         eta[c] = static_cast<float>(dielectric_ior(m, nm));
       }
+      // Thin-walled (glTF transmission without KHR_materials_volume, pbrt's
+      // thindielectric): a smooth slab, roughness ignored (bsdf/thin_dielectric.h).
+      if (m.thin_walled) return {bsdf::ThinDielectric<N>{eta}};
       return {bsdf::Dielectric<N>{eta, distribution}};
     }
     case MaterialType::metallic_roughness:
-      return {bsdf::MetallicRoughness<N>::from_roughness(base, std::clamp(m.metallic, 0.0f, 1.0f), m.roughness)};
+      return {bsdf::MetallicRoughness<N>::from_roughness(base, std::clamp(point.metallic, 0.0f, 1.0f), point.roughness)};
     case MaterialType::diffuse: break;
   }
   return {bsdf::Lambertian<N>{base}};
 }
 
-template bsdf::Bsdf<3> make_bsdf<SpectralMode<3>>(const Material&, std::uint32_t, const Spectrum<SpectralMode<3>>&,
+template bsdf::Bsdf<3> make_bsdf<SpectralMode<3>>(const Material&, std::uint32_t, const Spectrum<SpectralMode<3>>&, const MaterialPoint&,
                                                    const Wavelengths<SpectralMode<3>>&, const MaterialTables&);
-template bsdf::Bsdf<4> make_bsdf<SpectralMode<4>>(const Material&, std::uint32_t, const Spectrum<SpectralMode<4>>&,
+template bsdf::Bsdf<4> make_bsdf<SpectralMode<4>>(const Material&, std::uint32_t, const Spectrum<SpectralMode<4>>&, const MaterialPoint&,
                                                    const Wavelengths<SpectralMode<4>>&, const MaterialTables&);
-template bsdf::Bsdf<8> make_bsdf<SpectralMode<8>>(const Material&, std::uint32_t, const Spectrum<SpectralMode<8>>&,
+template bsdf::Bsdf<8> make_bsdf<SpectralMode<8>>(const Material&, std::uint32_t, const Spectrum<SpectralMode<8>>&, const MaterialPoint&,
                                                    const Wavelengths<SpectralMode<8>>&, const MaterialTables&);
-template bsdf::Bsdf<3> make_bsdf<RgbMode>(const Material&, std::uint32_t, const Spectrum<RgbMode>&,
+template bsdf::Bsdf<3> make_bsdf<RgbMode>(const Material&, std::uint32_t, const Spectrum<RgbMode>&, const MaterialPoint&,
                                           const Wavelengths<RgbMode>&, const MaterialTables&);
 
 }  // namespace prism

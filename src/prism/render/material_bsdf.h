@@ -32,12 +32,20 @@ class MaterialTables {
 inline constexpr std::array<float, 3> kRgbRepresentativeWavelengthsNm = {630.0f, 532.0f, 465.0f};
 inline constexpr float kDLineWavelengthNm = 587.56f;
 
+// A material's scalar parameters at one shading point, after its textures (glTF's
+// metallicRoughnessTexture multiplies the factors: G channel roughness, B metallic).
+struct MaterialPoint {
+  float roughness = 0.5f;  // perceptual roughness r; α = r²
+  float metallic = 0.0f;
+};
+inline MaterialPoint untextured_point(const Material& m) { return {m.roughness, m.metallic}; }
+
 // Index of refraction of a dielectric material at one wavelength.
 double dielectric_ior(const Material& m, double wavelength_nm);
 
 template <class Mode>
 bsdf::Bsdf<Mode::kChannels> make_bsdf(const Material& material, std::uint32_t material_index,
-                                      const Spectrum<Mode>& base_color, const Wavelengths<Mode>& wavelengths,
-                                      const MaterialTables& tables);
+                                      const Spectrum<Mode>& base_color, const MaterialPoint& point,
+                                      const Wavelengths<Mode>& wavelengths, const MaterialTables& tables);
 
 }  // namespace prism

@@ -27,10 +27,11 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderSettings& 
                                static_cast<std::uint64_t>(settings.height > 0 ? settings.height : 0);
   const AovSet& a = settings.aovs;
   const std::uint64_t aov_film = (a.albedo ? kAlbedoBytesPerPixel : 0) + (a.normal ? kNormalBytesPerPixel : 0) +
-                                 (a.depth ? kDepthBytesPerPixel : 0);
-  const std::uint64_t aov_channels = (a.albedo ? 3 : 0) + (a.normal ? 3 : 0) + (a.depth ? 2 : 0);  // Z + coverage
+                                 (a.depth ? kDepthBytesPerPixel : 0) + (a.variance ? kCrossSumBytesPerPixel : 0);
+  const std::uint64_t aov_channels =
+      (a.albedo ? 3 : 0) + (a.normal ? 3 : 0) + (a.depth ? 2 : 0) + (a.variance ? 3 : 0);  // Z + coverage
   e.film = pixels * (kFilmBytesPerPixel + aov_film);
-  e.path_pool = pixels * (kPathPoolBytesPerPixel + (a.any() ? kAovSlotBytesPerPixel : 0));
+  e.path_pool = pixels * (kPathPoolBytesPerPixel + (a.first_hit() ? kAovSlotBytesPerPixel : 0));
   e.images = pixels * (kImageBytesPerPixel + aov_channels * kAovImageBytesPerChannel);
 
   // The loaded texels, the flattened scene's copy and a mip pyramid (4/3 of the image).

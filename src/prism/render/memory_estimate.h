@@ -27,6 +27,7 @@ inline constexpr std::uint64_t kFilmBytesPerPixel = 2 * 3 * sizeof(double) + siz
 inline constexpr std::uint64_t kAlbedoBytesPerPixel = 3 * sizeof(double);
 inline constexpr std::uint64_t kNormalBytesPerPixel = 3 * sizeof(double);
 inline constexpr std::uint64_t kDepthBytesPerPixel = sizeof(double) + sizeof(std::uint32_t);
+inline constexpr std::uint64_t kCrossSumBytesPerPixel = 3 * sizeof(double);  // variance AOV
 inline constexpr std::uint64_t kAovSlotBytesPerPixel = 32;  // sizeof(AovSample), checked in memory_estimate.cpp
 inline constexpr std::uint64_t kPathPoolBytesPerPixel = 250;
 inline constexpr std::uint64_t kImageBytesPerPixel = 2 * 3 * sizeof(float);

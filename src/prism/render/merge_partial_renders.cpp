@@ -62,11 +62,31 @@ std::vector<float> merged_depth(const std::vector<PartialRender>& parts) {
   return out;
 }
 
+// Variance of the merged pixel mean, per channel, from each part's sample count n, mean m
+// and variance of the mean v: its sum of squared deviations is M2 = n (n − 1) v, and the
+// parts combine by Chan, Golub & LeVeque (1979): M2 = Σ M2_i + Σ n_i (m_i − m)², m the
+// merged mean. Every term is non-negative, so no cancellation (unlike Σx² − n m²) in the
+// float values the files hold. A one-sample part has M2 = 0, exactly.
+ImageRgbF merged_variance(const std::vector<PartialRender>& parts, const ImageRgbF& merged_mean, double samples) {
+  ImageRgbF out{merged_mean.width, merged_mean.height, std::vector<float>(merged_mean.rgb.size())};
+  for (std::size_t i = 0; i < out.rgb.size(); ++i) {
+    double m2 = 0.0;
+    for (const auto& p : parts) {
+      const double n = p.sample_end - p.sample_begin;
+      const double d = double(p.image.rgb[i]) - merged_mean.rgb[i];
+      m2 += n * (n - 1.0) * p.aovs.variance.rgb[i] + n * d * d;
+    }
+    out.rgb[i] = samples >= 2.0 ? static_cast<float>(m2 / (samples - 1.0) / samples) : 0.0f;
+  }
+  return out;
+}
+
 void check_aov_sizes(const PartialRender& p) {
   const std::size_t pixels = static_cast<std::size_t>(p.image.width) * static_cast<std::size_t>(p.image.height);
   const AovImages& a = p.aovs;
   const bool ok = (!a.set.albedo || a.albedo.rgb.size() == 3 * pixels) && (!a.set.normal || a.normal.rgb.size() == 3 * pixels) &&
-                  (!a.set.depth || (a.depth.size() == pixels && a.depth_coverage.size() == pixels));
+                  (!a.set.depth || (a.depth.size() == pixels && a.depth_coverage.size() == pixels)) &&
+                  (!a.set.variance || a.variance.rgb.size() == 3 * pixels);
   if (!ok) throw UsageError(fmt::format("'{}' has AOV layers of the wrong size", p.name));
 }
 
@@ -116,6 +136,7 @@ MergedRender merge_partial_renders(const std::vector<PartialRender>& parts) {
     merged.aovs.depth = merged_depth(parts);
     merged.aovs.depth_coverage = weighted_mean(parts, &AovImages::depth_coverage);
   }
+  if (first.aovs.set.variance) merged.aovs.variance = merged_variance(parts, merged.image, merged.samples);
   return merged;
 }
 

@@ -9,6 +9,7 @@
 #include "prism/core/parallel.h"
 #include "prism/render/material_bsdf.h"
 #include "prism/render/surface_interaction.h"
+#include "prism/scene/emission.h"
 #include "prism/sampling/warps.h"
 
 namespace prism {
@@ -46,6 +47,8 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
       tables_(scene.materials), scene_(scene), accel_(accel), lights_(lights), camera_(camera), colors_(colors), settings_(settings),
       width_(width), height_(height), seed_(seed), regenerate_(regenerate) {
   for (const TextureImage& texture : scene.textures) textures_.push_back(build_mip_pyramid(texture));
+  for (const Material& m : scene.materials)
+    textured_emission_.push_back(textured_emission_matrix(m.emission, color::color_space("srgb")));
 }
 
 template <class Mode>
@@ -59,18 +62,62 @@ Spectrum<Mode> WavefrontIntegrator<Mode>::base_color(const Material& m, const Su
 }
 
 template <class Mode>
+bool WavefrontIntegrator<Mode>::has_texture(int texture, std::uint32_t mesh) const {
+  return texture >= 0 && static_cast<std::size_t>(texture) < textures_.size() && !scene_.meshes[mesh].uvs.empty();
+}
+
+template <class Mode>
+TexelRgba WavefrontIntegrator<Mode>::texel_at(int texture, Vec2f uv, float level_of_detail) const {
+  const auto t = static_cast<std::size_t>(texture);
+  return sample_trilinear(textures_[t], apply_uv_transform(scene_.textures[t], uv), level_of_detail);
+}
+
+template <class Mode>
+std::optional<TexelRgba> WavefrontIntegrator<Mode>::texel_at_hit(int texture, const SurfaceInteraction& si,
+                                                                 float cone_width, const Ray& ray) const {
+  if (!has_texture(texture, si.mesh)) return std::nullopt;
+  const float lod = mip_level_from_ray_cone(textures_[static_cast<std::size_t>(texture)], cone_width,
+                                            std::abs(dot(ray.direction, si.geometric_normal)), si.uv_area, si.world_area);
+  return texel_at(texture, si.uv, lod);
+}
+
+template <class Mode>
 std::optional<Vec3f> WavefrontIntegrator<Mode>::textured_base_color(const Material& m, const SurfaceInteraction& si,
                                                                    float cone_width, const Ray& ray) const {
-  const int t = m.base_color_texture;
-  const TriangleMesh& mesh = scene_.meshes[si.mesh];
-  if (t < 0 || static_cast<std::size_t>(t) >= textures_.size() || mesh.uvs.empty()) return std::nullopt;
-  const TextureImage& image = scene_.textures[static_cast<std::size_t>(t)];
-  const float lod = mip_level_from_ray_cone(textures_[static_cast<std::size_t>(t)], cone_width,
-                                            std::abs(dot(ray.direction, si.geometric_normal)), si.uv_area, si.world_area);
-  const TexelRgba texel = sample_trilinear(textures_[static_cast<std::size_t>(t)], apply_uv_transform(image, si.uv), lod);
+  const auto texel = texel_at_hit(m.base_color_texture, si, cone_width, ray);
+  if (!texel) return std::nullopt;
   // Grey and two-channel textures carry luminance in their first channel.
-  const Vec3f rgb = image.channels >= 3 ? Vec3f(texel[0], texel[1], texel[2]) : Vec3f(texel[0]);
+  const bool colour = scene_.textures[static_cast<std::size_t>(m.base_color_texture)].channels >= 3;
+  const Vec3f rgb = colour ? Vec3f((*texel)[0], (*texel)[1], (*texel)[2]) : Vec3f((*texel)[0]);
   return rgb * m.base_color;
+}
+
+template <class Mode>
+MaterialPoint WavefrontIntegrator<Mode>::material_point(const Material& m, const SurfaceInteraction& si,
+                                                        float cone_width, const Ray& ray) const {
+  MaterialPoint point = untextured_point(m);
+  // glTF 2.0 §3.9.2: metallicRoughnessTexture's G channel scales roughnessFactor, B scales
+  // metallicFactor (linear data). Grey textures expand to (g, g, g), so both use g.
+  if (const auto texel = texel_at_hit(m.metallic_roughness_texture, si, cone_width, ray)) {
+    point.roughness *= (*texel)[1];
+    point.metallic *= (*texel)[2];
+  }
+  return point;
+}
+
+template <class Mode>
+Spectrum<Mode> WavefrontIntegrator<Mode>::emitted_radiance(std::uint32_t material, bool has_uv, Vec2f uv,
+                                                           float level_of_detail, const Wavelengths<Mode>& wl) const {
+  if (!has_uv) return colors_.emission(material, wl);  // also every non-geometric light
+  const int texture = scene_.materials[material].emission.texture;
+  if (texture < 0 || static_cast<std::size_t>(texture) >= textures_.size()) return colors_.emission(material, wl);
+  const TexelRgba t = texel_at(texture, uv, level_of_detail);
+  const bool colour = scene_.textures[static_cast<std::size_t>(texture)].channels >= 3;
+  const Vec3d texel = colour ? Vec3d(t[0], t[1], t[2]) : Vec3d(t[0]);
+  // Rec.709 radiance in nits, then the transport's own conversion (as for environment
+  // texels): RGB modes convert to the working space, spectral modes upsample with the
+  // E-relative scaling, so a grey texel gives the same spectrum as the untextured emitter.
+  return colors_.rgb_radiance(Vec3f(textured_emission_[material] * texel), wl);
 }
 
 template <class Mode>
@@ -118,6 +165,7 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
 
   const SurfaceInteraction si = surface_interaction(scene_, p.hit[slot], ray);
   const Material& material = scene_.materials[si.material];
+  p.cone_width[slot] += p.cone_spread[slot] * p.hit[slot].t;  // the ray cone's width at this hit
   if (material.is_emissive() && (si.front_face || material.emission.two_sided)) {
     float w = 1.0f;
     if (!p.prev_specular[slot] && use_nee) {
@@ -129,16 +177,25 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
         w = 0.0f;  // NEE only: emitters found by BSDF sampling are left to light sampling
       }
     }
-    L += beta * colors_.emission(si.material, wl) * w;
+    // Emission textures: the ray cone's LOD only where the hit is counted alone (camera
+    // rays, after delta bounces: no NEE estimates the same light); where it is combined
+    // with NEE the finest level, as NEE evaluates it at its sampled point, so both
+    // techniques estimate one function and MIS stays unbiased.
+    float lod = 0.0f;
+    const int emission_texture = material.emission.texture;
+    const bool textured = has_texture(emission_texture, si.mesh);
+    if (textured && p.prev_specular[slot])
+      lod = mip_level_from_ray_cone(textures_[static_cast<std::size_t>(emission_texture)], p.cone_width[slot],
+                                    std::abs(si.cos_wo_geometric), si.uv_area, si.world_area);
+    L += beta * emitted_radiance(si.material, textured, si.uv, lod, wl) * w;
   }
   if (p.depth[slot] + 1 > settings_.max_depth) {
     p.finished[slot] = 1;
     return;
   }
 
-  p.cone_width[slot] += p.cone_spread[slot] * p.hit[slot].t;
-  const auto bsdf = make_bsdf<Mode>(material, si.material, base_color(material, si, p.cone_width[slot], ray, wl), wl,
-                                    tables_);
+  const auto bsdf = make_bsdf<Mode>(material, si.material, base_color(material, si, p.cone_width[slot], ray, wl),
+                                    material_point(material, si, p.cone_width[slot], ray), wl, tables_);
   if constexpr (Mode::kSpectral) {
     // Hero wavelength after a dispersive event (Wilkie et al. 2014): from here on only
     // channel 0 carries an estimate; terminate once (pdf[1] = 0 marks it done).
@@ -174,7 +231,8 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
           }
           p.shadow_ray[slot] = Ray{origin, dir, 0.0f, t_max};
           const Spectrum<Mode> Le =
-              ls->has_rgb ? colors_.rgb_radiance(ls->rgb, wl) : colors_.emission(ls->emitter, wl) * ls->scale;
+              ls->has_rgb ? colors_.rgb_radiance(ls->rgb, wl)
+                          : emitted_radiance(ls->emitter, ls->has_uv, ls->uv, 0.0f, wl) * ls->scale;
           p.shadow_contribution[slot] = beta * f * Le * (std::abs(wi_local.z) * w / ls->pdf);
           p.shadow_pending[slot] = 1;
         }
@@ -242,7 +300,7 @@ template <class Mode>
 PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t first_sample, std::uint32_t count) {
   const auto slots = static_cast<std::uint32_t>(film.pixel_count());
   Paths& p = *paths_;
-  first_hit_aovs_.resize(film.aovs().any() ? slots : 0u);
+  first_hit_aovs_.resize(film.aovs().first_hit() ? slots : 0u);
   std::vector<std::uint32_t> live(slots);
   for (std::uint32_t s = 0; s < slots; ++s) live[s] = s;
   parallel_for(slots, 4096, [&](std::size_t b, std::size_t e) {

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "prism/accel/embree_accel.h"
+#include "prism/core/mat3.h"
 #include "prism/render/aov.h"
 #include "prism/render/color_context.h"
 #include "prism/render/film.h"
@@ -77,6 +78,19 @@ class WavefrontIntegrator {
   // Base colour × texel (linear Rec.709) of a textured material; nothing when untextured.
   std::optional<Vec3f> textured_base_color(const Material& material, const SurfaceInteraction& si, float cone_width,
                                            const Ray& ray) const;
+  // Texture `texture` at the hit, filtered at the ray cone's level of detail; nothing when
+  // the index is unset or the mesh has no uvs. Every material texture uses this LOD.
+  std::optional<TexelRgba> texel_at_hit(int texture, const SurfaceInteraction& si, float cone_width,
+                                        const Ray& ray) const;
+  TexelRgba texel_at(int texture, Vec2f uv, float level_of_detail) const;
+  bool has_texture(int texture, std::uint32_t mesh) const;
+  // Roughness and metallic after the metallic-roughness texture (G, B; linear).
+  MaterialPoint material_point(const Material& material, const SurfaceInteraction& si, float cone_width,
+                               const Ray& ray) const;
+  // Emitted radiance of an emissive material; with an emission texture (and uvs) the
+  // texel at `uv`, filtered at `level_of_detail`, multiplies the emission colour.
+  Spectrum<Mode> emitted_radiance(std::uint32_t material, bool has_uv, Vec2f uv, float level_of_detail,
+                                  const Wavelengths<Mode>& wl) const;
   // Writes first_hit_aovs_[slot] for a camera ray (wavefront_integrator_aovs.cpp); `hit`
   // is null when the ray escaped.
   void record_first_hit_aovs(std::uint32_t slot, const Ray& ray, const Hit* hit, float cone_spread) const;
@@ -89,6 +103,7 @@ class WavefrontIntegrator {
   mutable std::vector<AovSample> first_hit_aovs_;
   MaterialTables tables_;
   std::vector<MipPyramid> textures_;  // one per Scene::textures entry
+  std::vector<Mat3> textured_emission_;  // per material: texel → Rec.709 radiance (scene/emission.h)
   const Scene& scene_;
   const EmbreeAccel& accel_;
   const LightSampler& lights_;

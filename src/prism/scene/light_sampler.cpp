@@ -8,6 +8,8 @@
 #include "prism/core/frame.h"
 #include "prism/color/color_space.h"
 #include "prism/sampling/warps.h"
+#include "prism/scene/emission.h"
+#include "prism/scene/texture_sampling.h"
 
 namespace prism {
 namespace {
@@ -25,6 +27,43 @@ float spot_falloff(float cos_theta, float cos_outer, float cos_inner) {
   return t * t * (3.0f - 2.0f * t);
 }
 
+Vec2f barycentric_uv(Vec2f uv0, Vec2f duv1, Vec2f duv2, Vec2f b) {
+  return {uv0.x + duv1.x * b.x + duv2.x * b.y, uv0.y + duv1.y * b.x + duv2.y * b.y};
+}
+
+// Y(colour ⊙ texel) / Y(colour) of an emission texture at uv (bilinear, finest level).
+double texel_emission_weight(const TextureImage& texture, const Emission& emission, Vec2f uv) {
+  const double y_colour = relative_luminance(emission.color, emission.color_space);
+  if (!(y_colour > 0.0)) return 0.0;
+  const TexelRgba t = sample_bilinear(texture, apply_uv_transform(texture, uv));
+  const Vec3f rgb = texture.channels >= 3 ? Vec3f(t[0], t[1], t[2]) : Vec3f(t[0]);
+  return std::max(0.0, relative_luminance(emission.color * rgb, emission.color_space) / y_colour);
+}
+
+// The texture's mean weight over its texel centres (once per emissive mesh).
+double texture_mean_weight(const TextureImage& texture, const Emission& emission) {
+  double sum = 0.0;
+  for (int y = 0; y < texture.height; ++y)
+    for (int x = 0; x < texture.width; ++x)
+      sum += texel_emission_weight(texture, emission, Vec2f((x + 0.5f) / texture.width, (y + 0.5f) / texture.height));
+  return sum / std::max(1, texture.width * texture.height);
+}
+
+// Relative power of a textured emissive triangle: the mean over its uv footprint of
+// Y(colour ⊙ texel) / Y(colour), by 16 stratified points, plus a floor of 1% of the
+// texture's mean (see the header).
+double textured_triangle_weight(const TextureImage& texture, const Emission& emission, double texture_mean,
+                                Vec2f uv0, Vec2f duv1, Vec2f duv2) {
+  constexpr int kGrid = 4;
+  double sum = 0.0;
+  for (int i = 0; i < kGrid; ++i)
+    for (int j = 0; j < kGrid; ++j) {
+      const Vec2f b = sample_uniform_triangle(Vec2f((i + 0.5f) / kGrid, (j + 0.5f) / kGrid));
+      sum += texel_emission_weight(texture, emission, barycentric_uv(uv0, duv1, duv2, b));
+    }
+  return sum / (kGrid * kGrid) + 0.01 * texture_mean;
+}
+
 }  // namespace
 
 LightSampler::LightSampler(const Scene& scene, const Bounds3f& world) {
@@ -35,6 +74,10 @@ LightSampler::LightSampler(const Scene& scene, const Bounds3f& world) {
     const Material& material = scene.materials[mesh.material];
     if (!material.is_emissive()) continue;
     first_triangle_of_mesh_[m] = static_cast<std::int64_t>(emitters_.size());
+    const int tex = material.emission.texture;
+    const bool textured = tex >= 0 && static_cast<std::size_t>(tex) < scene.textures.size() && !mesh.uvs.empty();
+    const double texture_mean =
+        textured ? texture_mean_weight(scene.textures[static_cast<std::size_t>(tex)], material.emission) : 0.0;
     for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
       const Vec3f& p0 = mesh.positions[mesh.indices[3 * t + 0]];
       const Vec3f& p1 = mesh.positions[mesh.indices[3 * t + 1]];
@@ -50,10 +93,22 @@ LightSampler::LightSampler(const Scene& scene, const Bounds3f& world) {
       e.normal = twice_area > 0.0f ? n / twice_area : Vec3f(0.0f);
       e.area = 0.5f * twice_area;
       e.two_sided = material.emission.two_sided;
+      e.textured = textured;
+      double texture_weight = 1.0;
+      if (e.textured) {
+        e.uv0 = mesh.uvs[mesh.indices[3 * t + 0]];
+        const Vec2f& uv1 = mesh.uvs[mesh.indices[3 * t + 1]];
+        const Vec2f& uv2 = mesh.uvs[mesh.indices[3 * t + 2]];
+        e.duv1 = Vec2f(uv1.x - e.uv0.x, uv1.y - e.uv0.y);
+        e.duv2 = Vec2f(uv2.x - e.uv0.x, uv2.y - e.uv0.y);
+        texture_weight = textured_triangle_weight(scene.textures[static_cast<std::size_t>(tex)], material.emission,
+                                                  texture_mean, e.uv0, e.duv1, e.duv2);
+      }
       emitters_.push_back(e);
       // Lambertian emitter: Φ = π · L · A per emitting side. Zero-area triangles get
       // zero power and are never chosen.
-      power.push_back(kPi * double(material.emission.luminance_nits) * e.area * (e.two_sided ? 2.0 : 1.0));
+      power.push_back(kPi * double(material.emission.luminance_nits) * e.area * (e.two_sided ? 2.0 : 1.0) *
+                      texture_weight);
     }
   }
   const Vec3f diagonal = world.empty() ? Vec3f(1.0f) : world.diagonal();
@@ -207,6 +262,10 @@ std::optional<LightSample> LightSampler::sample_emitter(std::size_t index, const
       const Vec2f b = sample_uniform_triangle(u);
       s.position = e.p0 + e.e1 * b.x + e.e2 * b.y;
       s.normal = e.normal;
+      if (e.textured) {
+        s.has_uv = true;
+        s.uv = barycentric_uv(e.uv0, e.duv1, e.duv2, b);
+      }
       Vec3f d = s.position - reference;
       const float d2 = length_squared(d);
       if (!(d2 > 0.0f)) return std::nullopt;

@@ -1,7 +1,16 @@
 #pragma once
 // Next-event estimation's view of all emitters: emissive triangles, point, spot and
 // directional lights. One emitter is chosen with probability proportional to an estimate
-// of its emitted power (in lumen-like units), then a point or direction on it. Radiance
+// of its emitted power (in lumen-like units), then a point or direction on it.
+//
+// Textured emitters (Emission::texture): a triangle's power is π L A times the mean of
+// Y(colour ⊙ texel)/Y(colour) at 16 stratified points of its uv footprint, plus 1% of the
+// texture's mean. The estimate only steers the selection: any selection probability
+// that is positive wherever the emitted radiance can be is unbiased, and the floor keeps
+// it positive on triangles whose quadrature points all miss a small bright feature. The
+// point on the triangle is still chosen uniformly by area; the integrator evaluates the
+// texture at the sampled uv (finest level) for NEE and at the hit for BSDF-sampled hits,
+// so both techniques estimate the same function and MIS stays unbiased. Radiance
 // values come from the transport mode (render/color_context.h) by emitter id; this class
 // only handles geometry and densities.
 #include <cstdint>
@@ -26,6 +35,8 @@ struct LightSample {
   Vec3f normal;             // emitter normal at the point (area lights)
   bool has_rgb = false;     // environment: radiance is `rgb` (linear Rec.709, nits) times the emitter's tint
   Vec3f rgb;
+  bool has_uv = false;      // triangle of an emitter with an emission texture: `uv` at `position`
+  Vec2f uv;
 };
 
 class LightSampler {
@@ -63,6 +74,8 @@ class LightSampler {
     // triangle
     Vec3f p0, e1, e2, normal;
     float area = 0.0f;
+    bool textured = false;  // uv0 + duv1·b1 + duv2·b2 at barycentrics b
+    Vec2f uv0, duv1, duv2;
     bool two_sided = false;
     // point / spot / directional
     Vec3f position, axis;

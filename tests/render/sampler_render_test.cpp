@@ -77,7 +77,7 @@ TEST(SamplerRender, SampleRangesMergeToTheSingleRender) {
     for (const auto& [begin, end] : {std::pair{0, 2}, std::pair{2, 6}}) {
       RenderSettings s = cornell_settings(k, 24, end, 8);
       s.first_sample = begin;
-      parts.push_back({"part", ImageRgbF{24, 24, render(scene, s).film.mean_rgb()}, begin, end, "same"});
+      parts.push_back({"part", ImageRgbF{24, 24, render(scene, s).film.mean_rgb()}, begin, end, "same", {}});
     }
     const MergedRender merged = merge_partial_renders(parts);
     ASSERT_EQ(merged.image.rgb.size(), expected.size());

@@ -154,7 +154,12 @@ TEST(Microfacet, VisibleNormalSamplingMatchesDensity) {
           return true;
         },
         [&](const Vec3f& h) { return double(d.pdf_microfacet_normal(wo, h)); }, Vec3f(0, 0, 1),
-        std::min(d.alpha_x, d.alpha_y), kSamples, ++seed);
+        std::min(d.alpha_x, d.alpha_y), kSamples, ++seed, 20, 40,
+        // 64 Simpson intervals per bin: at grazing wo the density D_wo(h) ∝ max(0, wo·h) D(h)
+        // has a crease along wo·h = 0 inside bins, where 8 intervals left the expected counts
+        // inaccurate enough to fail (p 2e-8 for α 0.8 at 85° in the clang build, whose float
+        // results differ from g++'s); with 64 every case passes in both builds.
+        64);
     EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests))
         << describe(d) << " method=" << int(d.sampling) << " wo.z=" << wo.z << ": " << r.message;
   }

@@ -7,6 +7,9 @@
 
 #include <vector>
 
+#include "prism/core/sample_stream.h"
+#include "prism/sampling/owen_scrambling.h"
+#include "prism/sampling/sobol.h"
 #include "prism/sampling/zsobol_index.h"
 #include "support/chi_square.h"
 
@@ -60,6 +63,51 @@ TEST(PixelSampler, BlocksFollowTheFixedDimensionLayout) {
       EXPECT_EQ(b.roulette, sample_1d(k, s, base + 6));
     }
   }
+}
+
+TEST(PixelSampler, SobolIsItsDefiningComposition) {
+  // pixel_sampler.h's definition, written out with the plain building blocks: index =
+  // NUS(sample, low), x = NUS(sobol_0(index), high), y = NUS(sobol_1(index), high of the
+  // rehash). The sampler computes it with the bit reversals cancelled; the bits must agree.
+  for (std::uint64_t seed : {0ull, 7ull})
+    for (std::uint32_t pixel : {0u, 1u, 65535u})
+      for (std::uint32_t sample : {0u, 1u, 2u, 3u, 17u, 1000u, 0x12345678u})
+        for (std::uint32_t dimension : {0u, 4u, 5u, 9u, 60u}) {
+          const std::uint64_t pixel_key = mix64(mix64(seed ^ 0x736f626f6c5eedull) + pixel);
+          const std::uint64_t h = mix64(pixel_key + 0x9e3779b97f4a7c15ull * (dimension + 1ull));
+          const std::uint32_t index = nested_uniform_scramble(sample, static_cast<std::uint32_t>(h));
+          const std::uint32_t x = nested_uniform_scramble(sobol_sample_bits(index, 0), static_cast<std::uint32_t>(h >> 32));
+          const std::uint32_t y =
+              nested_uniform_scramble(sobol_sample_bits(index, 1), static_cast<std::uint32_t>(mix64(h) >> 32));
+          const PixelSample s{seed, pixel, 0, pixel, sample};
+          const Vec2f u = sample_2d(SamplerKind::sobol, s, dimension);
+          EXPECT_EQ(u.x, bits_to_unit_float(x));
+          EXPECT_EQ(u.y, bits_to_unit_float(y));
+          EXPECT_EQ(sample_1d(SamplerKind::sobol, s, dimension), bits_to_unit_float(x));
+          if (dimension == kWavelengthDimension) {
+            EXPECT_EQ(camera_samples(SamplerKind::sobol, s).wavelength, x * 0x1p-32);  // double: all 32 bits
+          }
+        }
+}
+
+TEST(PixelSampler, BounceBlocksDrawOnlyTheNumbersAskedFor) {
+  // A partial block must give exactly the full block's numbers in the fields it asks for
+  // (the image may not depend on which branches a vertex takes) and 0 elsewhere.
+  for (SamplerKind k : {SamplerKind::independent, SamplerKind::sobol, SamplerKind::zsobol})
+    for (int depth : {0, 2, 7}) {
+      const PixelSample s{3, 7, 2, 2 * 64 + 7, 41};
+      const BounceSamples full = bounce_samples(k, s, depth);
+      for (unsigned needs = 0; needs <= kNeedAllBounceSamples; ++needs) {
+        const BounceSamples b = bounce_samples(k, s, depth, needs);
+        const bool light = needs & kNeedLight, lobe = needs & kNeedLobe, direction = needs & kNeedDirection,
+                   roulette = needs & kNeedRoulette;
+        EXPECT_EQ(b.light_select, light ? full.light_select : 0.0f);
+        expect_same(b.light, light ? full.light : Vec2f(0.0f, 0.0f));
+        EXPECT_EQ(b.lobe, lobe ? full.lobe : 0.0f);
+        expect_same(b.direction, direction ? full.direction : Vec2f(0.0f, 0.0f));
+        EXPECT_EQ(b.roulette, roulette ? full.roulette : 0.0f);
+      }
+    }
 }
 
 TEST(PixelSampler, SobolRunsOfSamplesArePerPixelNetsWhateverTheirLength) {

@@ -35,6 +35,14 @@ TEST(Sobol, FastProductsEqualTheMatrixProduct) {
   }
 }
 
+TEST(Sobol, ReversedDimensionOneIsTheReversedProduct) {
+  for (std::uint32_t i : {0u, 1u, 6u, 255u, 256u, 0x80000001u, 0xdeadbeefu, 0xffffffffu})
+    EXPECT_EQ(sobol_dimension1_reversed_bits(i), reverse_bits_32(sobol_sample_bits(i, 1))) << i;
+  std::uint32_t i = 12345u;
+  for (int k = 0; k < 1000; ++k, i = i * 747796405u + 2891336453u)
+    ASSERT_EQ(sobol_dimension1_reversed_bits(i), reverse_bits_32(sobol_sample_bits(i, 1))) << i;
+}
+
 TEST(Sobol, DirectionNumbersOfDimensionOneMatchJoeKuo) {
   // Joe & Kuo (2008) list m = 1, 3, 5, 15, 17, 51, 85, 255 for their second dimension
   // (polynomial x + 1); the derived matrix must hold m_j · 2^(31-j).

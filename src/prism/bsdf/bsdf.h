@@ -58,6 +58,12 @@ struct Bsdf {
         },
         lobe);
   }
+  // Which of sample()'s numbers the lobe reads, so callers can skip drawing the others:
+  // only the two-component lobes choose with u_lobe; a mirror needs no direction number.
+  bool uses_lobe_sample() const {
+    return std::holds_alternative<Dielectric<N>>(lobe) || std::holds_alternative<MetallicRoughness<N>>(lobe);
+  }
+  bool uses_direction_sample() const { return !std::holds_alternative<SpecularReflection<N>>(lobe); }
   // The integrator must terminate secondary wavelengths before shading (dielectric.h).
   bool is_dispersive() const {
     const auto* d = std::get_if<Dielectric<N>>(&lobe);

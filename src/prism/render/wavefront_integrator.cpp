@@ -202,12 +202,20 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     if (Mode::kChannels > 1 && bsdf.is_dispersive() && wl.pdf[1] != 0.0f) colors_.terminate_secondary(wl);
   }
   const Vec3f wo_local = si.shading.to_local(-ray.direction);
-  // The bounce's whole block of dimensions, used or not, so dimensions stay aligned.
+  // The bounce's block of dimensions stays reserved whole, so dimensions stay aligned, but
+  // only the numbers this vertex reads are drawn (the others cost a hash each).
+  const bool light_sampled = use_nee && !bsdf.is_specular();
+  unsigned needs = 0;
+  if (light_sampled) needs |= kNeedLight;
+  if (bsdf.uses_lobe_sample()) needs |= kNeedLobe;
+  if (bsdf.uses_direction_sample()) needs |= kNeedDirection;
+  if (p.depth[slot] + 1 >= settings_.russian_roulette_depth) needs |= kNeedRoulette;
   const auto row = static_cast<std::uint32_t>(width_);
   const BounceSamples u = bounce_samples(settings_.sampler,
-                                         PixelSample{seed_, slot % row, slot / row, slot, p.sample_index[slot]}, p.depth[slot]);
+                                         PixelSample{seed_, slot % row, slot / row, slot, p.sample_index[slot]},
+                                         p.depth[slot], needs);
 
-  if (use_nee && !bsdf.is_specular()) {
+  if (light_sampled) {
     if (const auto ls = lights_.sample(si.position, u.light_select, u.light)) {
       const Vec3f wi_local = si.shading.to_local(ls->wi);
       // The geometric and the shading side must agree, or light leaks through edges.
@@ -340,13 +348,16 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
       shadow_rays += traced;
     });
     // Stage 4: finished paths go to the film; their slot restarts with the pixel's next
-    // sample. Stage 5: compaction of the survivors, in queue order.
+    // sample. Stage 5: compaction of the survivors, in queue order, in place: each chunk
+    // packs its survivors at its own start (a write never passes the read), then the packed
+    // runs move down to their prefix-sum offsets.
     const std::size_t chunks = (live.size() + kGrain - 1) / kGrain;
-    std::vector<std::vector<std::uint32_t>> survivors(chunks);
+    survivor_counts_.assign(chunks, 0);
     parallel_for(chunks, 1, [&](std::size_t cb, std::size_t ce) {
       for (std::size_t c = cb; c < ce; ++c) {
         std::uint64_t local_invalid = 0, local_completed = 0;
         const std::size_t end = std::min(live.size(), (c + 1) * kGrain);
+        std::size_t kept = c * kGrain;
         for (std::size_t i = c * kGrain; i < end; ++i) {
           const std::uint32_t s = live[i];
           if (p.finished[s]) {
@@ -361,16 +372,20 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
             if (!regenerate_ || p.sample_index[s] + 1 >= p.sample_end[s]) continue;
             generate(p, s, p.sample_index[s] + 1);
           }
-          survivors[c].push_back(s);
+          live[kept++] = s;
         }
+        survivor_counts_[c] = static_cast<std::uint32_t>(kept - c * kGrain);
         invalid += local_invalid;
         completed += local_completed;
       }
     });
-    std::vector<std::uint32_t> next;
-    next.reserve(live.size());
-    for (const auto& v : survivors) next.insert(next.end(), v.begin(), v.end());
-    live.swap(next);
+    std::size_t packed = 0;
+    for (std::size_t c = 0; c < chunks; ++c) {
+      const auto first = live.begin() + static_cast<std::ptrdiff_t>(c * kGrain);
+      std::copy(first, first + survivor_counts_[c], live.begin() + static_cast<std::ptrdiff_t>(packed));
+      packed += survivor_counts_[c];
+    }
+    live.resize(packed);
   }
   stats.shadow_rays = shadow_rays.load();
   stats.invalid_samples = invalid.load();

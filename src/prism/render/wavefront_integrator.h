@@ -101,6 +101,7 @@ class WavefrontIntegrator {
   // the one thread shading it) and added to the film with the sample. Empty unless the
   // film keeps AOVs.
   mutable std::vector<AovSample> first_hit_aovs_;
+  std::vector<std::uint32_t> survivor_counts_;  // per compaction chunk, reused every step
   MaterialTables tables_;
   std::vector<MipPyramid> textures_;  // one per Scene::textures entry
   std::vector<Mat3> textured_emission_;  // per material: texel → Rec.709 radiance (scene/emission.h)

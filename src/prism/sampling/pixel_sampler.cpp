@@ -30,27 +30,43 @@ struct IndependentDimensions {
 // Padded Sobol' with Burley's (2020) shuffled, Owen-scrambled index, all seeds per
 // (seed, pixel, dimension): one 64-bit hash per request gives the index-shuffle seed and
 // the first axis' scramble seed, a second one the other axis'.
+//
+// By definition index = NUS(sample_index, low), x = NUS(sobol_0(index), high) and
+// y = NUS(sobol_1(index), high'), with NUS(v, s) = rev(LK(rev(v), s)) (owen_scrambling.h).
+// Since sobol_0 is rev itself, the reversals cancel: x = rev(LK(index, high)); the sample
+// index is reversed once per block, and sobol_1 is taken already reversed. Three bit
+// reversals per 2D request instead of seven, the same bits (pixel_sampler_test checks the
+// definition).
 struct PaddedSobolDimensions {
   std::uint64_t pixel_key;
-  std::uint32_t sample_index;
+  std::uint32_t reversed_sample_index;
   explicit PaddedSobolDimensions(const PixelSample& s)
-      : pixel_key(mix64(mix64(s.seed ^ 0x736f626f6c5eedull) + s.pixel_index)), sample_index(s.sample_index) {}
+      : pixel_key(mix64(mix64(s.seed ^ 0x736f626f6c5eedull) + s.pixel_index)),
+        reversed_sample_index(reverse_bits_32(s.sample_index)) {}
   std::uint64_t request_hash(std::uint32_t dimension) const {
     return mix64(pixel_key + 0x9e3779b97f4a7c15ull * (dimension + 1ull));
   }
   static std::uint32_t low(std::uint64_t h) { return static_cast<std::uint32_t>(h); }
   static std::uint32_t high(std::uint64_t h) { return static_cast<std::uint32_t>(h >> 32); }
-  std::uint32_t x_bits(std::uint64_t h) const {
-    return nested_uniform_scramble(sobol_sample_bits(nested_uniform_scramble(sample_index, low(h)), 0), high(h));
+  std::uint32_t shuffled_index(std::uint64_t h) const {
+    return reverse_bits_32(laine_karras_permutation(reversed_sample_index, low(h)));
   }
-  float get1d(std::uint32_t dimension) const { return bits_to_unit_float(x_bits(request_hash(dimension))); }
-  double get1d_double(std::uint32_t dimension) const { return x_bits(request_hash(dimension)) * 0x1p-32; }
+  static std::uint32_t x_bits(std::uint32_t index, std::uint64_t h) {
+    return reverse_bits_32(laine_karras_permutation(index, high(h)));
+  }
+  float get1d(std::uint32_t dimension) const {
+    const std::uint64_t h = request_hash(dimension);
+    return bits_to_unit_float(x_bits(shuffled_index(h), h));
+  }
+  double get1d_double(std::uint32_t dimension) const {
+    const std::uint64_t h = request_hash(dimension);
+    return x_bits(shuffled_index(h), h) * 0x1p-32;
+  }
   Vec2f get2d(std::uint32_t dimension) const {
     const std::uint64_t h = request_hash(dimension);
-    const std::uint32_t index = nested_uniform_scramble(sample_index, low(h));
-    const std::uint32_t x = nested_uniform_scramble(sobol_sample_bits(index, 0), high(h));
-    const std::uint32_t y = nested_uniform_scramble(sobol_sample_bits(index, 1), high(mix64(h)));
-    return {bits_to_unit_float(x), bits_to_unit_float(y)};
+    const std::uint32_t index = shuffled_index(h);
+    const std::uint32_t y = reverse_bits_32(laine_karras_permutation(sobol_dimension1_reversed_bits(index), high(mix64(h))));
+    return {bits_to_unit_float(x_bits(index, h)), bits_to_unit_float(y)};
   }
 };
 
@@ -91,9 +107,17 @@ CameraSamples camera_block(const Dimensions& d) {
 }
 
 template <class Dimensions>
-BounceSamples bounce_block(const Dimensions& d, int depth) {
+BounceSamples bounce_block(const Dimensions& d, int depth, unsigned needs) {
   const std::uint32_t base = kFirstBounceDimension + kDimensionsPerBounce * static_cast<std::uint32_t>(depth);
-  return {d.get1d(base), d.get2d(base + 1), d.get1d(base + 3), d.get2d(base + 4), d.get1d(base + 6)};
+  BounceSamples b;
+  if (needs & kNeedLight) {
+    b.light_select = d.get1d(base);
+    b.light = d.get2d(base + 1);
+  }
+  if (needs & kNeedLobe) b.lobe = d.get1d(base + 3);
+  if (needs & kNeedDirection) b.direction = d.get2d(base + 4);
+  if (needs & kNeedRoulette) b.roulette = d.get1d(base + 6);
+  return b;
 }
 
 }  // namespace
@@ -122,13 +146,13 @@ CameraSamples camera_samples(SamplerKind kind, const PixelSample& s) {
   return camera_block(IndependentDimensions{s});
 }
 
-BounceSamples bounce_samples(SamplerKind kind, const PixelSample& s, int depth) {
+BounceSamples bounce_samples(SamplerKind kind, const PixelSample& s, int depth, unsigned needs) {
   switch (kind) {
-    case SamplerKind::sobol: return bounce_block(PaddedSobolDimensions{s}, depth);
-    case SamplerKind::zsobol: return bounce_block(ZSobolDimensions{s}, depth);
+    case SamplerKind::sobol: return bounce_block(PaddedSobolDimensions{s}, depth, needs);
+    case SamplerKind::zsobol: return bounce_block(ZSobolDimensions{s}, depth, needs);
     case SamplerKind::independent: break;
   }
-  return bounce_block(IndependentDimensions{s}, depth);
+  return bounce_block(IndependentDimensions{s}, depth, needs);
 }
 
 float sample_1d(SamplerKind kind, const PixelSample& s, std::uint32_t dimension) {

@@ -67,9 +67,20 @@ struct BounceSamples {
   float roulette = 0.0f;
 };
 
+// Which numbers of a bounce block a vertex uses. The others are left 0 and cost nothing;
+// their dimensions stay reserved, so the numbers that are drawn do not depend on the mask.
+enum BounceNeeds : unsigned {
+  kNeedLight = 1u,      // light_select and light
+  kNeedLobe = 2u,
+  kNeedDirection = 4u,
+  kNeedRoulette = 8u,
+  kNeedAllBounceSamples = 15u,
+};
+
 // One switch over the sampler per block, not per number.
 CameraSamples camera_samples(SamplerKind kind, const PixelSample& sample);
-BounceSamples bounce_samples(SamplerKind kind, const PixelSample& sample, int depth);
+BounceSamples bounce_samples(SamplerKind kind, const PixelSample& sample, int depth,
+                             unsigned needs = kNeedAllBounceSamples);
 
 // Single requests, for tests and tools: dimension `dimension` (and `dimension + 1` for 2D)
 // of a sample, as laid out above for the low-discrepancy samplers.

@@ -50,12 +50,30 @@ constexpr std::uint32_t reverse_bits_32(std::uint32_t x) {
   return (x >> 16) | (x << 16);
 }
 
+// The same product with every column bit-reversed, i.e. reverse_bits_32(C_1 · i): Owen
+// scrambling works on reversed bits, so the samplers take the point in this form and save
+// a reversal per request (x ↦ reverse(x) is linear over GF(2), so it commutes with the XOR).
+constexpr std::array<std::array<std::uint32_t, 256>, 4> sobol_reversed_byte_tables(int dimension) {
+  auto tables = sobol_byte_tables(dimension);
+  for (auto& table : tables)
+    for (std::uint32_t& entry : table) entry = reverse_bits_32(entry);
+  return tables;
+}
+
+inline constexpr auto kSobolDimension1ReversedByteTables = sobol_reversed_byte_tables(1);
+
 // Point `index` of Sobol' dimension 0 or 1 as a 32-bit fraction (value · 2^-32): the XOR
 // of the columns of the index's set bits. Dimension 0's matrix is the bit reversal, done
 // in closed form; dimension 1 by byte tables (tests check both against the matrices).
 constexpr std::uint32_t sobol_sample_bits(std::uint32_t index, int dimension) {
   if (dimension == 0) return reverse_bits_32(index);
   const auto& t = kSobolDimension1ByteTables;
+  return t[0][index & 0xffu] ^ t[1][(index >> 8) & 0xffu] ^ t[2][(index >> 16) & 0xffu] ^ t[3][index >> 24];
+}
+
+// reverse_bits_32(sobol_sample_bits(index, 1)) without the reversal.
+constexpr std::uint32_t sobol_dimension1_reversed_bits(std::uint32_t index) {
+  const auto& t = kSobolDimension1ReversedByteTables;
   return t[0][index & 0xffu] ^ t[1][(index >> 8) & 0xffu] ^ t[2][(index >> 16) & 0xffu] ^ t[3][index >> 24];
 }
 

@@ -1,29 +1,43 @@
 #!/usr/bin/env bash
-# Installs what is missing, builds Release with tests and runs the test suite
-# (everything but the labels slow and fuzz-smoke; the gui tests start their own Xvfb).
-#
-# PRISM_SANITIZERS=1 then also builds and runs the sanitizer presets (issue 9):
-#   asan  AddressSanitizer + UndefinedBehaviorSanitizer, every unit and CLI test;
-#   tsan  ThreadSanitizer, the render/checkpoint/integrator/determinism tests (the `tsan`
-#         test preset's name filter).
-# Options and suppressions (third-party only) are in the test presets and
-# tests/sanitizers/. Off by default for now: two more full builds do not yet fit the CI
-# time budget on a 2-core machine and have not had a verified clean run (see
-# docs/reliability.md, "Sanitizers"); set PRISM_SANITIZERS=1 to run them.
+# Installs what is missing, builds and runs the test suites (what CI runs, .ci/run):
+#   release     Release build, every test but the labels slow and fuzz-smoke (the gui
+#               tests start their own Xvfb);
+#   asan        clang AddressSanitizer + UndefinedBehaviorSanitizer (LeakSanitizer on):
+#               every unit and CLI test; the same build has the libFuzzer targets, and
+#   fuzz-smoke  runs each of them for 30 s on its seed corpus;
+#   tsan        ThreadSanitizer: the render, checkpoint, determinism and viewer render
+#               worker tests (the `tsan` test preset's name filter).
+# Any sanitizer report fails the run. Options and suppressions (third-party code only) are
+# in the test presets and tests/sanitizers/; docs/reliability.md explains them.
+# PRISM_SANITIZERS=0 runs the Release stage only (a quick local check, not what CI runs).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/install-deps.sh
+sanitizers="${PRISM_SANITIZERS:-1}"
+if [ "$sanitizers" = 1 ]; then
+  bash scripts/install-deps.sh --sanitizers
+else
+  bash scripts/install-deps.sh
+fi
+
+stage() { echo "== test.sh: $1 ($(date -u +%H:%M:%S))"; }
+stage "release"
 cmake --preset release >/dev/null
 cmake --build --preset release
 ctest --preset release
+[ "$sanitizers" = 1 ] || exit 0
 
-if [ "${PRISM_SANITIZERS:-0}" = 1 ]; then
-  cmake --preset asan >/dev/null
-  cmake --build --preset asan
-  ctest --preset asan
-  cmake --preset tsan >/dev/null
-  # The build runs the (instrumented) Jakob–Hanika table generator: same suppressions.
-  TSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/tsan.supp" \
-    cmake --build --preset tsan --target prism_tests prism_cli
-  ctest --preset tsan
-fi
+stage "asan: build"
+cmake --preset asan >/dev/null
+cmake --build --preset asan
+stage "asan: tests"
+ctest --preset asan
+stage "fuzz-smoke"
+ctest --preset fuzz-smoke
+stage "tsan: build"
+cmake --preset tsan >/dev/null
+# The build runs the (instrumented) Jakob–Hanika table generator: same suppressions.
+TSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/tsan.supp" \
+  cmake --build --preset tsan --target prism_tests prism_cli
+stage "tsan: tests"
+ctest --preset tsan
+stage "done"

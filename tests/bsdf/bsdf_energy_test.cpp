@@ -6,7 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iterator>
 #include <numbers>
+#include <optional>
+#include <variant>
 
 #include "prism/core/pcg32.h"
 #include "prism/sampling/warps.h"
@@ -173,6 +176,51 @@ TEST(BsdfEnergy, RoughDielectricFurnace) {
     EXPECT_LE(e.mean, 1.0 + 4 * e.stderr_);
     if (alpha == 0.05f) {
       EXPECT_GT(e.mean, 0.99);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace prism::bsdf
+
+namespace prism::bsdf {
+namespace {
+
+// The integrator skips drawing the numbers a BSDF does not read (uses_lobe_sample,
+// uses_direction_sample): a lobe that says it ignores u_lobe (or u) must sample the same
+// direction and weight whatever that number is, and every lobe of the variant is listed
+// here, so a lobe added later without updating those predicates fails this test.
+TEST(BsdfNumberUse, LobesIgnoreExactlyTheNumbersTheySayTheyIgnore) {
+  const Bsdf<3> bsdfs[] = {
+      {Lambertian<3>{S3(0.5f)}},
+      {SpecularReflection<3>{S3(0.9f)}},
+      {RoughConductor<3>{MicrofacetDistribution::isotropic(MicrofacetType::ggx, 0.3f), ConductorFresnel<3>::schlick(S3(1))}},
+      {Dielectric<3>{S3(1.5f), MicrofacetDistribution::isotropic(MicrofacetType::ggx, 0.3f)}},
+      {MetallicRoughness<3>::from_roughness(S3(0.5f), 0.3f, 0.6f)},
+      {ThinDielectric<3>{S3(1.5f)}},
+  };
+  static_assert(std::variant_size_v<Bsdf<3>::Lobe> == std::size(bsdfs), "list every lobe of the variant here");
+  const auto same = [](const std::optional<BsdfSample<3>>& a, const std::optional<BsdfSample<3>>& b) {
+    if (a.has_value() != b.has_value()) return false;
+    if (!a) return true;
+    return a->wi.x == b->wi.x && a->wi.y == b->wi.y && a->wi.z == b->wi.z && a->pdf == b->pdf && a->f[0] == b->f[0];
+  };
+  for (std::size_t i = 0; i < std::size(bsdfs); ++i) {
+    const Bsdf<3>& b = bsdfs[i];
+    EXPECT_EQ(b.lobe.index(), i);
+    bool lobe_matters = false, direction_matters = false;
+    for (const Vec3f& wo : {normalize(Vec3f(0.3f, 0.1f, 0.9f)), normalize(Vec3f(-0.6f, 0.2f, 0.3f))})
+      for (float u_lobe : {0.02f, 0.5f, 0.98f})
+        for (float u : {0.1f, 0.7f}) {
+          const auto reference = b.sample(wo, u_lobe, Vec2f(u, 0.4f));
+          if (!same(reference, b.sample(wo, 1.0f - u_lobe, Vec2f(u, 0.4f)))) lobe_matters = true;
+          if (!same(reference, b.sample(wo, u_lobe, Vec2f(1.0f - u, 0.8f)))) direction_matters = true;
+        }
+    if (lobe_matters) {
+      EXPECT_TRUE(b.uses_lobe_sample()) << "lobe " << i << " reads u_lobe but says it does not";
+    }
+    if (direction_matters) {
+      EXPECT_TRUE(b.uses_direction_sample()) << "lobe " << i << " reads u but says it does not";
     }
   }
 }

@@ -59,9 +59,12 @@ struct Bsdf {
         lobe);
   }
   // Which of sample()'s numbers the lobe reads, so callers can skip drawing the others:
-  // only the two-component lobes choose with u_lobe; a mirror needs no direction number.
+  // the single-component lobes never choose with u_lobe; a mirror needs no direction
+  // number. Listed by exclusion, so that a lobe added later draws every number (safe)
+  // until it is listed here.
   bool uses_lobe_sample() const {
-    return std::holds_alternative<Dielectric<N>>(lobe) || std::holds_alternative<MetallicRoughness<N>>(lobe);
+    return !std::holds_alternative<Lambertian<N>>(lobe) && !std::holds_alternative<SpecularReflection<N>>(lobe) &&
+           !std::holds_alternative<RoughConductor<N>>(lobe);
   }
   bool uses_direction_sample() const { return !std::holds_alternative<SpecularReflection<N>>(lobe); }
   // The integrator must terminate secondary wavelengths before shading (dielectric.h).

@@ -25,6 +25,10 @@ void add_view_command(CLI::App& root, Action& action) {
   cmd->add_option("--sampler", o->sampler, "Random numbers of each path: independent, sobol or zsobol (default: as render)");
   cmd->add_option("--samples-per-pass", o->samples_per_pass, "Samples per pixel per displayed pass")
       ->capture_default_str();
+  cmd->add_option("--bounces-per-pass", o->bounces_per_pass,
+                  "Show the film every N bounces of the paths in flight, not only after whole passes (the "
+                  "seed's #Bounce/Frame; 0: off). Never changes the converged image")
+      ->capture_default_str();
   cmd->add_option("--max-depth", o->max_depth, "Maximum number of bounces")->capture_default_str();
   cmd->add_option("--threads", o->threads, "Render threads (default: all cores)");
   cmd->add_option("--resolution-scale", o->resolution_scale, "Film size as a fraction of the window, 0.125..1")

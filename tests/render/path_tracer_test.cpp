@@ -119,6 +119,41 @@ TEST(Renderer, ImageDoesNotDependOnThreadCount) {
   EXPECT_TRUE(one == two) << "films differ between 1 and 2 threads";
 }
 
+// Bounces per pass: the film is handed over every N bounces inside a pass, holding each
+// pixel's completed samples, and the final image is bitwise the one without it.
+TEST(Renderer, BouncesPerPassShowsProgressWithoutChangingTheImage) {
+  const Scene scene = make_cornell_box();
+  RenderSettings s = small_settings(12, 4);
+  s.width = 32;
+  s.height = 24;
+  s.samples_per_pass = 4;  // one pass: every mid-pass film lies inside it
+  const std::vector<float> reference = render(scene, s).film.mean_rgb();
+  s.bounces_per_pass = 1;
+  int calls = 0;
+  std::uint64_t previous_total = 0;
+  bool partial_seen = false;
+  RenderHooks hooks;
+  hooks.on_bounces = [&](const Film& film, int pass_start) {
+    ++calls;
+    EXPECT_EQ(pass_start, 0);
+    std::uint64_t total = 0;
+    for (std::size_t p = 0; p < film.pixel_count(); ++p) {
+      EXPECT_LE(film.sample_count(p), 4u);
+      if (film.sample_count(p) > 0 && film.sample_count(p) < 4) partial_seen = true;
+      total += film.sample_count(p);
+    }
+    EXPECT_GE(total, previous_total) << "samples only accumulate";
+    previous_total = total;
+  };
+  const RenderResult r = render(scene, s, hooks);
+  // Four samples of paths up to 8 bounces with roulette need many more than 4 steps.
+  EXPECT_GT(calls, 4);
+  EXPECT_TRUE(partial_seen) << "mid-pass films should hold pixels with part of their samples";
+  EXPECT_TRUE(r.film.mean_rgb() == reference) << "bounces per pass changed the image";
+  s.bounces_per_pass = -1;
+  EXPECT_THROW(render(scene, s), UsageError);
+}
+
 TEST(Renderer, TimeLimitStopsWithCompletePasses) {
   const Scene scene = make_cornell_box();
   RenderSettings s = small_settings(10, 1'000'000);

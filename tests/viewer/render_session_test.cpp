@@ -65,6 +65,19 @@ TEST(RenderSession, RestartsReuseThePreparedScene) {
   EXPECT_LT(mean_value(*black), 0.5 * mean_value(*first));
 }
 
+// Bounces per pass: the worker also publishes films in the middle of passes, so a render
+// of 2 passes shows more than 2 frames (`passes` counts every published frame).
+TEST(RenderSession, BouncesPerPassPublishesFramesInsidePasses) {
+  const Scene scene = make_cornell_box();
+  RenderSession session(scene);
+  RenderRequest request = small_request(scene);
+  request.settings.bounces_per_pass = 1;
+  const auto last = wait_finished(session, session.restart(request));
+  ASSERT_TRUE(last) << session.error().value_or("timeout");
+  EXPECT_EQ(last->spp, 2);
+  EXPECT_GT(last->passes, 2);
+}
+
 TEST(RenderSession, AMaterialListOfTheWrongSizeIsAnErrorNotACrash) {
   const Scene scene = make_cornell_box();
   RenderSession session(scene);

@@ -50,6 +50,8 @@ void validate_render_settings(const RenderSettings& s) {
   if (s.path.max_depth < 1) throw UsageError(fmt::format("--max-depth must be at least 1 (got {})", s.path.max_depth));
   if (s.threads < 0) throw UsageError(fmt::format("--threads must be at least 1 (got {})", s.threads));
   if (!(s.time_limit_seconds >= 0.0)) throw UsageError("--time-limit must be a non-negative number of seconds");
+  if (s.bounces_per_pass < 0)
+    throw UsageError(fmt::format("--bounces-per-pass must be 0 (until paths end) or more (got {})", s.bounces_per_pass));
 }
 
 std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settings) {
@@ -127,8 +129,10 @@ void render_passes(const Scene& scene, const EmbreeAccel& accel, const RenderSet
     }
     const int count = std::min(pass_size, settings.samples_per_pixel - next_sample);
     const double pass_start = elapsed();
-    const PassStatistics stats = integrator.render_samples(result.film, static_cast<std::uint32_t>(next_sample),
-                                                          static_cast<std::uint32_t>(count));
+    const std::function<void()> after_bounces = [&] { hooks.on_bounces(result.film, next_sample); };
+    const PassStatistics stats = integrator.render_samples(
+        result.film, static_cast<std::uint32_t>(next_sample), static_cast<std::uint32_t>(count),
+        settings.bounces_per_pass, hooks.on_bounces ? &after_bounces : nullptr);
     const double seconds = elapsed();
     result.pass_seconds.push_back(seconds - pass_start);
     result.pass_samples.push_back(count);

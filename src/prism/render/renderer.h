@@ -28,6 +28,10 @@ struct RenderSettings {
   TransportSettings transport;
   int samples_per_pass = 0;         // 0: sized from the measured speed (about 0.5 s a pass)
   bool regenerate_paths = true;     // off: one wave per sample (for measuring the benefit)
+  // > 0: RenderHooks::on_bounces sees the film after every this many bounces of the paths in
+  // flight (progressive display of deep paths); 0: only after whole passes. Never changes
+  // the image, so it is not part of the fingerprint.
+  int bounces_per_pass = 0;
   AovSet aovs;                      // first-hit AOVs the film keeps (aov.h); none by default
   // Refuse (Error) before allocating when estimate_render_memory() exceeds this
   // (memory_estimate.h); 0: 90 % of physical memory.
@@ -81,6 +85,10 @@ struct RenderHooks {
   // (0: never during the render), and once more when the render ends for any reason.
   CheckpointCallback on_checkpoint;
   double checkpoint_interval_seconds = 0.0;
+  // With RenderSettings::bounces_per_pass > 0: the film in the middle of a pass (every
+  // pixel's completed samples), after every bounces_per_pass bounces, and the sample index
+  // the pass started at. Checkpoints, cancellation and time limits still act between passes.
+  CheckpointCallback on_bounces;
 };
 
 // Continues from a checkpointed film whose passes cover sample indices
@@ -103,7 +111,10 @@ RenderResult render(const PreparedScene& scene, const RenderSettings& settings, 
 
 inline RenderResult render(const Scene& scene, const RenderSettings& settings,
                            const ProgressCallback& on_pass = {}, const std::atomic<bool>* cancel = nullptr) {
-  return render(scene, settings, RenderHooks{on_pass, cancel, {}, 0.0});
+  RenderHooks hooks;
+  hooks.on_pass = on_pass;
+  hooks.cancel = cancel;
+  return render(scene, settings, hooks);
 }
 
 }  // namespace prism

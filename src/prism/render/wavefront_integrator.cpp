@@ -288,11 +288,13 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
 }
 
 template <class Mode>
-PassStatistics WavefrontIntegrator<Mode>::render_samples(Film& film, std::uint32_t first_sample, std::uint32_t count) {
-  if (regenerate_) return run_wave(film, first_sample, count);
+PassStatistics WavefrontIntegrator<Mode>::render_samples(Film& film, std::uint32_t first_sample, std::uint32_t count,
+                                                         int bounces_per_pass,
+                                                         const std::function<void()>* after_bounces) {
+  if (regenerate_) return run_wave(film, first_sample, count, bounces_per_pass, after_bounces);
   PassStatistics total;
   for (std::uint32_t s = 0; s < count; ++s) {
-    const PassStatistics wave = run_wave(film, first_sample + s, 1);
+    const PassStatistics wave = run_wave(film, first_sample + s, 1, bounces_per_pass, after_bounces);
     total.rays += wave.rays;
     total.shadow_rays += wave.shadow_rays;
     total.invalid_samples += wave.invalid_samples;
@@ -305,7 +307,8 @@ PassStatistics WavefrontIntegrator<Mode>::render_samples(Film& film, std::uint32
 }
 
 template <class Mode>
-PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t first_sample, std::uint32_t count) {
+PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t first_sample, std::uint32_t count,
+                                                   int bounces_per_pass, const std::function<void()>* after_bounces) {
   const auto slots = static_cast<std::uint32_t>(film.pixel_count());
   Paths& p = *paths_;
   first_hit_aovs_.resize(film.aovs().first_hit() ? slots : 0u);
@@ -386,6 +389,9 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
       packed += survivor_counts_[c];
     }
     live.resize(packed);
+    if (bounces_per_pass > 0 && after_bounces && *after_bounces && !live.empty() &&
+        stats.steps % bounces_per_pass == 0)
+      (*after_bounces)();
   }
   stats.shadow_rays = shadow_rays.load();
   stats.invalid_samples = invalid.load();

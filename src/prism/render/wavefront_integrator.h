@@ -14,6 +14,7 @@
 #include <atomic>
 #include <memory>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -67,7 +68,13 @@ class WavefrontIntegrator {
   // Renders samples [first_sample, first_sample + count) of every pixel into `film`.
   // With regeneration off, each of the `count` samples is a separate wave (for measuring
   // what regeneration buys).
-  PassStatistics render_samples(Film& film, std::uint32_t first_sample, std::uint32_t count);
+  // Bounces per pass (the seed renderer's "#Bounce/Frame"): with bounces_per_pass > 0 and
+  // `after_bounces` set, after every bounces_per_pass wavefront steps (each advances every
+  // live path by one bounce) while paths are still in flight, `after_bounces` is called
+  // with the film as it is: every pixel's completed samples, so a viewer can show progress
+  // on deep paths. It changes neither the film's final contents nor their order.
+  PassStatistics render_samples(Film& film, std::uint32_t first_sample, std::uint32_t count,
+                                int bounces_per_pass = 0, const std::function<void()>* after_bounces = nullptr);
 
  private:
   struct Paths;  // structure of arrays, one slot per pixel
@@ -94,7 +101,8 @@ class WavefrontIntegrator {
   // Writes first_hit_aovs_[slot] for a camera ray (wavefront_integrator_aovs.cpp); `hit`
   // is null when the ray escaped.
   void record_first_hit_aovs(std::uint32_t slot, const Ray& ray, const Hit* hit, float cone_spread) const;
-  PassStatistics run_wave(Film& film, std::uint32_t first_sample, std::uint32_t count);
+  PassStatistics run_wave(Film& film, std::uint32_t first_sample, std::uint32_t count, int bounces_per_pass,
+                          const std::function<void()>* after_bounces);
 
   std::unique_ptr<Paths> paths_;  // allocated once, reused by every wave
   // Per slot: the AOVs of its current sample, written by shade() at depth 0 (each slot by

@@ -110,8 +110,10 @@ bool render_settings_panel(RenderControls& c) {
     changed = true;
   }
   changed |= ImGui::SliderInt("max depth", &c.settings.path.max_depth, 1, 64);
-  // The integrator's pass is a group of whole samples per pixel (the seed's #Bounce/Frame).
+  // The integrator's pass is a group of whole samples per pixel; bounces per pass (the
+  // seed's #Bounce/Frame) also shows the film every N bounces inside a pass (0: off).
   changed |= ImGui::SliderInt("samples per pass", &c.settings.samples_per_pass, 1, 64);
+  changed |= ImGui::SliderInt("bounces per pass", &c.settings.bounces_per_pass, 0, 16);
   float scale = static_cast<float>(c.resolution_scale);
   if (ImGui::SliderFloat("resolution scale", &scale, 0.125f, 1.0f, "%.3f")) {
     c.resolution_scale = std::clamp(static_cast<double>(scale), 0.125, 1.0);
@@ -168,6 +170,7 @@ bool lights_panel(RenderControls& c) {
     }
   }
   c.settings.path.max_depth = std::max(c.settings.path.max_depth, 1);
+  c.settings.bounces_per_pass = std::max(c.settings.bounces_per_pass, 0);
   return changed;
 }
 

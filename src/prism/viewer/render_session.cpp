@@ -99,10 +99,9 @@ void RenderSession::render_one(const RenderRequest& request, std::uint64_t gener
   hooks.cancel = &cancel_;
   // A tiny interval makes the renderer hand over the film after every pass.
   hooks.checkpoint_interval_seconds = 1e-9;
-  hooks.on_checkpoint = [&](const Film& film, int next_sample) {
-    // The renderer repeats the last film when it ends; one frame per pass is enough.
-    if (generation != generation_.load() || next_sample == last_next_sample) return;
-    last_next_sample = next_sample;
+  // One published frame: after a pass (whole samples), or in the middle of one with
+  // bounces per pass (each pixel's completed samples; spp counts the whole passes).
+  const auto publish_film = [&](const Film& film, int next_sample, bool mid_pass) {
     ++groups;
     auto frame = std::make_shared<FilmFrame>();
     frame->generation = generation;
@@ -116,7 +115,7 @@ void RenderSession::render_one(const RenderRequest& request, std::uint64_t gener
     frame->samples_per_second = frame->elapsed_seconds > 0
         ? static_cast<double>(frame->spp) * static_cast<double>(film.pixel_count()) / frame->elapsed_seconds
         : 0.0;
-    frame->finished = next_sample >= request.settings.samples_per_pixel;
+    frame->finished = !mid_pass && next_sample >= request.settings.samples_per_pixel;
     last_pass = Clock::now();
     {
       std::lock_guard lock(mutex_);
@@ -124,6 +123,16 @@ void RenderSession::render_one(const RenderRequest& request, std::uint64_t gener
     }
     publish(std::move(frame));
   };
+  hooks.on_checkpoint = [&](const Film& film, int next_sample) {
+    // The renderer repeats the last film when it ends; one frame per pass is enough.
+    if (generation != generation_.load() || next_sample == last_next_sample) return;
+    last_next_sample = next_sample;
+    publish_film(film, next_sample, false);
+  };
+  if (request.settings.bounces_per_pass > 0)
+    hooks.on_bounces = [&](const Film& film, int pass_start) {
+      if (generation == generation_.load()) publish_film(film, pass_start, true);
+    };
   render(*prepared_, request.settings, hooks);
 }
 

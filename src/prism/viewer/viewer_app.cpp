@@ -87,6 +87,7 @@ class ViewerApp {
     s.path.max_depth = options.max_depth;
     if (!options.sampler.empty()) s.path.sampler = *parse_sampler(options.sampler);  // checked by run_viewer
     s.samples_per_pass = std::max(options.samples_per_pass, 1);
+    s.bounces_per_pass = options.bounces_per_pass;
     s.threads = options.threads;
     s.transport.kind = options.mode == "rgb" ? TransportKind::rgb : TransportKind::spectral;
     s.samples_per_pixel = options.frames > 0 ? options.frames * s.samples_per_pass : kContinuousSpp;
@@ -326,6 +327,7 @@ int run_viewer(const ViewerOptions& options) {
   if (options.frames < 0) throw UsageError("--frames must be at least 1");
   if (!options.screenshot.empty() && options.frames <= 0) throw UsageError("--screenshot needs --frames N");
   if (options.mode != "spectral" && options.mode != "rgb") throw UsageError("--mode must be spectral or rgb");
+  if (options.bounces_per_pass < 0) throw UsageError("--bounces-per-pass must be 0 (off) or more");
   if (!options.sampler.empty() && !parse_sampler(options.sampler))
     throw UsageError(fmt::format("unknown --sampler '{}' (independent, sobol, zsobol)", options.sampler));
   display::parse_odt(options.odt);

@@ -18,6 +18,7 @@ struct ViewerOptions {
   std::string mode = "spectral";   // spectral | rgb
   std::string sampler;             // independent | sobol | zsobol; empty: the renderer's default
   int samples_per_pass = 1;
+  int bounces_per_pass = 0;        // > 0: show the film every N bounces inside a pass
   int max_depth = 8;
   int threads = 0;
   double resolution_scale = 1.0;

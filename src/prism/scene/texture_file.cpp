@@ -111,8 +111,49 @@ class StbInput {
   bool ran_past_end_ = false;
 };
 
+// Walks a JPEG's marker segments (ITU-T T.81 §B.1: 0xFF marker, 2-byte big-endian length
+// including itself; entropy-coded data after SOS runs until a marker that is not a stuffed
+// 0xFF00 or an RSTn) and checks every Huffman table (DHT, §B.2.4.2: class/id byte, 16 code
+// counts, then that many symbols) before stb_image sees it. stb_image (Debian's) builds
+// its code-size list in a 257-entry array without checking that the 16 counts sum to at
+// most 256, so a corrupt DHT writes past it (found by the fuzz_image_readers target).
+void check_jpeg_huffman_tables(std::span<const unsigned char> bytes, std::string_view name) {
+  const auto corrupt = [&](std::string_view why) {
+    throw IoError(fmt::format("cannot read image '{}': corrupt JPEG ({})", name, why));
+  };
+  std::size_t pos = 2;  // after SOI
+  while (pos + 1 < bytes.size()) {
+    if (bytes[pos] != 0xFF) {
+      ++pos;  // entropy-coded data, or fill
+      continue;
+    }
+    const unsigned char marker = bytes[pos + 1];
+    if (marker == 0xFF || marker == 0x00 || (marker >= 0xD0 && marker <= 0xD7) || marker == 0x01) {
+      pos += marker == 0xFF ? 1 : 2;  // fill byte, stuffed zero, RSTn or TEM: no length
+      continue;
+    }
+    if (marker == 0xD9) return;  // EOI
+    if (pos + 4 > bytes.size()) return;  // truncated: stb_image reports it
+    const std::size_t length = (std::size_t{bytes[pos + 2]} << 8) | bytes[pos + 3];
+    if (length < 2) corrupt("segment length below 2");
+    const std::size_t end = std::min(bytes.size(), pos + 2 + length);
+    if (marker == 0xC4) {
+      std::size_t t = pos + 4;
+      while (t < end) {
+        if (t + 17 > end) corrupt("Huffman table header runs past its segment");
+        std::size_t codes = 0;
+        for (int i = 1; i <= 16; ++i) codes += bytes[t + static_cast<std::size_t>(i)];
+        if (codes > 256) corrupt(fmt::format("Huffman table with {} codes, at most 256", codes));
+        t += 17 + codes;
+      }
+    }
+    pos += 2 + length;
+  }
+}
+
 TextureImage decode_with_stb(std::span<const unsigned char> bytes, std::string_view name, TextureEncoding encoding,
                              const TextureLimits& limits) {
+  if (detect_image_format(bytes) == ImageFileFormat::jpeg) check_jpeg_huffman_tables(bytes, name);
   if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     throw IoError(fmt::format("cannot read image '{}': file too large", name));
   const auto* data = bytes.data();

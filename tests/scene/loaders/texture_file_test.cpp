@@ -163,6 +163,22 @@ TEST(TextureFile, OpenExrHeaderClaimingMoreThanTheFileHoldsIsRefusedBeforeAlloca
             std::string::npos);
 }
 
+TEST(TextureFile, JpegHuffmanTableWithTooManyCodesIsRefusedBeforeStbImage) {
+  // Regression (fuzz_image_readers, found by the CI's fuzz-smoke run): a 684-byte JPEG whose
+  // DHT counts sum past 256; stb_image wrote past its 257-entry size table (UBSan
+  // index-out-of-bounds in stbi__build_huffman). Now refused by our own marker walk.
+  const std::filesystem::path file =
+      std::filesystem::path(PRISM_SOURCE_DIR) / "tests/scene/loaders/data/fuzz_jpeg_huffman_overflow.jpg";
+  ASSERT_TRUE(std::filesystem::exists(file));
+  EXPECT_NE(error_of<IoError>([&] { read_texture_file(file, TextureEncoding::srgb, 32768); })
+                .find("corrupt JPEG (Huffman table with"),
+            std::string::npos);
+  // A valid JPEG still decodes (the fuzz corpus' seed image).
+  const TextureImage ok = read_texture_file(std::filesystem::path(PRISM_SOURCE_DIR) / "fuzz/corpus/fuzz_image_readers/tiny.jpg",
+                                            TextureEncoding::srgb, 32768);
+  EXPECT_GT(ok.width, 0);
+}
+
 TEST(TextureFile, OpenExrDataWindowIsCheckedBeforeOpenExrSeesIt) {
   test::ScratchFolder dir;
   write_exr(dir / "a.exr", ImageRgbF{2, 2, std::vector<float>(12, 1.0f)}, kRec709);

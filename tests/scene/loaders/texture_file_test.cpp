@@ -179,6 +179,28 @@ TEST(TextureFile, JpegHuffmanTableWithTooManyCodesIsRefusedBeforeStbImage) {
   EXPECT_GT(ok.width, 0);
 }
 
+TEST(TextureFile, PngWithAnEmptyIdatChunkIsReadWithoutIt) {
+  // Regression (fuzz_image_readers, CI fuzz-smoke): an empty first IDAT made stb_image memcpy
+  // to a null buffer (UBSan). Empty IDATs are dropped first; the file either decodes or is a
+  // clean IoError, never undefined behaviour (checked under UBSan by the asan preset).
+  const std::filesystem::path file =
+      std::filesystem::path(PRISM_SOURCE_DIR) / "tests/scene/loaders/data/fuzz_png_empty_idat.png";
+  ASSERT_TRUE(std::filesystem::exists(file));
+  try {
+    read_texture_file(file, TextureEncoding::srgb, 32768);
+  } catch (const IoError&) {
+  }
+  // A valid PNG with an empty IDAT chunk inserted before its data decodes to the same texels.
+  test::ScratchFolder dir;
+  write_png(dir / "a.png", EncodedImage{2, 1, 3, 8, {10, 20, 30, 40, 50, 60}});
+  std::string bytes = test::read_bytes(dir / "a.png");
+  const std::size_t idat = bytes.find("IDAT") - 4;
+  bytes.insert(idat, std::string("\x00\x00\x00\x00IDAT\x35\xaf\x06\x1e", 12));  // CRC-32 of "IDAT"
+  dir.write("empty_idat.png", bytes);
+  EXPECT_EQ(read_texture_file(dir / "empty_idat.png", TextureEncoding::linear, 32768).texels,
+            read_texture_file(dir / "a.png", TextureEncoding::linear, 32768).texels);
+}
+
 TEST(TextureFile, OpenExrDataWindowIsCheckedBeforeOpenExrSeesIt) {
   test::ScratchFolder dir;
   write_exr(dir / "a.exr", ImageRgbF{2, 2, std::vector<float>(12, 1.0f)}, kRec709);

@@ -156,13 +156,20 @@ void check_jpeg_huffman_tables(std::span<const unsigned char> bytes, std::string
 // carries no image data (PNG: the image is the concatenation of all IDAT data), so dropping
 // it changes nothing; stb_image (Debian's) would memcpy zero bytes to a null buffer for an
 // empty first IDAT (UBSan nonnull-attribute, found by the fuzz_image_readers target).
-std::optional<std::vector<unsigned char>> without_empty_idat_chunks(std::span<const unsigned char> bytes) {
+// Also refuses a chunk whose declared length runs past the end of the file: stb_image
+// grows its IDAT buffer to the declared length before reading (a 2 GB realloc for a few
+// bytes of input, found by the same fuzz target).
+std::optional<std::vector<unsigned char>> without_empty_idat_chunks(std::span<const unsigned char> bytes,
+                                                                    std::string_view name) {
   constexpr std::size_t kSignature = 8;
   std::vector<std::pair<std::size_t, std::size_t>> empty;  // [begin, end) of each empty IDAT
   for (std::size_t pos = kSignature; pos + 12 <= bytes.size();) {
     const std::size_t length = (std::size_t{bytes[pos]} << 24) | (std::size_t{bytes[pos + 1]} << 16) |
                                (std::size_t{bytes[pos + 2]} << 8) | bytes[pos + 3];
-    if (length > bytes.size() - pos - 12) break;  // truncated: stb_image reports it
+    if (length > bytes.size() - pos - 12)
+      throw IoError(fmt::format("cannot read image '{}': corrupt or truncated PNG (a chunk claims {} bytes, more "
+                                "than the file holds)",
+                                name, length));
     if (length == 0 && std::memcmp(bytes.data() + pos + 4, "IDAT", 4) == 0) empty.emplace_back(pos, pos + 12);
     pos += 12 + length;
   }
@@ -182,7 +189,8 @@ TextureImage decode_with_stb(std::span<const unsigned char> bytes, std::string_v
                              const TextureLimits& limits) {
   if (detect_image_format(bytes) == ImageFileFormat::jpeg) check_jpeg_huffman_tables(bytes, name);
   if (detect_image_format(bytes) == ImageFileFormat::png) {
-    if (const auto cleaned = without_empty_idat_chunks(bytes)) return decode_with_stb(*cleaned, name, encoding, limits);
+    if (const auto cleaned = without_empty_idat_chunks(bytes, name))
+      return decode_with_stb(*cleaned, name, encoding, limits);
   }
   if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     throw IoError(fmt::format("cannot read image '{}': file too large", name));

@@ -201,6 +201,19 @@ TEST(TextureFile, PngWithAnEmptyIdatChunkIsReadWithoutIt) {
             read_texture_file(dir / "a.png", TextureEncoding::linear, 32768).texels);
 }
 
+TEST(TextureFile, PngChunkClaimingMoreThanTheFileHoldsIsRefusedBeforeStbImage) {
+  // Regression (fuzz_image_readers): an IDAT declaring ~2 GB made stb_image realloc 2 GB
+  // before reading. Refused by our own chunk walk, before any allocation.
+  test::ScratchFolder dir;
+  write_png(dir / "a.png", EncodedImage{2, 1, 3, 8, {10, 20, 30, 40, 50, 60}});
+  std::string bytes = test::read_bytes(dir / "a.png");
+  bytes.replace(bytes.find("IDAT") - 4, 4, std::string("\x7f\xff\xff\xf0", 4));
+  dir.write("huge_idat.png", bytes);
+  EXPECT_NE(error_of<IoError>([&] { read_texture_file(dir / "huge_idat.png", TextureEncoding::srgb, 32768); })
+                .find("corrupt or truncated PNG"),
+            std::string::npos);
+}
+
 TEST(TextureFile, OpenExrDataWindowIsCheckedBeforeOpenExrSeesIt) {
   test::ScratchFolder dir;
   write_exr(dir / "a.exr", ImageRgbF{2, 2, std::vector<float>(12, 1.0f)}, kRec709);

@@ -27,17 +27,18 @@ ctest --preset release
 [ "$sanitizers" = 1 ] || exit 0
 
 stage "asan: build"
-cmake --preset asan >/dev/null
+# The sanitizer builds run the Release build's (uninstrumented) Jakob–Hanika table generator:
+# same tables, minutes less under TSan.
+jh_generator="$PWD/build/release/src/prism/prism_generate_jakob_hanika_tables"
+cmake --preset asan -DPRISM_JAKOB_HANIKA_GENERATOR="$jh_generator" >/dev/null
 cmake --build --preset asan
 stage "asan: tests"
 ctest --preset asan
 stage "fuzz-smoke"
 ctest --preset fuzz-smoke
 stage "tsan: build"
-cmake --preset tsan >/dev/null
-# The build runs the (instrumented) Jakob–Hanika table generator: same suppressions.
-TSAN_OPTIONS="suppressions=$PWD/tests/sanitizers/tsan.supp" \
-  cmake --build --preset tsan --target prism_tests prism_cli
+cmake --preset tsan -DPRISM_JAKOB_HANIKA_GENERATOR="$jh_generator" >/dev/null
+cmake --build --preset tsan --target prism_tests prism_cli
 stage "tsan: tests"
 ctest --preset tsan
 stage "done"

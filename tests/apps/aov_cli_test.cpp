@@ -17,32 +17,14 @@
 #include <string>
 
 #include "prism/io/exr.h"
+#include "support/cli_test.h"
 #include "prism/io/png.h"
 
 namespace prism {
 namespace {
 namespace fs = std::filesystem;
 
-class AovCli : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("prism-aov-cli-test-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  int run(const std::string& args) {
-    const std::string cmd = std::string(PRISM_CLI) + " " + args + " >" + (dir_ / "log").string() + " 2>&1";
-    const int status = std::system(cmd.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
-  std::string log() const {
-    std::ifstream in(dir_ / "log");
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  }
-  std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  fs::path dir_;
-};
+class AovCli : public test::CliTest {};
 
 // Channel names as OpenEXR itself reads them, not through Prism's reader.
 std::set<std::string> channel_names(const std::string& file) {

@@ -14,30 +14,13 @@
 #include <thread>
 
 #include "prism/io/exr.h"
+#include "support/cli_test.h"
 
 namespace prism {
 namespace {
 namespace fs = std::filesystem;
 
-class CliRender : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("prism-cli-test-" + std::to_string(::getpid()) + "-" +
-                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-  int run(const std::string& args) {
-    const std::string cmd = std::string(PRISM_CLI) + " " + args + " >" + (dir_ / "log").string() + " 2>&1";
-    const int status = std::system(cmd.c_str());
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  }
-  std::string log() const {
-    std::ifstream in(dir_ / "log");
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  }
-  fs::path dir_;
-};
+class CliRender : public test::CliTest {};
 
 TEST_F(CliRender, InterruptThenResumeEqualsUninterrupted) {
   const std::string common = "render cornell-box --width 32 --height 32 --seed 3 ";

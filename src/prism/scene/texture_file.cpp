@@ -118,10 +118,18 @@ class StbInput {
 // counts, then that many symbols) before stb_image sees it. stb_image (Debian's) builds
 // its code-size list in a 257-entry array without checking that the 16 counts sum to at
 // most 256, so a corrupt DHT writes past it (found by the fuzz_image_readers target).
+// Each scan (SOS, §B.2.3: Ns, then per component its selector byte Td<<4|Ta, then Ss, Se,
+// Ah<<4|Al) may only select tables defined earlier: stb_image keeps its four DC and four
+// AC tables in uninitialised memory and decodes with whatever is there (an index of 637
+// into a 256-entry array, found by the same target). A scan needs its DC table when it
+// codes DC coefficients for the first time (Ss = 0, Ah = 0; a DC refinement reads raw
+// bits) and its AC table when it codes any AC coefficient (Se > 0), as in §G.1.2.
 void check_jpeg_huffman_tables(std::span<const unsigned char> bytes, std::string_view name) {
   const auto corrupt = [&](std::string_view why) {
     throw IoError(fmt::format("cannot read image '{}': corrupt JPEG ({})", name, why));
   };
+  std::array<bool, 4> dc_defined{};
+  std::array<bool, 4> ac_defined{};
   std::size_t pos = 2;  // after SOI
   while (pos + 1 < bytes.size()) {
     if (bytes[pos] != 0xFF) {
@@ -145,7 +153,27 @@ void check_jpeg_huffman_tables(std::span<const unsigned char> bytes, std::string
         std::size_t codes = 0;
         for (int i = 1; i <= 16; ++i) codes += bytes[t + static_cast<std::size_t>(i)];
         if (codes > 256) corrupt(fmt::format("Huffman table with {} codes, at most 256", codes));
+        const unsigned table_class = bytes[t] >> 4;
+        const unsigned table_id = bytes[t] & 15u;
+        if (table_class > 1 || table_id > 3) corrupt("Huffman table class or id out of range");
+        (table_class == 0 ? dc_defined : ac_defined)[table_id] = true;
         t += 17 + codes;
+      }
+    }
+    if (marker == 0xDA) {
+      const std::size_t components_at = pos + 4;
+      if (components_at >= end) corrupt("scan header runs past its segment");
+      const std::size_t components = bytes[components_at];
+      const std::size_t spectral_at = components_at + 1 + 2 * components;
+      if (spectral_at + 3 > end) corrupt("scan header runs past its segment");
+      const bool needs_dc = bytes[spectral_at] == 0 && (bytes[spectral_at + 2] >> 4) == 0;
+      const bool needs_ac = bytes[spectral_at + 1] > 0;
+      for (std::size_t c = 0; c < components; ++c) {
+        const unsigned selectors = bytes[components_at + 2 + 2 * c];
+        if (needs_dc && ((selectors >> 4) > 3 || !dc_defined[selectors >> 4]))
+          corrupt(fmt::format("scan uses DC Huffman table {} before it is defined", selectors >> 4));
+        if (needs_ac && ((selectors & 15u) > 3 || !ac_defined[selectors & 15u]))
+          corrupt(fmt::format("scan uses AC Huffman table {} before it is defined", selectors & 15u));
       }
     }
     pos += 2 + length;

@@ -179,6 +179,18 @@ TEST(TextureFile, JpegHuffmanTableWithTooManyCodesIsRefusedBeforeStbImage) {
   EXPECT_GT(ok.width, 0);
 }
 
+TEST(TextureFile, JpegScanUsingAnUndefinedHuffmanTableIsRefusedBeforeStbImage) {
+  // Regression (fuzz_image_readers, CI fuzz-smoke): a 661-byte baseline JPEG whose first scan
+  // selects AC table 3, which no DHT defines; stb_image decoded with its uninitialised table
+  // (UBSan: index 637 out of bounds for 'stbi_uc[256]' in stbi__jpeg_huff_decode).
+  const std::filesystem::path file =
+      std::filesystem::path(PRISM_SOURCE_DIR) / "tests/scene/loaders/data/fuzz_jpeg_undefined_huffman_table.jpg";
+  ASSERT_TRUE(std::filesystem::exists(file));
+  EXPECT_NE(error_of<IoError>([&] { read_texture_file(file, TextureEncoding::srgb, 32768); })
+                .find("corrupt JPEG (scan uses AC Huffman table 3 before it is defined)"),
+            std::string::npos);
+}
+
 TEST(TextureFile, PngWithAnEmptyIdatChunkIsReadWithoutIt) {
   // Regression (fuzz_image_readers, CI fuzz-smoke): an empty first IDAT made stb_image memcpy
   // to a null buffer (UBSan). Empty IDATs are dropped first; the file either decodes or is a

@@ -4,6 +4,7 @@
 
 #include <bit>
 #include <cstring>
+#include <limits>
 #include <string>
 
 #include "loader_test_files.h"
@@ -94,6 +95,31 @@ TEST(PlyMesh, BadInputIsAOneLineError) {
                 .find("out of range"),
             std::string::npos);
   EXPECT_NE(error("ply\nformat ascii 1.0\nelement blob 99999999999\nend_header\n").find("no vertex element"),
+            std::string::npos);
+}
+
+TEST(PlyMesh, NonIntegerCountsIndicesAndHugeDoublesAreErrorsNotUndefinedConversions) {
+  // Float- and double-typed lists and coordinates reach integer and float conversions that
+  // are undefined for NaN or out-of-range values (UBSan float-cast-overflow under the asan
+  // preset); each must be a one-line error instead.
+  const auto error = [](const std::string& text) {
+    return test::error_of<SceneError>([&] { parse_ply_mesh(bytes_of(text), "bad.ply"); });
+  };
+  const std::string header =
+      "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+      "property double z\nelement face 1\nproperty list float float vertex_indices\nend_header\n";
+  const auto body = [](double big, float count, float index) {
+    std::string s;
+    for (double c : {0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, big}) put(s, c, false);
+    put(s, count, false);
+    for (float i : {0.0f, 1.0f, index}) put(s, i, false);
+    return s;
+  };
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  EXPECT_EQ(parse_ply_mesh(bytes_of(header + body(0.0, 3.0f, 2.0f)), "ok.ply").indices.size(), 3u);
+  EXPECT_NE(error(header + body(0.0, nan, 2.0f)).find("a list length is out of range"), std::string::npos);
+  EXPECT_NE(error(header + body(0.0, 3.0f, nan)).find("vertex index nan is out of range"), std::string::npos);
+  EXPECT_NE(error(header + body(1e300, 3.0f, 2.0f)).find("vertex 2: 1e+300 is beyond the range of a float"),
             std::string::npos);
 }
 

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -232,14 +233,16 @@ PlyMesh parse_ply_mesh(std::span<const unsigned char> bytes, std::string_view so
           values[k] = body.read(p.type);
           continue;
         }
+        // Written so that NaN (a float-typed count or index) fails the check: converting
+        // it to an integer would be undefined behaviour.
         const double count = body.read(p.count_type);
-        if (count < 0 || count > static_cast<double>(body.remaining())) body.fail("a list length is out of range");
+        if (!(count >= 0 && count <= static_cast<double>(body.remaining()))) body.fail("a list length is out of range");
         const bool keep = static_cast<int>(k) == ilist;
         polygon.clear();
         for (int c = 0; c < static_cast<int>(count); ++c) {
           const double index = body.read(p.type);
           if (!keep) continue;
-          if (index < 0 || index >= static_cast<double>(mesh.positions.size()))
+          if (!(index >= 0 && index < static_cast<double>(mesh.positions.size())))
             body.fail(fmt::format("face {}: vertex index {} is out of range ({} vertices)", i, index, mesh.positions.size()));
           polygon.push_back(static_cast<std::uint32_t>(index));
         }
@@ -250,7 +253,14 @@ PlyMesh parse_ply_mesh(std::span<const unsigned char> bytes, std::string_view so
         }
       }
       if (is_vertex) {
-        const auto f = [&](int k) { return static_cast<float>(values[k]); };
+        // A finite double beyond float's range would make the conversion undefined; NaN and
+        // infinities convert and are reported by the scene's mesh checks with their position.
+        const auto f = [&](int k) {
+          const double v = values[k];
+          if (std::isfinite(v) && std::abs(v) > static_cast<double>(std::numeric_limits<float>::max()))
+            body.fail(fmt::format("vertex {}: {} is beyond the range of a float", i, v));
+          return static_cast<float>(v);
+        };
         mesh.positions.emplace_back(f(ix), f(iy), f(iz));
         if (inx >= 0 && iny >= 0 && inz >= 0) mesh.normals.emplace_back(f(inx), f(iny), f(inz));
         if (iu >= 0 && iv >= 0) mesh.uvs.emplace_back(f(iu), f(iv));

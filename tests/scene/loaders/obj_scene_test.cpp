@@ -115,6 +115,33 @@ TEST(ObjLoader, BadInputIsAOneLineError) {
   EXPECT_THROW(load_scene((dir / "missing.obj").string()), IoError);
 }
 
+TEST(ObjLoader, SkinWeightLinesAreIgnoredBeforeTinyObjLoaderConvertsThem) {
+  // Regression (fuzz_obj): tinyobjloader's `vw` extension converted a joint id of 1e40
+  // (inf as a float) to int — undefined behaviour, reported by UBSan under the asan preset.
+  // Prism has no skinning; the lines become comments, in any line-ending style, and the
+  // mesh around them loads as if they were not there.
+  test::ScratchFolder dir;
+  for (const std::string eol : {"\n", "\r\n", "\r"}) {
+    const std::string text = "v 0 0 0" + eol + "  vw 0 1e40 0.5" + eol + "v 1 0 0" + eol + "\tvw 1 2 0.5" + eol +
+                             "v 0 1 0" + eol + "f 1 2 3" + eol;
+    const Scene scene = load_scene(dir.write("m.obj", text).string());
+    EXPECT_EQ(scene.triangle_count(), 1u);
+    ASSERT_EQ(scene.meshes.size(), 1u);
+    EXPECT_EQ(scene.meshes[0].positions.size(), 3u);
+  }
+  // A skin-weight line hides nothing: the bad face after it is still reported.
+  const std::string message =
+      error_of<SceneError>([&] { load_scene(dir.write("n.obj", "vw 0 1 1\nv 0 0 0\nf 1 2 3\n").string()); });
+  EXPECT_NE(message.find("out of range"), std::string::npos) << message;
+  // The fuzzer's input itself.
+  EXPECT_NO_FATAL_FAILURE({
+    try {
+      load_scene((std::filesystem::path(PRISM_SOURCE_DIR) / "tests/scene/loaders/data/fuzz_obj_skin_weight_inf.obj").string());
+    } catch (const Error&) {
+    }
+  });
+}
+
 TEST(ObjLoader, DropsZeroAreaTrianglesWithAWarning) {
   test::ScratchFolder dir;
   const Scene scene =

@@ -170,6 +170,31 @@ std::vector<std::uint32_t> add_materials(Scene& scene, const std::vector<tinyobj
   return indices;
 }
 
+// The OBJ text with tinyobjloader's skin-weight lines (`vw`, its own extension) turned into
+// comments: Prism has no skinning, and Debian's tinyobjloader converts their joint ids to int
+// unchecked (UBSan: inf outside the range of int, found by the fuzz_obj target). Lines are
+// found as tinyobjloader finds them — ending at '\n' or '\r', leading spaces and tabs
+// skipped — and keep their length, so line numbers in messages do not move.
+std::string without_skin_weight_lines(std::string_view obj_text) {
+  std::string text(obj_text);
+  bool line_start = true;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '\n' || c == '\r') {
+      line_start = true;
+      continue;
+    }
+    if (!line_start) continue;
+    if (c == ' ' || c == '\t') continue;
+    line_start = false;
+    if (c == 'v' && i + 2 < text.size() && text[i + 1] == 'w' && (text[i + 2] == ' ' || text[i + 2] == '\t')) {
+      text[i] = '#';
+      text[i + 1] = ' ';
+    }
+  }
+  return text;
+}
+
 }  // namespace
 
 std::vector<std::uint32_t> append_obj(Scene& scene, std::string_view obj_text, std::string_view source,
@@ -178,7 +203,7 @@ std::vector<std::uint32_t> append_obj(Scene& scene, std::string_view obj_text, s
   std::vector<tinyobj::shape_t> shapes;
   std::vector<tinyobj::material_t> materials;
   std::string warn, err;
-  std::istringstream in{std::string(obj_text)};
+  std::istringstream in{without_skin_weight_lines(obj_text)};
   SafeMaterialReader reader(context, source);
   const bool ok = tinyobj::LoadObj(&attrib, &shapes, &materials, &warn, &err, &in, &reader, true, false);
   reader.rethrow_failure();

@@ -1,6 +1,7 @@
 #include "prism/scene/light_sampler.h"
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -31,35 +32,50 @@ Vec2f barycentric_uv(Vec2f uv0, Vec2f duv1, Vec2f duv2, Vec2f b) {
   return {uv0.x + duv1.x * b.x + duv2.x * b.y, uv0.y + duv1.y * b.x + duv2.y * b.y};
 }
 
-// Y(colour ⊙ texel) / Y(colour) of an emission texture at uv (bilinear, finest level).
-double texel_emission_weight(const TextureImage& texture, const Emission& emission, Vec2f uv) {
-  const double y_colour = relative_luminance(emission.color, emission.color_space);
-  if (!(y_colour > 0.0)) return 0.0;
-  const TexelRgba t = sample_bilinear(texture, apply_uv_transform(texture, uv));
-  const Vec3f rgb = texture.channels >= 3 ? Vec3f(t[0], t[1], t[2]) : Vec3f(t[0]);
-  return std::max(0.0, relative_luminance(emission.color * rgb, emission.color_space) / y_colour);
-}
+// Y(colour ⊙ texel) / Y(colour) of an emission texture, with the picker space's luminance
+// row looked up once per emissive mesh (these run per texel and per quadrature point).
+struct TexelEmissionWeight {
+  TexelEmissionWeight(const TextureImage& texture_, const Emission& emission)
+      : texture(texture_),
+        colour(emission.color),
+        luminance_row(picker_color_space(emission.color_space).rgb_to_xyz.row(1)),
+        y_colour(dot(luminance_row, Vec3d(emission.color))) {}
+
+  // At uv, bilinear on the finest level.
+  double operator()(Vec2f uv) const {
+    if (!(y_colour > 0.0)) return 0.0;
+    const TexelRgba t = sample_bilinear(texture, apply_uv_transform(texture, uv));
+    const Vec3f rgb = texture.channels >= 3 ? Vec3f(t[0], t[1], t[2]) : Vec3f(t[0]);
+    return std::max(0.0, dot(luminance_row, Vec3d(colour * rgb)) / y_colour);
+  }
+
+  const TextureImage& texture;
+  Vec3f colour;
+  Vec3d luminance_row;
+  double y_colour;
+};
 
 // The texture's mean weight over its texel centres (once per emissive mesh).
-double texture_mean_weight(const TextureImage& texture, const Emission& emission) {
+double texture_mean_weight(const TexelEmissionWeight& weight) {
+  const TextureImage& texture = weight.texture;
   double sum = 0.0;
   for (int y = 0; y < texture.height; ++y)
     for (int x = 0; x < texture.width; ++x)
-      sum += texel_emission_weight(texture, emission, Vec2f((x + 0.5f) / texture.width, (y + 0.5f) / texture.height));
+      sum += weight(Vec2f((x + 0.5f) / texture.width, (y + 0.5f) / texture.height));
   return sum / std::max(1, texture.width * texture.height);
 }
 
 // Relative power of a textured emissive triangle: the mean over its uv footprint of
 // Y(colour ⊙ texel) / Y(colour), by 16 stratified points, plus a floor of 1% of the
 // texture's mean (see the header).
-double textured_triangle_weight(const TextureImage& texture, const Emission& emission, double texture_mean,
-                                Vec2f uv0, Vec2f duv1, Vec2f duv2) {
+double textured_triangle_weight(const TexelEmissionWeight& weight, double texture_mean, Vec2f uv0, Vec2f duv1,
+                                Vec2f duv2) {
   constexpr int kGrid = 4;
   double sum = 0.0;
   for (int i = 0; i < kGrid; ++i)
     for (int j = 0; j < kGrid; ++j) {
       const Vec2f b = sample_uniform_triangle(Vec2f((i + 0.5f) / kGrid, (j + 0.5f) / kGrid));
-      sum += texel_emission_weight(texture, emission, barycentric_uv(uv0, duv1, duv2, b));
+      sum += weight(barycentric_uv(uv0, duv1, duv2, b));
     }
   return sum / (kGrid * kGrid) + 0.01 * texture_mean;
 }
@@ -76,8 +92,9 @@ LightSampler::LightSampler(const Scene& scene, const Bounds3f& world) {
     first_triangle_of_mesh_[m] = static_cast<std::int64_t>(emitters_.size());
     const int tex = material.emission.texture;
     const bool textured = tex >= 0 && static_cast<std::size_t>(tex) < scene.textures.size() && !mesh.uvs.empty();
-    const double texture_mean =
-        textured ? texture_mean_weight(scene.textures[static_cast<std::size_t>(tex)], material.emission) : 0.0;
+    std::optional<TexelEmissionWeight> texel_weight;
+    if (textured) texel_weight.emplace(scene.textures[static_cast<std::size_t>(tex)], material.emission);
+    const double texture_mean = textured ? texture_mean_weight(*texel_weight) : 0.0;
     for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
       const Vec3f& p0 = mesh.positions[mesh.indices[3 * t + 0]];
       const Vec3f& p1 = mesh.positions[mesh.indices[3 * t + 1]];
@@ -101,8 +118,7 @@ LightSampler::LightSampler(const Scene& scene, const Bounds3f& world) {
         const Vec2f& uv2 = mesh.uvs[mesh.indices[3 * t + 2]];
         e.duv1 = Vec2f(uv1.x - e.uv0.x, uv1.y - e.uv0.y);
         e.duv2 = Vec2f(uv2.x - e.uv0.x, uv2.y - e.uv0.y);
-        texture_weight = textured_triangle_weight(scene.textures[static_cast<std::size_t>(tex)], material.emission,
-                                                  texture_mean, e.uv0, e.duv1, e.duv2);
+        texture_weight = textured_triangle_weight(*texel_weight, texture_mean, e.uv0, e.duv1, e.duv2);
       }
       emitters_.push_back(e);
       // Lambertian emitter: Φ = π · L · A per emitting side. Zero-area triangles get
@@ -181,6 +197,9 @@ LightSampler::LightSampler(const Scene& scene, const Bounds3f& world) {
     selection_cdf_.push_back(static_cast<float>(running / total));
   }
   selection_cdf_.back() = 1.0f;
+  for (std::size_t i = 0; i < emitters_.size(); ++i)
+    if (emitters_[i].kind == Kind::environment || (emitters_[i].kind == Kind::directional && emitters_[i].cos_max < 1.0f))
+      escapable_emitters_.push_back(static_cast<std::uint32_t>(i));
 }
 
 namespace {
@@ -339,7 +358,7 @@ float LightSampler::pdf_triangle(std::uint32_t mesh, std::uint32_t triangle, con
 
 std::vector<LightSampler::EscapedHit> LightSampler::escaped(const Vec3f& wi) const {
   std::vector<EscapedHit> hits;
-  for (std::size_t i = 0; i < emitters_.size(); ++i) {
+  for (const std::uint32_t i : escapable_emitters_) {
     const Emitter& e = emitters_[i];
     if (e.kind == Kind::environment) {
       hits.push_back({e.emitter, 1.0f, selection_pmf_[i] * environment_pdf(e, wi), true, environment_rgb(e, wi)});

@@ -99,6 +99,9 @@ class LightSampler {
   std::vector<float> selection_pmf_;
   std::vector<float> selection_cdf_;
   std::vector<std::int64_t> first_triangle_of_mesh_;  // -1 for meshes without emission
+  // What a ray leaving the scene can hit: the environment and directional lights with a
+  // size. escaped() visits only these, not every emissive triangle.
+  std::vector<std::uint32_t> escapable_emitters_;
 };
 
 }  // namespace prism

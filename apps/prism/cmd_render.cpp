@@ -13,6 +13,7 @@
 #include "aov_exr.h"
 #include "command.h"
 #include "display_options.h"
+#include "environment_options.h"
 #include "progress_reporter.h"
 #include "prism/color/chromatic_adaptation.h"
 #include "prism/color/color_space.h"
@@ -28,6 +29,7 @@
 #include "prism/render/renderer.h"
 #include "prism/scene/camera_json.h"
 #include "prism/scene/camera_selection.h"
+#include "prism/scene/environment_override.h"
 #include "prism/scene/load_scene.h"
 
 namespace prism::cli {
@@ -57,6 +59,7 @@ struct RenderOptions {
   std::string exr_space = "working";
   std::string camera;  // --camera NAME|INDEX
   std::string camera_json;
+  EnvironmentOverride environment;  // --environment FILE|uniform
   DisplayCliOptions display;
   std::string sample_range;  // "START:END"
   std::string checkpoint;
@@ -213,7 +216,13 @@ int run_render(const RenderOptions& o) {
                                                 .memory_budget = &load_budget});
   if (!o.camera.empty()) select_camera(scene, o.camera);
   if (!o.camera_json.empty()) scene.camera = read_camera_json(o.camera_json, scene.camera);
+  apply_environment_override(scene, o.environment,
+                             LoadOptions{.allow_external_paths = true, .memory_budget = &load_budget});
   for (const std::string& w : scene.warnings) fmt::print(stderr, "prism: warning: {}\n", w);
+  if (!scene_has_emitters(scene))
+    fmt::print(stderr, "prism: warning: {} has no lights or emissive surfaces, so the image will be black; light it with "
+                       "--environment FILE.hdr or --environment uniform\n",
+               scene.name);
   for (std::size_t i = 1, n = 0; i <= scene.lights.size(); ++i)
     if (scene.lights[i - 1].type == LightType::environment && ++n == 2)
       fmt::print(stderr, "prism: warning: only the first environment light is used\n");
@@ -388,6 +397,7 @@ void add_render_command(CLI::App& root, Action& action) {
                   "hold the beauty only (--view normal turns the normal AOV on and shows it)");
   cmd->add_flag("--allow-external-paths", options->allow_external_paths,
                 "Let the scene file refer to files outside its own folder (absolute paths, '..')");
+  add_environment_options(cmd, options->environment);
   cmd->callback([options, cmd, &action] {
     options->threads_given = cmd->count("--threads") > 0;
     options->spp_given = cmd->count("--spp") > 0;

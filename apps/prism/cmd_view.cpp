@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "command.h"
+#include "environment_options.h"
 #include "prism/viewer/viewer_app.h"
 
 namespace prism::cli {
@@ -39,6 +40,7 @@ void add_view_command(CLI::App& root, Action& action) {
                 "Print one line per event (restart, camera, pass, screenshot, UI frame times) on stdout");
   cmd->add_flag("--allow-external-paths", o->allow_external_paths,
                 "Let the scene file refer to files outside its own folder");
+  add_environment_options(cmd, o->environment);
   cmd->callback([o, &action] { action = [o] { return viewer::run_viewer(*o); }; });
 }
 

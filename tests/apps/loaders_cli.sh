@@ -94,5 +94,26 @@ for spec in side 2; do
   [ ! -e "$work/nocam.exr" ] || fail "--camera $spec wrote an image"
 done
 
+# A scene without lights renders black, with one warning naming the way out; --environment
+# lights it (uniform sky, or an image map); a bad map is a one-line error and writes nothing.
+cat >"$work/scene/dark.json" <<'JSON'
+{"format": "prism-scene/1", "name": "dark",
+ "materials": [{"name": "grey", "type": "diffuse"}],
+ "meshes": [{"name": "floor", "material": "grey", "positions": [-1,0,-1, -1,0,1, 1,0,1, 1,0,-1], "indices": [0,1,2, 0,2,3]}],
+ "camera": {"eye": [0, 0.5, 3], "target": [0, 0, 0]}}
+JSON
+expect_ok "rendered" render "$work/scene/dark.json" --spp 1 --width 8 --height 8 -o "$work/dark.exr"
+grep -q "^prism: warning: dark has no lights or emissive surfaces.*--environment" "$work/stderr" ||
+  fail "no warning for a scene without lights: $(cat "$work/stderr")"
+expect_ok "rendered" render "$work/scene/dark.json" --environment uniform --environment-nits 2 --spp 1 --width 8 --height 8 \
+  -o "$work/lit.exr"
+grep -q "warning" "$work/stderr" && fail "--environment uniform still warns: $(cat "$work/stderr")"
+cmp -s "$work/dark.exr" "$work/lit.exr" && fail "--environment uniform rendered the same image as no lights"
+expect_error "cannot read image" render "$work/scene/dark.json" --environment "$work/missing.hdr" --spp 1 -o "$work/nomap.exr"
+[ ! -e "$work/nomap.exr" ] || fail "--environment with a missing map wrote an image"
+timeout 60 "$prism" render "$work/scene/dark.json" --environment uniform --environment-nits -1 -o "$work/neg.exr" \
+  >"$work/stdout" 2>"$work/stderr"
+[ "$?" -eq 2 ] || fail "--environment-nits -1: expected a usage error (exit 2): $(cat "$work/stderr")"
+
 if [ "$failures" -ne 0 ]; then echo "$failures failure(s)"; exit 1; fi
 echo "loaders CLI: all checks passed"

@@ -18,6 +18,7 @@
 #include "prism/sampling/pixel_sampler.h"
 #include "prism/scene/camera_json.h"
 #include "prism/scene/camera_selection.h"
+#include "prism/scene/environment_override.h"
 #include "prism/scene/load_scene.h"
 #include "prism/viewer/camera_input.h"
 #include "prism/viewer/display_worker.h"
@@ -336,6 +337,11 @@ int run_viewer(const ViewerOptions& options) {
   ViewerWindow window(options.window_width, options.window_height, "Prism - " + options.scene);
   Scene scene = load_scene(options.scene, LoadOptions{.allow_external_paths = options.allow_external_paths});
   if (!options.camera.empty()) select_camera(scene, options.camera);
+  apply_environment_override(scene, options.environment, LoadOptions{.allow_external_paths = true});
+  if (!scene_has_emitters(scene))
+    fmt::print(stderr, "prism: warning: {} has no lights or emissive surfaces, so the image will be black; light it with "
+                       "--environment FILE.hdr or --environment uniform\n",
+               scene.name);
   ViewerApp app(options, std::move(scene), window);
   return app.run();
 }

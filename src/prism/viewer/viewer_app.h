@@ -3,12 +3,15 @@
 #include <optional>
 #include <string>
 
+#include "prism/scene/environment_override.h"
+
 namespace prism::viewer {
 
 struct ViewerOptions {
   std::string scene = "cornell-box";
   bool allow_external_paths = false;
   std::string camera;              // --camera NAME|INDEX of the scene file's cameras
+  EnvironmentOverride environment; // --environment FILE|uniform (replaces the scene's)
   int window_width = 1280, window_height = 720;
   int frames = 0;                  // > 0: render this many passes, then exit (headless use)
   std::string screenshot;          // with frames: write what the window shows (PNG)

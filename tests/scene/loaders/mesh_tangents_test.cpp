@@ -7,6 +7,10 @@
 #include <cmath>
 #include <cstring>
 
+#include "prism/render/surface_interaction.h"
+#include "prism/core/error.h"
+#include "prism/scene/flatten_instances.h"
+#include "prism/scene/loaders/mesh_checks.h"
 #include "prism/scene/loaders/gltf_scene.h"
 #include "prism/scene/loaders/sphere_mesh.h"
 
@@ -79,11 +83,47 @@ TEST(MeshTangents, UnitPerpendicularAndAlongUOnASphere) {
   }
 }
 
+TEST(MeshTangents, MirrorSeamVerticesTakeOneSide) {
+  // Two quads sharing the edge x = 1, the right one's uvs mirrored (u = 1 − |x − 1|), as
+  // symmetric models lay out half a texture. Off the seam each side gets its own frame; a
+  // seam vertex takes one side's whole frame (tangent and sign together), never a blend.
+  TriangleMesh m;
+  m.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}, {0, 1, 0}, {1, 1, 0}, {2, 1, 0}};
+  m.normals.assign(6, Vec3f(0, 0, 1));
+  m.uvs = {{0, 1}, {1, 1}, {0, 1}, {0, 0}, {1, 0}, {0, 0}};
+  m.indices = {0, 1, 4, 0, 4, 3, 1, 2, 5, 1, 5, 4};
+  ASSERT_TRUE(generate_tangents(m));
+  for (std::size_t v : {0u, 3u}) {
+    EXPECT_NEAR(length(m.tangents[v] - Vec3f(1, 0, 0)), 0.0f, kTolerance);
+    EXPECT_EQ(m.tangent_signs[v], 1.0f);
+  }
+  for (std::size_t v : {2u, 5u}) {
+    EXPECT_NEAR(length(m.tangents[v] - Vec3f(-1, 0, 0)), 0.0f, kTolerance);
+    EXPECT_EQ(m.tangent_signs[v], -1.0f);
+  }
+  for (std::size_t v : {1u, 4u}) {
+    const float side = m.tangent_signs[v];
+    EXPECT_NEAR(length(m.tangents[v] - Vec3f(side, 0, 0)), 0.0f, kTolerance) << v;
+  }
+}
+
 TEST(MeshTangents, NeedsNormalsAndUvs) {
   TriangleMesh m = quad({{0, 1}, {1, 1}, {1, 0}, {0, 0}});
   m.normals.clear();
   EXPECT_FALSE(generate_tangents(m));
   EXPECT_TRUE(m.tangents.empty());
+}
+
+TEST(MeshTangents, MeshChecksRefuseBadSigns) {
+  TriangleMesh m = quad({{0, 1}, {1, 1}, {1, 0}, {0, 0}});
+  ASSERT_TRUE(generate_tangents(m));
+  TriangleMesh short_signs = m;
+  short_signs.tangent_signs.pop_back();
+  EXPECT_THROW(check_and_clean_mesh(short_signs, "quad"), SceneError);
+  TriangleMesh half = m;
+  half.tangent_signs[2] = 0.5f;
+  EXPECT_THROW(check_and_clean_mesh(half, "quad"), SceneError);
+  EXPECT_EQ(check_and_clean_mesh(m, "quad"), 0u);
 }
 
 template <typename T>
@@ -136,6 +176,42 @@ TEST(MeshTangents, GltfTangentsAndTheirSignsAreKept) {
   const Scene s = parse_glb(quad_glb(true));
   ASSERT_EQ(s.meshes.size(), 1u);
   expect_tangents(s.meshes[0], Vec3f(0, 1, 0), -1.0f);  // the file's, not generated
+}
+
+TEST(MeshTangents, MirroredInstancesFlipTheSign) {
+  // The bitangent sign · n × t must stay the mirrored image of the original bitangent:
+  // under x → −x, t = +x becomes −x, n = +z stays, so n × t turns from +y to −y while the
+  // mirrored bitangent is still +y: the sign flips.
+  Scene scene;
+  scene.materials.emplace_back();
+  scene.meshes.push_back(quad({{0, 1}, {1, 1}, {1, 0}, {0, 0}}));
+  ASSERT_TRUE(generate_tangents(scene.meshes[0]));
+  scene.instances.push_back({0, Transform::scale(Vec3f(-1, 1, 1))});
+  const Scene flat = flatten_instances(scene);
+  const TriangleMesh& m = flat.meshes[0];
+  for (std::size_t v = 0; v < 4; ++v) {
+    const Vec3f bitangent = cross(m.normals[v], m.tangents[v]) * m.tangent_signs[v];
+    EXPECT_NEAR(length(bitangent - Vec3f(0, 1, 0)), 0.0f, kTolerance);
+  }
+}
+
+TEST(MeshTangents, ShadingFrameFollowsTheTangent) {
+  // With u along +y on the quad, the hit's frame has s = +y (without tangents it would be
+  // whatever Frame::from_normal(+z) gives: +x).
+  Scene scene;
+  scene.materials.emplace_back();
+  scene.meshes.push_back(quad({{0, 0}, {0, 3}, {2, 3}, {2, 0}}));
+  ASSERT_TRUE(generate_tangents(scene.meshes[0]));
+  Hit hit;
+  hit.u = 0.2f;
+  hit.v = 0.3f;
+  const SurfaceInteraction si = surface_interaction(scene, hit, Ray{Vec3f(0.5f, 0.5f, 1.0f), Vec3f(0, 0, -1)});
+  EXPECT_NEAR(length(si.shading.s - Vec3f(0, 1, 0)), 0.0f, kTolerance);
+  EXPECT_NEAR(length(si.shading.n - Vec3f(0, 0, 1)), 0.0f, kTolerance);
+  EXPECT_NEAR(length(cross(si.shading.s, si.shading.t) - si.shading.n), 0.0f, kTolerance);  // right-handed
+  scene.meshes[0].tangents.clear();
+  const SurfaceInteraction plain = surface_interaction(scene, hit, Ray{Vec3f(0.5f, 0.5f, 1.0f), Vec3f(0, 0, -1)});
+  EXPECT_GT(length(plain.shading.s - Vec3f(0, 1, 0)), 0.5f);
 }
 
 }  // namespace

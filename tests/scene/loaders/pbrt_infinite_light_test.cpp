@@ -14,6 +14,7 @@
 #include "loader_test_files.h"
 #include "prism/core/error.h"
 #include "prism/io/exr.h"
+#include "prism/io/png.h"
 #include "prism/render/renderer.h"
 #include "prism/scene/flatten_instances.h"
 #include "prism/scene/light_sampler.h"
@@ -119,6 +120,19 @@ TEST(PbrtInfiniteLight, NonSquareImagesAreRefused) {
       test::error_of<SceneError>([&] { load_pbrt_scene(dir.write("sky.pbrt", scene_text(""))); });
   EXPECT_NE(error.find("sky.pbrt:8"), std::string::npos) << error;
   EXPECT_NE(error.find("square"), std::string::npos) << error;
+}
+
+TEST(PbrtInfiniteLight, PngMapsAreSrgbEncodedAsPbrtReadsThem) {
+  // pbrt-v4's Image::Read decodes an 8-bit PNG with the sRGB curve when no encoding is
+  // asked for, as its infinite light does: code 128 is linear 0.21586 (IEC 61966-2-1).
+  test::ScratchFolder dir;
+  write_png(dir / "grey.png", EncodedImage{2, 2, 3, 8, std::vector<std::uint16_t>(12, 128)});
+  const Scene s = load_pbrt_scene(dir.write("sky.pbrt", R"(WorldBegin
+LightSource "infinite" "string filename" "grey.png" "float scale" 2
+Shape "sphere"
+)"));
+  const double linear = std::pow((128.0 / 255.0 + 0.055) / 1.055, 2.4);
+  EXPECT_NEAR(sky(s, {0, 0, 1}), 2.0 * linear, 1e-6);
 }
 
 }  // namespace

@@ -89,7 +89,9 @@ void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
     if (!file.empty()) {
       if (p.has("L")) throw SceneError(fmt::format("{}:{}: infinite light: give \"L\" or \"filename\", not both", p.source, p.line));
       try {
-        light.environment_texture = textures_->load(resolve(p, "filename", file), TextureEncoding::linear);
+        // pbrt-v4 reads an 8- or 16-bit PNG as sRGB-encoded (Image::Read without an
+        // encoding); EXR and HDR are linear whatever is asked.
+        light.environment_texture = textures_->load(resolve(p, "filename", file), TextureEncoding::srgb);
       } catch (const IoError& e) {
         throw IoError(fmt::format("{}:{}: infinite light: {}", p.source, p.line, e.what()));
       }

@@ -16,7 +16,7 @@ static_assert(sizeof(AovSample) <= kAovSlotBytesPerPixel, "the memory estimate m
 
 std::uint64_t mesh_bytes(const TriangleMesh& m) {
   return m.positions.size() * sizeof(Vec3f) + m.normals.size() * sizeof(Vec3f) + m.uvs.size() * sizeof(Vec2f) +
-         m.tangents.size() * sizeof(Vec3f) + m.indices.size() * sizeof(std::uint32_t);
+         m.tangents.size() * sizeof(Vec3f) + m.tangent_signs.size() * sizeof(float) + m.indices.size() * sizeof(std::uint32_t);
 }
 
 }  // namespace

@@ -53,6 +53,16 @@ inline SurfaceInteraction surface_interaction(const Scene& scene, const Hit& hit
     }
   }
   si.shading = Frame::from_normal(ns);
+  if (!mesh.tangents.empty()) {
+    // Per-vertex tangents (the file's, or generated along +u by the glTF loader) fix the
+    // frame's turn about the normal, so it follows the surface's uv layout instead of the
+    // normal's direction (what anisotropic lobes need); Gram–Schmidt against ns. The
+    // frame stays right-handed: the BSDFs are symmetric under a flip of the bitangent.
+    const Vec3f t = mesh.tangents[i0] * b0 + mesh.tangents[i1] * hit.u + mesh.tangents[i2] * hit.v;
+    const Vec3f s = t - ns * dot(ns, t);
+    const float len = length(s);
+    if (len > 1e-4f * length(t)) si.shading = Frame{s / len, cross(ns, s / len), ns};
+  }
   if (!mesh.uvs.empty()) {
     const Vec2f& t0 = mesh.uvs[i0];
     const Vec2f& t1 = mesh.uvs[i1];

@@ -39,6 +39,11 @@ Scene flatten_instances(const Scene& scene) {
                       t.m[0][2] * (t.m[1][0] * t.m[2][1] - t.m[1][1] * t.m[2][0]);
     if (det < 0.0f)
       for (std::size_t i = 0; i + 2 < mesh.indices.size(); i += 3) std::swap(mesh.indices[i + 1], mesh.indices[i + 2]);
+    // ... and swaps the handedness of n × t against the mirrored bitangent.
+    if (det < 0.0f && !mesh.tangents.empty()) {
+      if (mesh.tangent_signs.empty()) mesh.tangent_signs.assign(mesh.tangents.size(), 1.0f);
+      for (float& s : mesh.tangent_signs) s = -s;
+    }
     flat.meshes.push_back(std::move(mesh));
   }
   return flat;

@@ -16,6 +16,13 @@ enum class LightType : std::uint8_t {
   environment,  // intensity: luminance scale in nits applied to the (linear) texture
 };
 
+// How an environment texture's uv maps to directions in the light's own frame
+// (scene/environment_mapping.h has both maps and their Jacobians).
+enum class EnvironmentMapping : std::uint8_t {
+  equirectangular,        // v = θ/π from +y, u = (φ + π)/2π with φ = atan2(z, x)
+  equal_area_octahedral,  // Clarberg 2008 as pbrt-v4 uses it: square image, +z at the centre
+};
+
 struct Light {
   std::string name;
   LightType type = LightType::point;
@@ -27,7 +34,8 @@ struct Light {
   float spot_inner_angle_degrees = 30.0f;
   float spot_outer_angle_degrees = 45.0f;
   float angular_diameter_degrees = 0.0f;  // directional: 0 = delta light; the Sun is ≈ 0.53
-  int environment_texture = -1;           // environment: equirectangular texture index
+  int environment_texture = -1;           // environment: texture index (-1: constant)
+  EnvironmentMapping environment_mapping = EnvironmentMapping::equirectangular;
   Transform environment_to_world;         // environment: orientation
 };
 

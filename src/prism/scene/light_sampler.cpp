@@ -7,9 +7,11 @@
 #include <numbers>
 
 #include "prism/core/frame.h"
+#include "prism/core/mat3.h"
 #include "prism/color/color_space.h"
 #include "prism/sampling/warps.h"
 #include "prism/scene/emission.h"
+#include "prism/scene/environment_mapping.h"
 #include "prism/scene/texture_sampling.h"
 
 namespace prism {
@@ -26,6 +28,21 @@ float spot_falloff(float cos_theta, float cos_outer, float cos_inner) {
   if (cos_theta <= cos_outer) return 0.0f;
   const float t = (cos_theta - cos_outer) / (cos_inner - cos_outer);
   return t * t * (3.0f - 2.0f * t);
+}
+
+// World → map for the environment: the inverse of map → world's linear part (loaders may
+// give scales or mirrors as well as rotations; directions are normalised after it).
+// A singular matrix cannot orient a map: the identity stands in (loaders refuse those).
+Transform inverse_linear(const Transform& t) {
+  Mat3 a;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) a.m[i][j] = t.m[i][j];
+  Transform r;
+  if (determinant(a) == 0.0) return r;
+  const Mat3 inv = inverse(a);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) r.m[i][j] = static_cast<float>(inv.m[i][j]);
+  return r;
 }
 
 Vec2f barycentric_uv(Vec2f uv0, Vec2f duv1, Vec2f duv2, Vec2f b) {
@@ -165,10 +182,9 @@ LightSampler::LightSampler(const Scene& scene, const Bounds3f& world) {
         if (e.texture || environment_built_) break;  // one environment per scene: the first
         e.kind = Kind::environment;
         e.intensity_nits = static_cast<float>(intensity);
+        e.mapping = light.environment_mapping;
         e.map_to_world = light.environment_to_world;
-        // Rotations only: the inverse is the transpose.
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) e.world_to_map.m[i][j] = light.environment_to_world.m[j][i];
+        e.world_to_map = inverse_linear(light.environment_to_world);
         const bool textured = light.environment_texture >= 0 &&
                               static_cast<std::size_t>(light.environment_texture) < scene.textures.size();
         e.texture = textured ? &scene.textures[static_cast<std::size_t>(light.environment_texture)] : nullptr;
@@ -204,20 +220,6 @@ LightSampler::LightSampler(const Scene& scene, const Bounds3f& world) {
 
 namespace {
 
-// Equirectangular map convention: v = θ/π from +y (top row) down, u = (φ + π)/2π with
-// φ = atan2(z, x) in the map's frame.
-Vec2f direction_to_equirect(const Vec3f& d) {
-  const float theta = std::acos(std::clamp(d.y, -1.0f, 1.0f));
-  const float phi = std::atan2(d.z, d.x);
-  return {(phi + kPi) / (2.0f * kPi), theta / kPi};
-}
-
-Vec3f equirect_to_direction(Vec2f uv) {
-  const float phi = uv.x * 2.0f * kPi - kPi, theta = uv.y * kPi;
-  const float sin_theta = std::sin(theta);
-  return {sin_theta * std::cos(phi), std::cos(theta), sin_theta * std::sin(phi)};
-}
-
 Vec3f texel_rgb(const TextureImage& t, Vec2f uv) {
   const int x = std::clamp(static_cast<int>(uv.x * t.width), 0, t.width - 1);
   const int y = std::clamp(static_cast<int>(uv.y * t.height), 0, t.height - 1);
@@ -227,6 +229,9 @@ Vec3f texel_rgb(const TextureImage& t, Vec2f uv) {
 
 }  // namespace
 
+// Sampling density ∝ luminance × dω/d(uv) of the texel's centre, so that the density over
+// solid angle follows the luminance (pbrt-v4 §12.5.2). For the equal-area octahedral map
+// the Jacobian is the constant 4π and drops out: the distribution is the luminance itself.
 double LightSampler::build_environment_distribution(const Emitter& e) {
   if (!e.texture) return 1.0;
   const TextureImage& t = *e.texture;
@@ -234,13 +239,14 @@ double LightSampler::build_environment_distribution(const Emitter& e) {
   std::vector<float> f(static_cast<std::size_t>(t.width) * t.height);
   double weighted = 0.0, weight = 0.0;
   for (int y = 0; y < t.height; ++y) {
-    const float sin_theta = std::sin(kPi * (y + 0.5f) / t.height);
     for (int x = 0; x < t.width; ++x) {
-      const Vec3f rgb = texel_rgb(t, Vec2f((x + 0.5f) / t.width, (y + 0.5f) / t.height));
+      const Vec2f uv((x + 0.5f) / t.width, (y + 0.5f) / t.height);
+      const double jacobian = environment_solid_angle_per_uv_area(e.mapping, uv);
+      const Vec3f rgb = texel_rgb(t, uv);
       const double lum = std::max(0.0, dot(y_row, Vec3d(rgb)));
-      f[static_cast<std::size_t>(y) * t.width + x] = static_cast<float>(lum * sin_theta);
-      weighted += lum * sin_theta;
-      weight += sin_theta;
+      f[static_cast<std::size_t>(y) * t.width + x] = static_cast<float>(lum * jacobian);
+      weighted += lum * jacobian;
+      weight += jacobian;
     }
   }
   environment_distribution_ = PiecewiseConstant2D(f, t.width, t.height);
@@ -249,16 +255,19 @@ double LightSampler::build_environment_distribution(const Emitter& e) {
 
 Vec3f LightSampler::environment_rgb(const Emitter& e, const Vec3f& d) const {
   if (!e.texture) return Vec3f(e.intensity_nits);
-  return texel_rgb(*e.texture, direction_to_equirect(e.world_to_map.apply_vector(d))) * e.intensity_nits;
+  return texel_rgb(*e.texture, environment_direction_to_uv(e.mapping, map_direction(e, d))) * e.intensity_nits;
 }
 
 float LightSampler::environment_pdf(const Emitter& e, const Vec3f& d) const {
   if (!e.texture) return uniform_sphere_pdf();
-  const Vec2f uv = direction_to_equirect(e.world_to_map.apply_vector(d));
-  const float sin_theta = std::sin(uv.y * kPi);
-  if (sin_theta <= 0.0f) return 0.0f;
-  // uv → solid angle: dω = 2π² sin θ du dv.
-  return environment_distribution_.pdf(uv) / (2.0f * kPi * kPi * sin_theta);
+  const Vec2f uv = environment_direction_to_uv(e.mapping, map_direction(e, d));
+  const float jacobian = environment_solid_angle_per_uv_area(e.mapping, uv);
+  if (!(jacobian > 0.0f)) return 0.0f;
+  return environment_distribution_.pdf(uv) / jacobian;
+}
+
+Vec3f LightSampler::map_direction(const Emitter& e, const Vec3f& world_direction) {
+  return normalize(e.world_to_map.apply_vector(world_direction));
 }
 
 std::optional<LightSample> LightSampler::sample(const Vec3f& reference, float u_select, Vec2f u_point) const {
@@ -334,10 +343,10 @@ std::optional<LightSample> LightSampler::sample_emitter(std::size_t index, const
         s.pdf = uniform_sphere_pdf();
       } else {
         const PiecewiseConstant2D::Sample m = environment_distribution_.sample(u);
-        const float sin_theta = std::sin(m.p.y * kPi);
-        if (sin_theta <= 0.0f || m.pdf <= 0.0f) return std::nullopt;
-        s.wi = normalize(e.map_to_world.apply_vector(equirect_to_direction(m.p)));
-        s.pdf = m.pdf / (2.0f * kPi * kPi * sin_theta);
+        const float jacobian = environment_solid_angle_per_uv_area(e.mapping, m.p);
+        if (!(jacobian > 0.0f) || m.pdf <= 0.0f) return std::nullopt;
+        s.wi = normalize(e.map_to_world.apply_vector(environment_uv_to_direction(e.mapping, m.p)));
+        s.pdf = m.pdf / jacobian;
       }
       s.rgb = environment_rgb(e, s.wi);
       return s;

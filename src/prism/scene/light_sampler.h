@@ -82,8 +82,9 @@ class LightSampler {
     float cos_inner = 1.0f, cos_outer = 0.0f;
     float cos_max = 1.0f;          // directional: cosine of the angular radius (1 = delta)
     float disc_radiance_scale = 1.0f;  // directional with size: L = E / (π sin²θ)
-    // environment: equirectangular texture (null: constant), world → map rotation
+    // environment: texture (null: constant) in `mapping`, world ↔ map linear maps
     const TextureImage* texture = nullptr;
+    EnvironmentMapping mapping = EnvironmentMapping::equirectangular;
     Transform world_to_map, map_to_world;
     float intensity_nits = 0.0f;
   };
@@ -92,6 +93,7 @@ class LightSampler {
   // Environment radiance (linear Rec.709, nits) seen in world direction `d`.
   Vec3f environment_rgb(const Emitter& e, const Vec3f& d) const;
   float environment_pdf(const Emitter& e, const Vec3f& d) const;
+  static Vec3f map_direction(const Emitter& e, const Vec3f& world_direction);  // unit, in the map's frame
   PiecewiseConstant2D environment_distribution_;
   std::optional<LightSample> sample_emitter(std::size_t index, const Vec3f& reference, Vec2f u) const;
 

@@ -19,7 +19,8 @@ struct TriangleMesh {
   std::vector<std::uint32_t> indices;  // three per triangle, counter-clockwise = front
   std::vector<Vec3f> normals;          // optional per-vertex shading normals (empty: flat)
   std::vector<Vec2f> uvs;              // optional per-vertex texture coordinates
-  std::vector<Vec3f> tangents;         // optional per-vertex tangents (normal mapping)
+  std::vector<Vec3f> tangents;         // optional per-vertex tangents along +u (shading frame, normal mapping)
+  std::vector<float> tangent_signs;    // with tangents, optional (empty: all +1): ±1, bitangent = sign · n × t (glTF TANGENT.w)
   std::uint32_t material = 0;
 
   std::size_t triangle_count() const { return indices.size() / 3; }

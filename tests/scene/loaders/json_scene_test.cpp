@@ -245,5 +245,28 @@ TEST(JsonScene, FileReferencesMayNotLeaveTheScenesFolder) {
             std::string::npos);
 }
 
+TEST(JsonScene, EnvironmentMappingIsEquirectangularOrEqualAreaOctahedral) {
+  test::ScratchFolder dir;
+  write_png(dir / "square.png", EncodedImage{2, 2, 3, 8, std::vector<std::uint16_t>(12, 255)});
+  write_png(dir / "wide.png", EncodedImage{4, 2, 3, 8, std::vector<std::uint16_t>(24, 255)});
+  const auto with_environment = [&](std::string_view environment) {
+    return dir.write("scene.json", quad_scene("", std::string(",\n  \"environment\": ") + std::string(environment)));
+  };
+  const Scene plain = load_scene(with_environment(R"({"luminance_nits": 1, "texture": "wide.png"})").string());
+  EXPECT_EQ(plain.lights[0].environment_mapping, EnvironmentMapping::equirectangular);
+  const Scene octahedral = load_scene(
+      with_environment(R"({"luminance_nits": 1, "texture": "square.png", "mapping": "equal-area-octahedral"})")
+          .string());
+  EXPECT_EQ(octahedral.lights[0].environment_mapping, EnvironmentMapping::equal_area_octahedral);
+  const std::string wide = error_of<SceneError>([&] {
+    load_scene(
+        with_environment(R"({"luminance_nits": 1, "texture": "wide.png", "mapping": "equal-area-octahedral"})")
+            .string());
+  });
+  EXPECT_NE(wide.find("environment.mapping"), std::string::npos) << wide;
+  EXPECT_NE(wide.find("square"), std::string::npos) << wide;
+  EXPECT_THROW(load_scene(with_environment(R"({"luminance_nits": 1, "mapping": "cube"})").string()), SceneError);
+}
+
 }  // namespace
 }  // namespace prism

@@ -109,6 +109,19 @@ std::vector<Vec3f> read_gltf_vec4_xyz(const tinygltf::Model& model, int accessor
   return read_floats<Vec3f, 3>(v, accessor, where);
 }
 
+std::vector<float> read_gltf_tangent_signs(const tinygltf::Model& model, int accessor, const std::string& where) {
+  const auto v = view_of(model, accessor, TINYGLTF_TYPE_VEC4,
+                         {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_BYTE, TINYGLTF_COMPONENT_TYPE_SHORT},
+                         where);
+  std::vector<float> out(v.count);
+  for (std::size_t i = 0; i < v.count; ++i) {
+    const double w = v.get(i, 3);
+    if (!std::isfinite(w)) throw SceneError(fmt::format("{}: accessor {}: element {} is not finite", where, accessor, i));
+    out[i] = w < 0.0 ? -1.0f : 1.0f;
+  }
+  return out;
+}
+
 std::vector<Vec2f> read_gltf_vec2(const tinygltf::Model& model, int accessor, const std::string& where) {
   const auto v = view_of(model, accessor, TINYGLTF_TYPE_VEC2,
                          {TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,

@@ -14,6 +14,7 @@
 #include "prism/scene/loaders/gltf_accessors.h"
 #include "prism/scene/loaders/gltf_builder.h"
 #include "prism/scene/loaders/mesh_checks.h"
+#include "prism/scene/loaders/mesh_tangents.h"
 #include "prism/scene/loaders/path_safety.h"
 #include "prism/scene/loaders/scene_camera.h"
 
@@ -149,7 +150,10 @@ const std::vector<std::uint32_t>& GltfBuilder::mesh_primitives(int mesh_index) {
     m.positions = read_gltf_vec3(model_, attribute("POSITION"), where);
     if (attribute("NORMAL") >= 0) m.normals = read_gltf_vec3(model_, attribute("NORMAL"), where);
     if (attribute("TEXCOORD_0") >= 0) m.uvs = read_gltf_vec2(model_, attribute("TEXCOORD_0"), where);
-    if (attribute("TANGENT") >= 0) m.tangents = read_gltf_vec4_xyz(model_, attribute("TANGENT"), where);
+    if (attribute("TANGENT") >= 0) {
+      m.tangents = read_gltf_vec4_xyz(model_, attribute("TANGENT"), where);
+      m.tangent_signs = read_gltf_tangent_signs(model_, attribute("TANGENT"), where);
+    }
     if (prim.indices >= 0) {
       m.indices = read_gltf_indices(model_, prim.indices, where);
     } else {
@@ -178,6 +182,8 @@ const std::vector<std::uint32_t>& GltfBuilder::mesh_primitives(int mesh_index) {
     const std::size_t dropped = check_and_clean_mesh(m, where);
     if (dropped) warnings_.push_back(fmt::format("glTF: {}: {} zero-area triangles dropped", where, dropped));
     if (m.indices.empty()) continue;
+    // glTF 2.0 §3.7.2.1: without TANGENT, readers generate tangents (mesh_tangents.h).
+    if (m.tangents.empty()) generate_tangents(m);
     scene_.meshes.push_back(std::move(m));
     created.push_back(static_cast<std::uint32_t>(scene_.meshes.size() - 1));
   }

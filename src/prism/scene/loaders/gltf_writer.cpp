@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "prism/bsdf/conductor_color.h"
 #include "prism/core/error.h"
 #include "prism/io/atomic_file.h"
 #include "prism/scene/emission.h"
@@ -16,15 +17,6 @@ namespace prism::loaders {
 namespace {
 
 using nlohmann::json;
-
-// Approximate linear sRGB normal-incidence reflectance of the metals Prism names, for
-// viewers that only know metallic-roughness (Prism reads them back as metallic_roughness).
-Vec3f metal_f0(const std::string& name) {
-  if (name == "Au") return {1.0f, 0.78f, 0.34f};
-  if (name == "Ag") return {0.97f, 0.96f, 0.91f};
-  if (name == "Cu") return {0.96f, 0.64f, 0.54f};
-  return {0.91f, 0.92f, 0.92f};  // Al
-}
 
 class BinaryChunk {
  public:
@@ -92,7 +84,9 @@ json material_json(const Scene& scene, const Material& m) {
     case MaterialType::conductor: {
       pbr["metallicFactor"] = 1.0;
       if (m.conductor_fresnel == ConductorFresnel::complex_ior) {
-        const Vec3f f0 = metal_f0(m.conductor_name);
+        // The colour of the metal's spectral F0 from the same η, k data the conductor
+        // renders with (docs/scene-formats.md lists what glTF still cannot express).
+        const Vec3f f0 = bsdf::conductor_f0_rec709(m.conductor_name);
         pbr["baseColorFactor"] = {f0.x, f0.y, f0.z, 1.0};
       }
       break;

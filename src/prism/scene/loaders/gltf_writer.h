@@ -2,7 +2,8 @@
 // Writing a Scene as a binary glTF 2.0 file (.glb), for generated scenes (`prism generate`).
 // Meshes are written inline (uint32 indices, normals and uvs when present); materials as
 // PBR metallic-roughness (diffuse: metallic 0 with KHR_materials_specular factor 0, i.e.
-// Lambert; conductors: metallic 1 with the metal's approximate sRGB F0; dielectrics:
+// Lambert; conductors: metallic 1 with the colour of the metal's spectral F0,
+// bsdf/conductor_color.h; dielectrics:
 // KHR_materials_transmission + KHR_materials_ior; emission with
 // KHR_materials_emissive_strength; alphaMode MASK/BLEND with alphaCutoff, double-sided);
 // textures as PNG images embedded in the binary chunk (texture_png.h) with a sampler each

@@ -94,7 +94,7 @@ void JsonSceneReader::read_light(const JsonValue& value) {
 }
 
 void JsonSceneReader::read_environment(const JsonValue& value) {
-  value.expect_keys({"type", "name", "color", "color_space", "luminance_nits", "texture", "transform"});
+  value.expect_keys({"type", "name", "color", "color_space", "luminance_nits", "texture", "mapping", "transform"});
   Light light;
   light.type = LightType::environment;
   light.name = value.get_string("name", "environment");
@@ -103,6 +103,17 @@ void JsonSceneReader::read_environment(const JsonValue& value) {
   if (auto s = value.find("color_space")) light.color_space = read_color_space(*s);
   light.intensity = value["luminance_nits"].as_float(0.0f, 1e12f);
   if (auto t = value.find("texture")) light.environment_texture = read_texture(*t, TextureEncoding::srgb);
+  if (auto m = value.find("mapping")) {
+    light.environment_mapping = m->as_enum<EnvironmentMapping>(
+        {{"equirectangular", EnvironmentMapping::equirectangular},
+         {"equal-area-octahedral", EnvironmentMapping::equal_area_octahedral}});
+    if (light.environment_mapping == EnvironmentMapping::equal_area_octahedral && light.environment_texture >= 0) {
+      const TextureImage& image = scene.textures[static_cast<std::size_t>(light.environment_texture)];
+      if (image.width != image.height)
+        m->fail(fmt::format("an equal-area-octahedral map must be square (the texture is {}×{})", image.width,
+                            image.height));
+    }
+  }
   if (auto t = value.find("transform")) light.environment_to_world = read_transform(*t);
   for (const Light& l : scene.lights)
     if (l.type == LightType::environment) value.fail("the scene already has an environment");

@@ -48,6 +48,11 @@ std::size_t check_and_clean_mesh(TriangleMesh& mesh, std::string_view where) {
   check_finite(mesh.normals, "normal", where);
   check_finite(mesh.uvs, "uv", where);
   check_finite(mesh.tangents, "tangent", where);
+  if (!mesh.tangent_signs.empty() && mesh.tangent_signs.size() != mesh.tangents.size())
+    throw SceneError(fmt::format("{}: {} tangent signs for {} tangents", where, mesh.tangent_signs.size(),
+                                 mesh.tangents.size()));
+  for (float s : mesh.tangent_signs)
+    if (s != 1.0f && s != -1.0f) throw SceneError(fmt::format("{}: a tangent sign is {}, not ±1", where, s));
 
   std::size_t kept = 0;
   for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {

@@ -89,14 +89,23 @@ void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
     if (!file.empty()) {
       if (p.has("L")) throw SceneError(fmt::format("{}:{}: infinite light: give \"L\" or \"filename\", not both", p.source, p.line));
       try {
-        light.environment_texture = textures_->load(resolve(p, "filename", file), TextureEncoding::linear);
+        // pbrt-v4 reads an 8- or 16-bit PNG as sRGB-encoded (Image::Read without an
+        // encoding); EXR and HDR are linear whatever is asked.
+        light.environment_texture = textures_->load(resolve(p, "filename", file), TextureEncoding::srgb);
       } catch (const IoError& e) {
         throw IoError(fmt::format("{}:{}: infinite light: {}", p.source, p.line, e.what()));
       }
       light.intensity = static_cast<float>(p.get_float("scale", 1.0));
-      approximations_.push_back(fmt::format(
-          "infinite light (line {}): the image is read as equirectangular (pbrt-v4 uses equal-area octahedral maps)",
-          p.line));
+      // pbrt-v4's ImageInfiniteLight looks the image up at EqualAreaSphereToSquare of the
+      // direction in the light's frame (its Le(): renderFromLight⁻¹ applied to the ray
+      // direction; pbrt-v4 book §12.5.2 and §3.8.3), nearest texel, pixel (0, 0) at the
+      // image's top left — Prism's uv convention — and it refuses non-square images.
+      light.environment_mapping = EnvironmentMapping::equal_area_octahedral;
+      const TextureImage& image = scene_.textures[static_cast<std::size_t>(light.environment_texture)];
+      if (image.width != image.height)
+        throw SceneError(fmt::format("{}:{}: infinite light: \"{}\" is {}×{}; pbrt-v4's equal-area environment "
+                                     "images are square",
+                                     p.source, p.line, file, image.width, image.height));
     } else {
       const LightColor c = light_color(p, "L", approximations_);
       light.color = c.color;

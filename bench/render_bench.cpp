@@ -3,6 +3,7 @@
 // Run: build/release/bench/prism_bench --benchmark_min_time=2
 #include <benchmark/benchmark.h>
 
+#include <cstdint>
 #include <vector>
 
 #include "prism/accel/embree_accel.h"
@@ -16,9 +17,7 @@ namespace {
 
 // Rays from points on the Cornell box's surfaces in cosine-distributed directions: the
 // distribution of the path tracer's secondary bounces, without any shading work.
-void BM_EmbreeIncoherentClosestHit(benchmark::State& state) {
-  const prism::Scene scene = prism::make_cornell_box();
-  const prism::EmbreeAccel accel(scene);
+std::vector<prism::Ray> secondary_rays(const prism::EmbreeAccel& accel) {
   prism::Pcg32 rng(1, 2);
   const prism::Vec3f origin(278.0f, 273.0f, -800.0f);
   std::vector<prism::Ray> rays;
@@ -31,6 +30,13 @@ void BM_EmbreeIncoherentClosestHit(benchmark::State& state) {
     const prism::Vec3f local = prism::sample_cosine_hemisphere(prism::Vec2f(rng.next_float(), rng.next_float()));
     rays.push_back(prism::Ray{p, prism::Frame::from_normal(-dir).to_world(local)});
   }
+  return rays;
+}
+
+void BM_EmbreeIncoherentClosestHit(benchmark::State& state) {
+  const prism::Scene scene = prism::make_cornell_box();
+  const prism::EmbreeAccel accel(scene);
+  const std::vector<prism::Ray> rays = secondary_rays(accel);
   std::size_t i = 0;
   for (auto _ : state) {
     prism::Hit hit;
@@ -39,6 +45,66 @@ void BM_EmbreeIncoherentClosestHit(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
 }
 BENCHMARK(BM_EmbreeIncoherentClosestHit);
+
+// The same rays as a queue of 1024 slots (the integrator's grain) through
+// EmbreeAccel::intersect_slots / occluded_slots (Embree ray streams, incoherent flag):
+// what the integrator's stages 1 and 3 cost per ray, against the one-ray loop above.
+void BM_EmbreeStreamClosestHit(benchmark::State& state) {
+  const prism::Scene scene = prism::make_cornell_box();
+  const prism::EmbreeAccel accel(scene);
+  const std::vector<prism::Ray> rays = secondary_rays(accel);
+  constexpr std::size_t kQueue = 1024;
+  std::vector<std::uint32_t> slots(kQueue);
+  std::vector<prism::Hit> hits(rays.size());
+  std::vector<std::uint8_t> found(rays.size());
+  std::size_t first = 0;
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < kQueue; ++i) slots[i] = static_cast<std::uint32_t>(first + i);
+    accel.intersect_slots(rays.data(), slots.data(), kQueue, hits.data(), found.data());
+    benchmark::DoNotOptimize(found.data());
+    first = (first + kQueue) & (rays.size() - 1);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kQueue));
+}
+BENCHMARK(BM_EmbreeStreamClosestHit);
+
+// Occlusion of the same rays cut to a quarter of their closest-hit distance (the answer
+// is then "clear" for most; shadow rays of a path tracer are bounded segments too).
+std::vector<prism::Ray> bounded(const prism::EmbreeAccel& accel, std::vector<prism::Ray> rays) {
+  for (prism::Ray& r : rays) {
+    prism::Hit hit;
+    r.t_max = accel.intersect(r, hit) ? 0.25f * hit.t : 1e4f;
+  }
+  return rays;
+}
+
+void BM_EmbreeIncoherentOccluded(benchmark::State& state) {
+  const prism::Scene scene = prism::make_cornell_box();
+  const prism::EmbreeAccel accel(scene);
+  const std::vector<prism::Ray> rays = bounded(accel, secondary_rays(accel));
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(accel.occluded(rays[i++ & (rays.size() - 1)]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_EmbreeIncoherentOccluded);
+
+void BM_EmbreeStreamOccluded(benchmark::State& state) {
+  const prism::Scene scene = prism::make_cornell_box();
+  const prism::EmbreeAccel accel(scene);
+  const std::vector<prism::Ray> rays = bounded(accel, secondary_rays(accel));
+  constexpr std::size_t kQueue = 1024;
+  std::vector<std::uint32_t> slots(kQueue);
+  std::vector<std::uint8_t> pending(rays.size(), 1), blocked(rays.size());
+  std::size_t first = 0;
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < kQueue; ++i) slots[i] = static_cast<std::uint32_t>(first + i);
+    accel.occluded_slots(rays.data(), slots.data(), kQueue, pending.data(), blocked.data());
+    benchmark::DoNotOptimize(blocked.data());
+    first = (first + kQueue) & (rays.size() - 1);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kQueue));
+}
+BENCHMARK(BM_EmbreeStreamOccluded);
 
 void BM_PathTraceCornellBox(benchmark::State& state) {
   const prism::Scene scene = prism::make_cornell_box();

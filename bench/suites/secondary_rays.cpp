@@ -75,19 +75,32 @@ SecondaryRays make_secondary_rays(const Scene& scene, const EmbreeAccel& accel, 
 }
 
 double trace_rays_per_second(const EmbreeAccel& accel, const std::vector<Ray>& rays, bool occlusion, int threads,
-                             double min_seconds) {
+                             double min_seconds, bool streams) {
   if (rays.empty()) return 0.0;
   const ThreadLimit limit(threads);
   std::atomic<std::uint64_t> hits{0};
   const auto start = std::chrono::steady_clock::now();
   double seconds = 0.0;
   std::uint64_t traced = 0;
+  // Stream queries write per slot: identity slots, one result array for the whole set.
+  std::vector<std::uint32_t> slots(streams ? rays.size() : 0);
+  for (std::size_t i = 0; i < slots.size(); ++i) slots[i] = static_cast<std::uint32_t>(i);
+  std::vector<Hit> stream_hits(streams && !occlusion ? rays.size() : 0);
+  std::vector<std::uint8_t> answers(streams ? rays.size() : 0), pending(streams ? rays.size() : 0, 1);
   do {
-    parallel_for(rays.size(), 2048, [&](std::size_t begin, std::size_t end) {
+    parallel_for(rays.size(), streams ? 1024 : 2048, [&](std::size_t begin, std::size_t end) {
       std::uint64_t local = 0;
-      Hit hit;
-      for (std::size_t i = begin; i < end; ++i)
-        local += occlusion ? accel.occluded(rays[i]) : accel.intersect(rays[i], hit);
+      if (streams) {
+        if (occlusion)
+          accel.occluded_slots(rays.data(), slots.data() + begin, end - begin, pending.data(), answers.data());
+        else
+          accel.intersect_slots(rays.data(), slots.data() + begin, end - begin, stream_hits.data(), answers.data());
+        for (std::size_t i = begin; i < end; ++i) local += answers[i];
+      } else {
+        Hit hit;
+        for (std::size_t i = begin; i < end; ++i)
+          local += occlusion ? accel.occluded(rays[i]) : accel.intersect(rays[i], hit);
+      }
       hits.fetch_add(local, std::memory_order_relaxed);
     });
     traced += rays.size();

@@ -24,7 +24,10 @@ SecondaryRays make_secondary_rays(const Scene& scene, const EmbreeAccel& accel, 
 
 // Rays traced per second over `rays` with `threads` threads (0: all), repeating the whole
 // set until at least min_seconds have passed (always once).
+// `streams`: as the integrator traces its queues since the ray-stream change
+// (EmbreeAccel::intersect_slots / occluded_slots over 1024-ray chunks); otherwise one
+// rtcIntersect1 / rtcOccluded1 call per ray.
 double trace_rays_per_second(const EmbreeAccel& accel, const std::vector<Ray>& rays, bool occlusion, int threads,
-                             double min_seconds);
+                             double min_seconds, bool streams = false);
 
 }  // namespace prism::bench

@@ -1,5 +1,6 @@
 #include "prism/accel/embree_accel.h"
 
+#include <algorithm>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -69,6 +70,17 @@ void alpha_filter(const RTCFilterFunctionNArguments* args) {
                         ? coverage_number(args->ray, args->N, i, g->mesh_index, prim) : 0.0f;
     if (!surface_alpha_accepts(material, alpha, u)) args->valid[i] = 0;
   }
+}
+
+// Rays per rtcIntersect1M / rtcOccluded1M call: large enough that the per-call cost
+// vanishes, small enough that the stream stays in L1 (64 × 80 B).
+constexpr std::size_t kStreamRays = 64;
+
+RTCIntersectContext incoherent_context() {
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+  return context;
 }
 
 }  // namespace
@@ -143,6 +155,48 @@ bool EmbreeAccel::occluded(const Ray& ray) const {
   fill_ray(ray, r);
   rtcOccluded1(impl_->scene, &context, &r);
   return r.tfar < 0.0f;  // Embree sets tfar to -inf on a hit
+}
+
+void EmbreeAccel::intersect_slots(const Ray* rays, const std::uint32_t* slots, std::size_t count, Hit* hits,
+                                  std::uint8_t* found) const {
+  RTCIntersectContext context = incoherent_context();
+  alignas(64) RTCRayHit stream[kStreamRays];
+  for (std::size_t first = 0; first < count; first += kStreamRays) {
+    const std::size_t n = std::min(kStreamRays, count - first);
+    for (std::size_t i = 0; i < n; ++i) {
+      fill_ray(rays[slots[first + i]], stream[i].ray);
+      stream[i].hit.geomID = RTC_INVALID_GEOMETRY_ID;
+      stream[i].hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    }
+    rtcIntersect1M(impl_->scene, &context, stream, static_cast<unsigned>(n), sizeof(RTCRayHit));
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint32_t s = slots[first + i];
+      const RTCRayHit& rh = stream[i];
+      found[s] = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+      if (!found[s]) continue;
+      hits[s] = Hit{rh.ray.tfar, rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v};
+    }
+  }
+}
+
+void EmbreeAccel::occluded_slots(const Ray* rays, const std::uint32_t* slots, std::size_t count,
+                                 const std::uint8_t* pending, std::uint8_t* blocked) const {
+  RTCIntersectContext context = incoherent_context();
+  alignas(64) RTCRay stream[kStreamRays];
+  std::uint32_t stream_slots[kStreamRays];
+  std::size_t next = 0;
+  while (next < count) {
+    std::size_t n = 0;
+    for (; next < count && n < kStreamRays; ++next) {
+      const std::uint32_t s = slots[next];
+      if (!pending[s]) continue;
+      fill_ray(rays[s], stream[n]);
+      stream_slots[n++] = s;
+    }
+    if (n == 0) break;
+    rtcOccluded1M(impl_->scene, &context, stream, static_cast<unsigned>(n), sizeof(RTCRay));
+    for (std::size_t i = 0; i < n; ++i) blocked[stream_slots[i]] = stream[i].tfar < 0.0f;  // -inf on a hit
+  }
 }
 
 }  // namespace prism

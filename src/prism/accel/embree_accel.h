@@ -1,6 +1,7 @@
 #pragma once
 // Ray queries against the scene's triangles through an Embree 3 BVH. Embree types stay
 // inside the .cpp: the rest of Prism sees only Ray and Hit.
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 
@@ -31,6 +32,16 @@ class EmbreeAccel {
   bool intersect(const Ray& ray, Hit& hit) const;
   // True when anything blocks the segment (ray.t_min, ray.t_max).
   bool occluded(const Ray& ray) const;
+
+  // The same queries over a queue: rays[slots[i]] for i < count, results stored at the
+  // same slot (hits[slot], found[slot]; blocked[slot]). Traced as Embree ray streams
+  // (rtcIntersect1M / rtcOccluded1M, RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT) of a few dozen
+  // rays: one call and one context per stream instead of per ray. occluded_slots skips
+  // slots whose `pending` flag is 0 and leaves their `blocked` entry alone.
+  void intersect_slots(const Ray* rays, const std::uint32_t* slots, std::size_t count, Hit* hits,
+                       std::uint8_t* found) const;
+  void occluded_slots(const Ray* rays, const std::uint32_t* slots, std::size_t count, const std::uint8_t* pending,
+                      std::uint8_t* blocked) const;
 
  private:
   struct Impl;

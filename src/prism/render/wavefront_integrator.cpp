@@ -312,6 +312,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
   const auto slots = static_cast<std::uint32_t>(film.pixel_count());
   Paths& p = *paths_;
   first_hit_aovs_.resize(film.aovs().first_hit() ? slots : 0u);
+  shadow_blocked_.resize(slots);
   std::vector<std::uint32_t> live(slots);
   for (std::uint32_t s = 0; s < slots; ++s) live[s] = s;
   parallel_for(slots, 4096, [&](std::size_t b, std::size_t e) {
@@ -328,41 +329,34 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
     stats.live_paths_per_step.push_back(static_cast<std::uint32_t>(live.size()));
     stats.rays += live.size();
     ++stats.steps;
-    // Stage 1: closest hits for the whole queue.
+    // Stage 1: closest hits for the whole queue, traced as Embree ray streams.
     parallel_for(live.size(), kGrain, [&](std::size_t b, std::size_t e) {
-      for (std::size_t i = b; i < e; ++i) {
-        const std::uint32_t s = live[i];
-        p.hit_found[s] = accel_.intersect(p.ray[s], p.hit[s]);
-      }
+      accel_.intersect_slots(p.ray.data(), live.data() + b, e - b, p.hit.data(), p.hit_found.data());
     });
     // Stage 2: shading emits continuation and shadow rays.
     parallel_for(live.size(), kGrain, [&](std::size_t b, std::size_t e) {
       for (std::size_t i = b; i < e; ++i) shade(p, live[i]);
     });
-    // Stage 3: shadow rays.
-    parallel_for(live.size(), kGrain, [&](std::size_t b, std::size_t e) {
-      std::uint64_t traced = 0;
-      for (std::size_t i = b; i < e; ++i) {
-        const std::uint32_t s = live[i];
-        if (!p.shadow_pending[s]) continue;
-        ++traced;
-        if (!accel_.occluded(p.shadow_ray[s])) p.radiance[s] += p.shadow_contribution[s];
-      }
-      shadow_rays += traced;
-    });
-    // Stage 4: finished paths go to the film; their slot restarts with the pixel's next
-    // sample. Stage 5: compaction of the survivors, in queue order, in place: each chunk
+    // Stages 3 and 4 in one walk over the queue, per chunk: the chunk's shadow rays (one
+    // stream), then finished paths go to the film and their slot restarts with the pixel's
+    // next sample. Stage 5: compaction of the survivors, in queue order, in place: each chunk
     // packs its survivors at its own start (a write never passes the read), then the packed
     // runs move down to their prefix-sum offsets.
     const std::size_t chunks = (live.size() + kGrain - 1) / kGrain;
     survivor_counts_.assign(chunks, 0);
     parallel_for(chunks, 1, [&](std::size_t cb, std::size_t ce) {
       for (std::size_t c = cb; c < ce; ++c) {
-        std::uint64_t local_invalid = 0, local_completed = 0;
+        std::uint64_t local_invalid = 0, local_completed = 0, traced = 0;
         const std::size_t end = std::min(live.size(), (c + 1) * kGrain);
+        accel_.occluded_slots(p.shadow_ray.data(), live.data() + c * kGrain, end - c * kGrain,
+                              p.shadow_pending.data(), shadow_blocked_.data());
         std::size_t kept = c * kGrain;
         for (std::size_t i = c * kGrain; i < end; ++i) {
           const std::uint32_t s = live[i];
+          if (p.shadow_pending[s]) {
+            ++traced;
+            if (!shadow_blocked_[s]) p.radiance[s] += p.shadow_contribution[s];
+          }
           if (p.finished[s]) {
             const Vec3d value = colors_.to_film(p.radiance[s], p.wavelengths[s]);
             if (is_finite(value)) {
@@ -380,6 +374,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
         survivor_counts_[c] = static_cast<std::uint32_t>(kept - c * kGrain);
         invalid += local_invalid;
         completed += local_completed;
+        shadow_rays += traced;
       }
     });
     std::size_t packed = 0;

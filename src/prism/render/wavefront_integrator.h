@@ -110,6 +110,7 @@ class WavefrontIntegrator {
   // film keeps AOVs.
   mutable std::vector<AovSample> first_hit_aovs_;
   std::vector<std::uint32_t> survivor_counts_;  // per compaction chunk, reused every step
+  std::vector<std::uint8_t> shadow_blocked_;     // per slot: its pending shadow ray hit something
   MaterialTables tables_;
   std::vector<MipPyramid> textures_;  // one per Scene::textures entry
   std::vector<Mat3> textured_emission_;  // per material: texel → Rec.709 radiance (scene/emission.h)

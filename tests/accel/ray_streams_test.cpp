@@ -1,0 +1,122 @@
+// The queue queries (EmbreeAccel::intersect_slots / occluded_slots, traced as Embree ray
+// streams) against the one-ray queries they replace in the integrator: the same hits and
+// the same occlusion answers for every ray, stored at the ray's own slot, whatever the
+// queue's order and length. The integrator's bitwise-determinism claim rests on this.
+#include <cstdint>
+#include <cstring>
+#include <numeric>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "prism/accel/embree_accel.h"
+#include "prism/core/pcg32.h"
+#include "prism/sampling/warps.h"
+#include "prism/scene/builtin_scenes.h"
+
+namespace prism {
+namespace {
+
+// Rays from random points inside the Cornell box (and a little outside it, so some escape
+// through the open front) in uniformly random directions; every third one is a bounded
+// segment, so occlusion answers are mixed.
+std::vector<Ray> random_rays(std::size_t count) {
+  Pcg32 rng(11, 3);
+  std::vector<Ray> rays(count);
+  for (Ray& r : rays) {
+    const Vec3f origin{rng.next_float() * 600.0f - 20.0f, rng.next_float() * 600.0f - 20.0f,
+                       rng.next_float() * 700.0f - 50.0f};
+    const Vec3f direction = sample_uniform_sphere(Vec2f(rng.next_float(), rng.next_float()));
+    const float t_max = rng.next_u32() % 3 == 0 ? rng.next_float() * 400.0f : 1e30f;
+    r = Ray{origin, direction, 0.0f, t_max};
+  }
+  return rays;
+}
+
+// A queue that visits the slots out of order and leaves some out, with a length that is
+// not a multiple of the stream size.
+std::vector<std::uint32_t> shuffled_queue(std::size_t slots) {
+  std::vector<std::uint32_t> queue;
+  for (std::uint32_t s = 0; s < slots; ++s)
+    if (s % 7 != 3) queue.push_back(static_cast<std::uint32_t>((s * 40503u) % slots));
+  return queue;
+}
+
+bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+TEST(RayStreams, ClosestHitsMatchOneRayQueriesSlotBySlot) {
+  const Scene scene = make_cornell_box();
+  const EmbreeAccel accel(scene);
+  const std::size_t slots = 4099;  // prime: 40503 permutes it
+  const std::vector<Ray> rays = random_rays(slots);
+  const std::vector<std::uint32_t> queue = shuffled_queue(slots);
+  std::vector<Hit> hits(slots);
+  std::vector<std::uint8_t> found(slots, 2);  // 2: never written
+  accel.intersect_slots(rays.data(), queue.data(), queue.size(), hits.data(), found.data());
+
+  std::size_t hit_count = 0, miss_count = 0;
+  for (std::uint32_t s : queue) {
+    Hit expected;
+    const bool expected_found = accel.intersect(rays[s], expected);
+    ASSERT_EQ(found[s], expected_found ? 1 : 0) << "slot " << s;
+    if (!expected_found) {
+      ++miss_count;
+      continue;
+    }
+    ++hit_count;
+    EXPECT_TRUE(same_bits(hits[s].t, expected.t)) << "slot " << s;
+    EXPECT_EQ(hits[s].mesh, expected.mesh) << "slot " << s;
+    EXPECT_EQ(hits[s].triangle, expected.triangle) << "slot " << s;
+    EXPECT_TRUE(same_bits(hits[s].u, expected.u) && same_bits(hits[s].v, expected.v)) << "slot " << s;
+  }
+  // Both outcomes occur, so the comparison covers both branches.
+  EXPECT_GT(hit_count, 100u);
+  EXPECT_GT(miss_count, 100u);
+  std::size_t untouched = 0;
+  for (std::uint8_t f : found) untouched += f == 2;
+  EXPECT_EQ(untouched, slots - queue.size());  // slots outside the queue are left alone
+}
+
+TEST(RayStreams, OcclusionMatchesOneRayQueriesForPendingSlotsOnly) {
+  const Scene scene = make_cornell_box();
+  const EmbreeAccel accel(scene);
+  const std::size_t slots = 4099;
+  const std::vector<Ray> rays = random_rays(slots);
+  const std::vector<std::uint32_t> queue = shuffled_queue(slots);
+  std::vector<std::uint8_t> pending(slots);
+  for (std::size_t s = 0; s < slots; ++s) pending[s] = s % 5 != 0;
+  std::vector<std::uint8_t> blocked(slots, 2);
+  accel.occluded_slots(rays.data(), queue.data(), queue.size(), pending.data(), blocked.data());
+
+  std::size_t blocked_count = 0, clear_count = 0;
+  for (std::uint32_t s : queue) {
+    if (!pending[s]) {
+      EXPECT_EQ(blocked[s], 2) << "slot " << s << " is not pending and must not be written";
+      continue;
+    }
+    const bool expected = accel.occluded(rays[s]);
+    ASSERT_EQ(blocked[s], expected ? 1 : 0) << "slot " << s;
+    (expected ? blocked_count : clear_count) += 1;
+  }
+  EXPECT_GT(blocked_count, 100u);
+  EXPECT_GT(clear_count, 100u);
+}
+
+TEST(RayStreams, EmptyAndAllIdleQueuesTraceNothing) {
+  const Scene scene = make_cornell_box();
+  const EmbreeAccel accel(scene);
+  const std::vector<Ray> rays = random_rays(8);
+  std::vector<std::uint32_t> queue(8);
+  std::iota(queue.begin(), queue.end(), 0u);
+  std::vector<Hit> hits(8);
+  std::vector<std::uint8_t> found(8, 2), pending(8, 0), blocked(8, 2);
+  accel.intersect_slots(rays.data(), queue.data(), 0, hits.data(), found.data());
+  accel.occluded_slots(rays.data(), queue.data(), queue.size(), pending.data(), blocked.data());
+  for (std::size_t s = 0; s < 8; ++s) {
+    EXPECT_EQ(found[s], 2);
+    EXPECT_EQ(blocked[s], 2);
+  }
+}
+
+}  // namespace
+}  // namespace prism

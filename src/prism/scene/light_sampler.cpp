@@ -272,7 +272,9 @@ std::optional<LightSample> LightSampler::sample_emitter(std::size_t index, const
   s.emitter = e.emitter;
   switch (e.kind) {
     case Kind::triangle: {
-      const auto t = sample_triangle_light(e.triangle, options_.triangle, reference, receiver_normal, u);
+      const auto t = options_.triangle == TriangleLightSampling::area
+                         ? sample_triangle_light_by_area(e.triangle, reference, u)
+                         : sample_triangle_light(e.triangle, options_.triangle, reference, receiver_normal, u);
       if (!t) return std::nullopt;
       s.position = t->position;
       s.normal = e.triangle.normal;

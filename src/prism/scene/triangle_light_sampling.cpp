@@ -5,7 +5,6 @@
 
 #include "prism/sampling/bilinear_warp.h"
 #include "prism/sampling/spherical_triangle.h"
-#include "prism/sampling/warps.h"
 
 namespace prism {
 namespace {
@@ -41,21 +40,6 @@ float light_cosine(const TriangleLight& light, const Vec3f& wi) {
   return light.two_sided ? std::abs(c) : c;
 }
 
-std::optional<TriangleLightSample> sample_by_area(const TriangleLight& light, const Vec3f& reference, Vec2f u) {
-  TriangleLightSample s;
-  s.barycentric = sample_uniform_triangle(u);
-  s.position = light.p0 + light.e1 * s.barycentric.x + light.e2 * s.barycentric.y;
-  const Vec3f d = s.position - reference;
-  const float d2 = length_squared(d);
-  if (!(d2 > 0.0f)) return std::nullopt;
-  s.distance = std::sqrt(d2);
-  s.wi = d / s.distance;
-  const float cos_light = light_cosine(light, s.wi);
-  if (cos_light <= 0.0f) return std::nullopt;
-  s.pdf_sr = d2 / (cos_light * light.area);  // area → solid angle: p_A r² / cos θ_light
-  return s;
-}
-
 }  // namespace
 
 std::optional<TriangleLightSample> sample_triangle_light(const TriangleLight& light, TriangleLightSampling strategy,
@@ -63,7 +47,7 @@ std::optional<TriangleLightSample> sample_triangle_light(const TriangleLight& li
                                                          Vec2f u) {
   if (!(light.area > 0.0f)) return std::nullopt;
   const std::optional<SphericalTriangle> t = spherical_view(light, strategy, reference);
-  if (!t) return sample_by_area(light, reference, u);
+  if (!t) return sample_triangle_light_by_area(light, reference, u);
   // The emitting side is the same for the whole (planar) triangle: test it once.
   const Vec3d centroid = Vec3d(light.p0) + (Vec3d(light.e1) + Vec3d(light.e2)) * (1.0 / 3.0);
   if (light_cosine(light, Vec3f(normalize(centroid - Vec3d(reference)))) <= 0.0f) return std::nullopt;

@@ -19,9 +19,11 @@
 // Arvo's trigonometry loses precision) or more than kMaxSolidAngleSr (the reference is
 // almost in the triangle's plane; the spherical triangle degenerates) use area sampling.
 // The choice depends only on (triangle, reference), so sampling and pdf always agree.
+#include <cmath>
 #include <optional>
 
 #include "prism/core/vec.h"
+#include "prism/sampling/warps.h"
 
 namespace prism {
 
@@ -50,6 +52,26 @@ struct TriangleLightSample {
 std::optional<TriangleLightSample> sample_triangle_light(const TriangleLight& light, TriangleLightSampling strategy,
                                                          const Vec3f& reference, const Vec3f& receiver_normal,
                                                          Vec2f u);
+
+// The area strategy alone, inline: the default's hot path (a next-event sample per
+// diffuse vertex) pays no call and no strategy test.
+inline std::optional<TriangleLightSample> sample_triangle_light_by_area(const TriangleLight& light,
+                                                                        const Vec3f& reference, Vec2f u) {
+  if (!(light.area > 0.0f)) return std::nullopt;
+  TriangleLightSample s;
+  s.barycentric = sample_uniform_triangle(u);
+  s.position = light.p0 + light.e1 * s.barycentric.x + light.e2 * s.barycentric.y;
+  const Vec3f d = s.position - reference;
+  const float d2 = length_squared(d);
+  if (!(d2 > 0.0f)) return std::nullopt;
+  s.distance = std::sqrt(d2);
+  s.wi = d / s.distance;
+  float cos_light = -dot(light.normal, s.wi);
+  if (light.two_sided) cos_light = std::abs(cos_light);
+  if (cos_light <= 0.0f) return std::nullopt;
+  s.pdf_sr = d2 / (cos_light * light.area);  // area → solid angle: p_A r² / cos θ_light
+  return s;
+}
 
 // Solid-angle density with which sample_triangle_light chooses `position` (on the
 // triangle); 0 where it never would.

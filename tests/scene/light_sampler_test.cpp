@@ -18,45 +18,83 @@ namespace prism {
 namespace {
 
 constexpr double kAlphaTotal = 0.01;  // Šidák-corrected over this file's chi-square tests
-constexpr int kChiSquareTests = 3;
+constexpr int kChiSquareTests = 4;
 
 TEST(LightSampler, AreaLightPointsAreUniformWithSolidAngleDensity) {
   // Cornell light: a 130 × 105 mm rectangle at constant y, seen from the floor below it.
+  // Area sampling (the solid-angle strategies have their own tests in
+  // triangle_light_sampling_test.cpp), with and without reusing the selection sample.
   const Scene scene = make_cornell_box();
-  const LightSampler lights(scene, scene_bounds(scene));
-  ASSERT_EQ(lights.light_count(), 2u);
-  const Vec3f reference(278.0f, 0.0f, 279.0f);
-  constexpr int kGrid = 16;
-  constexpr long kSamples = 400'000;
-  std::vector<double> observed(kGrid * kGrid, 0.0), expected(kGrid * kGrid, double(kSamples) / (kGrid * kGrid));
-  Pcg32 rng(5, 6);
-  for (long i = 0; i < kSamples; ++i) {
-    const auto s = lights.sample(reference, rng.next_float(), Vec2f(rng.next_float(), rng.next_float()));
-    ASSERT_TRUE(s.has_value());
-    ASSERT_FALSE(s->is_delta);
-    ASSERT_LT(s->normal.y, -0.999f);
-    // p_ω = r² / (cos θ_light · A_total): both triangles are chosen in proportion to area.
-    const float d2 = length_squared(s->position - reference);
-    const float cos_light = -dot(s->normal, s->wi);
-    ASSERT_NEAR(s->pdf, d2 / (cos_light * 130.0f * 105.0f), 1e-4f * s->pdf);
-    const int ix = std::clamp(static_cast<int>((s->position.x - 213.0f) / 130.0f * kGrid), 0, kGrid - 1);
-    const int iz = std::clamp(static_cast<int>((s->position.z - 227.0f) / 105.0f * kGrid), 0, kGrid - 1);
-    observed[static_cast<std::size_t>(iz * kGrid + ix)] += 1.0;
+  for (const bool reuse : {false, true}) {
+    const LightSampler lights(scene, scene_bounds(scene), {TriangleLightSampling::area, reuse});
+    ASSERT_EQ(lights.light_count(), 2u);
+    const Vec3f reference(278.0f, 0.0f, 279.0f);
+    constexpr int kGrid = 16;
+    constexpr long kSamples = 400'000;
+    std::vector<double> observed(kGrid * kGrid, 0.0), expected(kGrid * kGrid, double(kSamples) / (kGrid * kGrid));
+    Pcg32 rng(5, 6);
+    for (long i = 0; i < kSamples; ++i) {
+      const auto s = lights.sample(reference, rng.next_float(), Vec2f(rng.next_float(), rng.next_float()));
+      ASSERT_TRUE(s.has_value());
+      ASSERT_FALSE(s->is_delta);
+      ASSERT_LT(s->normal.y, -0.999f);
+      // p_ω = r² / (cos θ_light · A_total): both triangles are chosen in proportion to area.
+      const float d2 = length_squared(s->position - reference);
+      const float cos_light = -dot(s->normal, s->wi);
+      ASSERT_NEAR(s->pdf, d2 / (cos_light * 130.0f * 105.0f), 1e-4f * s->pdf);
+      const int ix = std::clamp(static_cast<int>((s->position.x - 213.0f) / 130.0f * kGrid), 0, kGrid - 1);
+      const int iz = std::clamp(static_cast<int>((s->position.z - 227.0f) / 105.0f * kGrid), 0, kGrid - 1);
+      observed[static_cast<std::size_t>(iz * kGrid + ix)] += 1.0;
+    }
+    const auto r = test::chi_square_test(observed, expected);
+    EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << "reuse " << reuse << ": " << r.message;
   }
-  const auto r = test::chi_square_test(observed, expected);
-  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+}
+
+TEST(LightSampler, ReusedSelectionSampleIsTheRescaledRemainder) {
+  // The Cornell light's two triangles have equal power: pmf 1/2 each, so with reuse
+  // u_point.x = x picks triangle ⌊2x⌋ and samples it with u.x = 2x mod 1, exactly (powers
+  // of two): the same sample as u_select = x and u_point = (2x mod 1, y) without reuse.
+  const Scene scene = make_cornell_box();
+  const LightSampler reuse(scene, scene_bounds(scene), {TriangleLightSampling::solid_angle_cosine, true});
+  const LightSampler plain(scene, scene_bounds(scene), {TriangleLightSampling::solid_angle_cosine, false});
+  const Vec3f reference(278.0f, 0.0f, 279.0f), normal(0, 1, 0);
+  for (const float x : {0.0f, 0.1f, 0.3f, 0.49f, 0.5f, 0.62f, 0.9f, 0.99f}) {
+    const float rescaled = x < 0.5f ? 2.0f * x : 2.0f * x - 1.0f;
+    const auto a = reuse.sample(reference, 0.77f, Vec2f(x, 0.4f), normal);
+    const auto b = plain.sample(reference, x, Vec2f(rescaled, 0.4f), normal);
+    ASSERT_TRUE(a && b);
+    EXPECT_EQ(a->position, b->position) << x;
+    EXPECT_EQ(a->pdf, b->pdf) << x;
+  }
+  // An emitter chosen with probability below kMinReusedSelectionPmf takes u_select as its
+  // u.x instead: a point light 10⁴ times the light's power leaves each triangle < 1/256.
+  Scene bright = make_cornell_box();
+  Light point;
+  point.type = LightType::point;
+  point.position = Vec3f(100, 300, 100);
+  point.intensity = 1e4f * scene.materials.back().emission.luminance_nits * 130.0f * 105.0f / 4.0f;
+  bright.lights.push_back(point);
+  const LightSampler reuse_bright(bright, scene_bounds(bright), {TriangleLightSampling::solid_angle_cosine, true});
+  const LightSampler plain_bright(bright, scene_bounds(bright), {TriangleLightSampling::solid_angle_cosine, false});
+  const float x = 1e-5f;  // inside the first triangle's interval [0, ~5e-5)
+  const auto a = reuse_bright.sample(reference, 0.3f, Vec2f(x, 0.4f), normal);
+  const auto b = plain_bright.sample(reference, x, Vec2f(0.3f, 0.4f), normal);
+  ASSERT_TRUE(a && b);
+  EXPECT_EQ(a->position, b->position);
+  EXPECT_EQ(a->pdf, b->pdf);
 }
 
 TEST(LightSampler, TrianglePdfMatchesSampling) {
   const Scene scene = make_cornell_box();
-  const LightSampler lights(scene, scene_bounds(scene));
+  const LightSampler lights(scene, scene_bounds(scene), {TriangleLightSampling::area, false});
   const auto light_mesh = static_cast<std::uint32_t>(scene.meshes.size() - 1);
   const Vec3f reference(100.0f, 50.0f, 300.0f), on_light(278.0f, 548.3f, 279.0f);
   const Vec3f wi = normalize(on_light - reference);
   const float cos_light = -dot(Vec3f(0, -1, 0), wi);
   const float expected = length_squared(on_light - reference) / (cos_light * 130.0f * 105.0f);
-  EXPECT_NEAR(lights.pdf_triangle(light_mesh, 1, reference, on_light, cos_light), expected, 1e-4f * expected);
-  EXPECT_EQ(lights.pdf_triangle(0, 0, reference, on_light, cos_light), 0.0f);  // the floor emits nothing
+  EXPECT_NEAR(lights.pdf_triangle(light_mesh, 1, reference, on_light), expected, 1e-4f * expected);
+  EXPECT_EQ(lights.pdf_triangle(0, 0, reference, on_light), 0.0f);  // the floor emits nothing
   // Above the light (behind its emitting side) nothing can be sampled.
   EXPECT_FALSE(lights.sample(Vec3f(278, 600, 279), 0.5f, Vec2f(0.5f, 0.5f)).has_value());
 }

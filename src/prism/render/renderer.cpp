@@ -84,6 +84,14 @@ std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settin
   h.value(settings.path.russian_roulette_depth);
   h.value(settings.path.estimator);
   h.value(settings.path.sampler);
+  // Only when not the default, so default renders keep the fingerprints of earlier versions
+  // (every light-sampling option is unbiased, so resuming across them still converges).
+  const LightSamplerOptions default_light;
+  if (settings.path.light.triangle != default_light.triangle ||
+      settings.path.light.reuse_selection_sample != default_light.reuse_selection_sample) {
+    h.value(settings.path.light.triangle);
+    h.value(settings.path.light.reuse_selection_sample);
+  }
   h.value(settings.transport.kind);
   h.value(settings.transport.wavelengths);
   h.value(settings.transport.wavelength_strategy);
@@ -111,7 +119,7 @@ void render_passes(const Scene& scene, const EmbreeAccel& accel, const RenderSet
   const auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
-  const LightSampler lights(scene, scene_bounds(scene));
+  const LightSampler lights(scene, scene_bounds(scene), settings.path.light);
   const PinholeCamera camera(scene.camera, settings.width, settings.height);
   const ColorContext<Mode> colors(scene, settings.transport);
   WavefrontIntegrator<Mode> integrator(scene, accel, lights, camera, colors, settings.path, settings.width,

@@ -18,7 +18,7 @@ template <class Mode>
 struct WavefrontIntegrator<Mode>::Paths {
   explicit Paths(std::size_t n)
       : ray(n), throughput(n), radiance(n), wavelengths(n), hit(n), hit_found(n), shadow_ray(n),
-        shadow_contribution(n), shadow_pending(n), prev_position(n), prev_pdf(n), eta_scale(n), cone_width(n), cone_spread(n), prev_specular(n), depth(n),
+        shadow_contribution(n), shadow_pending(n), prev_position(n), prev_normal(n), prev_pdf(n), eta_scale(n), cone_width(n), cone_spread(n), prev_specular(n), depth(n),
         finished(n), sample_index(n), sample_end(n) {}
   std::vector<Ray> ray;
   std::vector<Spectrum<Mode>> throughput, radiance;
@@ -29,6 +29,7 @@ struct WavefrontIntegrator<Mode>::Paths {
   std::vector<Spectrum<Mode>> shadow_contribution;
   std::vector<std::uint8_t> shadow_pending;
   std::vector<Vec3f> prev_position;
+  std::vector<Vec3f> prev_normal;          // its shading normal (triangle light pdfs depend on it)
   std::vector<float> prev_pdf;             // solid-angle pdf of the direction that led here
   std::vector<float> eta_scale;            // product of η² over refractions (for roulette)
   std::vector<float> cone_width, cone_spread;  // ray cone for texture LOD (Akenine-Möller et al. 2021)
@@ -171,7 +172,7 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     if (!p.prev_specular[slot] && use_nee) {
       if (weight_bsdf_hits) {
         const float light_pdf = lights_.pdf_triangle(p.hit[slot].mesh, p.hit[slot].triangle, p.prev_position[slot],
-                                                     si.position, si.cos_wo_geometric);
+                                                     si.position, p.prev_normal[slot]);
         w = power_heuristic(p.prev_pdf[slot], light_pdf);
       } else {
         w = 0.0f;  // NEE only: emitters found by BSDF sampling are left to light sampling
@@ -216,7 +217,7 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
                                          p.depth[slot], needs);
 
   if (light_sampled) {
-    if (const auto ls = lights_.sample(si.position, u.light_select, u.light)) {
+    if (const auto ls = lights_.sample(si.position, u.light_select, u.light, si.shading.n)) {
       const Vec3f wi_local = si.shading.to_local(ls->wi);
       // The geometric and the shading side must agree, or light leaks through edges.
       if ((dot(ls->wi, si.geometric_normal) > 0.0f) == (wi_local.z > 0.0f) && ls->pdf > 0.0f) {
@@ -268,6 +269,7 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   // fixed spread is the simple variant of the ray-cone method (Akenine-Möller et al.).
   if (!bs->is_specular) p.cone_spread[slot] = std::max(p.cone_spread[slot], 0.05f);
   p.prev_position[slot] = si.position;
+  p.prev_normal[slot] = si.shading.n;
   p.depth[slot] += 1;
 
   // Russian roulette (Arvo & Kirk 1990): survive with probability max throughput,

@@ -46,6 +46,9 @@ struct PathSettings {
   // (BENCHMARKS.md "sampler": about half the RMSE of independent sampling at 256 spp on the
   // Cornell box, also at equal time).
   SamplerKind sampler = SamplerKind::sobol;
+  // How next-event estimation picks an emitter and a point on it (scene/light_sampler.h,
+  // scene/triangle_light_sampling.h); the defaults by measurement (BENCHMARKS.md "Peer").
+  LightSamplerOptions light;
 };
 
 struct PassStatistics {

@@ -99,7 +99,8 @@ double textured_triangle_weight(const TexelEmissionWeight& weight, double textur
 
 }  // namespace
 
-LightSampler::LightSampler(const Scene& scene, const Bounds3f& world) {
+LightSampler::LightSampler(const Scene& scene, const Bounds3f& world, const LightSamplerOptions& options)
+    : options_(options) {
   first_triangle_of_mesh_.assign(scene.meshes.size(), -1);
   std::vector<double> power;
   for (std::size_t m = 0; m < scene.meshes.size(); ++m) {
@@ -121,12 +122,12 @@ LightSampler::LightSampler(const Scene& scene, const Bounds3f& world) {
       Emitter e{};
       e.kind = Kind::triangle;
       e.emitter = mesh.material;
-      e.p0 = p0;
-      e.e1 = p1 - p0;
-      e.e2 = p2 - p0;
-      e.normal = twice_area > 0.0f ? n / twice_area : Vec3f(0.0f);
-      e.area = 0.5f * twice_area;
-      e.two_sided = material.emission.two_sided;
+      e.triangle.p0 = p0;
+      e.triangle.e1 = p1 - p0;
+      e.triangle.e2 = p2 - p0;
+      e.triangle.normal = twice_area > 0.0f ? n / twice_area : Vec3f(0.0f);
+      e.triangle.area = 0.5f * twice_area;
+      e.triangle.two_sided = material.emission.two_sided;
       e.textured = textured;
       double texture_weight = 1.0;
       if (e.textured) {
@@ -140,7 +141,8 @@ LightSampler::LightSampler(const Scene& scene, const Bounds3f& world) {
       emitters_.push_back(e);
       // Lambertian emitter: Φ = π · L · A per emitting side. Zero-area triangles get
       // zero power and are never chosen.
-      power.push_back(kPi * double(material.emission.luminance_nits) * e.area * (e.two_sided ? 2.0 : 1.0) *
+      power.push_back(kPi * double(material.emission.luminance_nits) * e.triangle.area *
+                      (e.triangle.two_sided ? 2.0 : 1.0) *
                       texture_weight);
     }
   }
@@ -270,39 +272,47 @@ Vec3f LightSampler::map_direction(const Emitter& e, const Vec3f& world_direction
   return normalize(e.world_to_map.apply_vector(world_direction));
 }
 
-std::optional<LightSample> LightSampler::sample(const Vec3f& reference, float u_select, Vec2f u_point) const {
+std::optional<LightSample> LightSampler::sample(const Vec3f& reference, float u_select, Vec2f u_point,
+                                                const Vec3f& receiver_normal) const {
   if (empty()) return std::nullopt;
-  const auto it = std::upper_bound(selection_cdf_.begin(), selection_cdf_.end(), u_select);
+  const float u_choice = options_.reuse_selection_sample ? u_point.x : u_select;
+  const auto it = std::upper_bound(selection_cdf_.begin(), selection_cdf_.end(), u_choice);
   std::size_t index = std::min<std::size_t>(static_cast<std::size_t>(it - selection_cdf_.begin()), selection_cdf_.size() - 1);
-  if (selection_pmf_[index] == 0.0f) return std::nullopt;  // float ties at the top of the CDF
-  std::optional<LightSample> s = sample_emitter(index, reference, u_point);
-  if (s) s->pdf *= selection_pmf_[index];
+  const float pmf = selection_pmf_[index];
+  if (pmf == 0.0f) return std::nullopt;  // float ties at the top of the CDF
+  if (options_.reuse_selection_sample) {
+    // u_point.x ∈ [cdf_before, cdf_before + pmf): uniform there, so its position in that
+    // interval is a uniform number, stratified as u_point.x was.
+    const float cdf_before = index == 0 ? 0.0f : selection_cdf_[index - 1];
+    u_point.x = pmf >= kMinReusedSelectionPmf
+                    ? std::clamp((u_point.x - cdf_before) / pmf, 0.0f, 0x1.fffffep-1f)
+                    : u_select;
+  }
+  std::optional<LightSample> s = sample_emitter(index, reference, u_point, receiver_normal);
+  if (s) s->pdf *= pmf;
   return s;
 }
 
-std::optional<LightSample> LightSampler::sample_emitter(std::size_t index, const Vec3f& reference, Vec2f u) const {
+std::optional<LightSample> LightSampler::sample_emitter(std::size_t index, const Vec3f& reference, Vec2f u,
+                                                        const Vec3f& receiver_normal) const {
   const Emitter& e = emitters_[index];
   LightSample s;
   s.emitter = e.emitter;
   switch (e.kind) {
     case Kind::triangle: {
-      if (e.area <= 0.0f) return std::nullopt;
-      const Vec2f b = sample_uniform_triangle(u);
-      s.position = e.p0 + e.e1 * b.x + e.e2 * b.y;
-      s.normal = e.normal;
+      const auto t = options_.triangle == TriangleLightSampling::area
+                         ? sample_triangle_light_by_area(e.triangle, reference, u)
+                         : sample_triangle_light(e.triangle, options_.triangle, reference, receiver_normal, u);
+      if (!t) return std::nullopt;
+      s.position = t->position;
+      s.normal = e.triangle.normal;
+      s.wi = t->wi;
+      s.distance = t->distance;
+      s.pdf = t->pdf_sr;
       if (e.textured) {
         s.has_uv = true;
-        s.uv = barycentric_uv(e.uv0, e.duv1, e.duv2, b);
+        s.uv = barycentric_uv(e.uv0, e.duv1, e.duv2, t->barycentric);
       }
-      Vec3f d = s.position - reference;
-      const float d2 = length_squared(d);
-      if (!(d2 > 0.0f)) return std::nullopt;
-      s.distance = std::sqrt(d2);
-      s.wi = d / s.distance;
-      float cos_light = -dot(e.normal, s.wi);
-      if (e.two_sided) cos_light = std::abs(cos_light);
-      if (cos_light <= 0.0f) return std::nullopt;
-      s.pdf = d2 / (cos_light * e.area);  // area → solid angle: p_A r² / cos θ_light
       return s;
     }
     case Kind::point:
@@ -356,13 +366,12 @@ std::optional<LightSample> LightSampler::sample_emitter(std::size_t index, const
 }
 
 float LightSampler::pdf_triangle(std::uint32_t mesh, std::uint32_t triangle, const Vec3f& reference,
-                                 const Vec3f& position, float cos_light) const {
+                                 const Vec3f& position, const Vec3f& receiver_normal) const {
   if (mesh >= first_triangle_of_mesh_.size() || first_triangle_of_mesh_[mesh] < 0) return 0.0f;
   const auto index = static_cast<std::size_t>(first_triangle_of_mesh_[mesh]) + triangle;
-  const Emitter& e = emitters_[index];
-  const float c = e.two_sided ? std::abs(cos_light) : cos_light;
-  if (e.area <= 0.0f || c <= 0.0f) return 0.0f;
-  return selection_pmf_[index] * length_squared(position - reference) / (c * e.area);
+  if (selection_pmf_[index] == 0.0f) return 0.0f;
+  return selection_pmf_[index] *
+         triangle_light_pdf(emitters_[index].triangle, options_.triangle, reference, receiver_normal, position);
 }
 
 std::vector<LightSampler::EscapedHit> LightSampler::escaped(const Vec3f& wi) const {

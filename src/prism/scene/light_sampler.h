@@ -8,7 +8,9 @@
 // texture's mean. The estimate only steers the selection: any selection probability
 // that is positive wherever the emitted radiance can be is unbiased, and the floor keeps
 // it positive on triangles whose quadrature points all miss a small bright feature. The
-// point on the triangle is still chosen uniformly by area; the integrator evaluates the
+// point on the triangle is chosen by the triangle strategy (scene/triangle_light_sampling.h:
+// uniformly by area by default, or in solid angle, optionally warped towards the receiver's
+// cosine), and its uv from the barycentrics of the sampled point; the integrator evaluates the
 // texture at the sampled uv (finest level) for NEE and at the hit for BSDF-sampled hits,
 // so both techniques estimate the same function and MIS stays unbiased. Radiance
 // values come from the transport mode (render/color_context.h) by emitter id; this class
@@ -21,6 +23,7 @@
 #include "prism/core/vec.h"
 #include "prism/sampling/piecewise_constant.h"
 #include "prism/scene/scene.h"
+#include "prism/scene/triangle_light_sampling.h"
 
 namespace prism {
 
@@ -39,21 +42,42 @@ struct LightSample {
   Vec2f uv;
 };
 
+struct LightSamplerOptions {
+  // Area sampling by default: on the Cornell box the solid-angle strategies lower relMSE at
+  // 64 spp by only 2.7 % but cost ~35 % more time per sample (BENCHMARKS.md "Peer").
+  TriangleLightSampling triangle = TriangleLightSampling::area;
+  // Choose the emitter with u_point.x and reuse the rest of that number, rescaled to
+  // [0,1), as u_point.x on the emitter (pbrt-v3's "sample reuse"), so a stratified u_point
+  // stays stratified on every emitter (a quad light's two triangles each get a net of
+  // points instead of a random half of one). Only emitters chosen with probability ≥
+  // kMinReusedSelectionPmf reuse it (the remainder keeps ≥ 16 of a float's 24 bits);
+  // others take u_select as their u_point.x — equally uniform, only unstratified.
+  bool reuse_selection_sample = true;
+};
+
 class LightSampler {
  public:
-  LightSampler(const Scene& scene, const Bounds3f& world_bounds);
+  static constexpr float kMinReusedSelectionPmf = 1.0f / 256.0f;
+
+  LightSampler(const Scene& scene, const Bounds3f& world_bounds, const LightSamplerOptions& options = {});
 
   bool empty() const { return selection_pmf_.empty(); }
   std::size_t light_count() const { return selection_pmf_.size(); }
 
   // u_select picks the emitter, u_point the point or direction on it. Returns nothing when
   // the chosen emitter cannot light the reference point (it faces away, zero area).
-  std::optional<LightSample> sample(const Vec3f& reference, float u_select, Vec2f u_point) const;
+  // `receiver_normal` (unit; zero when there is none) steers triangle samples towards
+  // the receiver's cosine; pdf_triangle must be given the same one.
+  std::optional<LightSample> sample(const Vec3f& reference, float u_select, Vec2f u_point,
+                                    const Vec3f& receiver_normal = Vec3f(0.0f)) const;
 
   // Density (solid angle at `reference`, including selection) with which sample() would
-  // choose the point `position` on the given emissive triangle; 0 for non-emitters.
+  // choose the point `position` on the given emissive triangle; 0 for non-emitters and
+  // where its emitting side faces away from the reference.
   float pdf_triangle(std::uint32_t mesh, std::uint32_t triangle, const Vec3f& reference, const Vec3f& position,
-                     float cos_light) const;
+                     const Vec3f& receiver_normal = Vec3f(0.0f)) const;
+
+  const LightSamplerOptions& options() const { return options_; }
 
   // Directional lights with an angular size are hit by escaping rays: their radiance scale
   // (for the emitter's spectrum) and the density sample() gives the direction `wi`.
@@ -71,12 +95,9 @@ class LightSampler {
   struct Emitter {
     Kind kind;
     std::uint32_t emitter;  // emitter id
-    // triangle
-    Vec3f p0, e1, e2, normal;
-    float area = 0.0f;
+    TriangleLight triangle;
     bool textured = false;  // uv0 + duv1·b1 + duv2·b2 at barycentrics b
     Vec2f uv0, duv1, duv2;
-    bool two_sided = false;
     // point / spot / directional
     Vec3f position, axis;
     float cos_inner = 1.0f, cos_outer = 0.0f;
@@ -95,7 +116,10 @@ class LightSampler {
   float environment_pdf(const Emitter& e, const Vec3f& d) const;
   static Vec3f map_direction(const Emitter& e, const Vec3f& world_direction);  // unit, in the map's frame
   PiecewiseConstant2D environment_distribution_;
-  std::optional<LightSample> sample_emitter(std::size_t index, const Vec3f& reference, Vec2f u) const;
+  std::optional<LightSample> sample_emitter(std::size_t index, const Vec3f& reference, Vec2f u,
+                                           const Vec3f& receiver_normal) const;
+
+  LightSamplerOptions options_;
 
   std::vector<Emitter> emitters_;
   std::vector<float> selection_pmf_;

@@ -8,6 +8,7 @@
 
 #include "prism/render/renderer.h"
 #include "support/film_statistics.h"
+#include "support/test_scenes.h"
 
 namespace prism {
 namespace {
@@ -17,19 +18,8 @@ using Estimate = test::BlockEstimate;
 // A grey (ρ = 0.5) floor facing +y, seen straight down through a narrow camera, under an
 // octahedral sky of `luminance_nits` × the map, the map's +z turned to world +y.
 Scene floor_under_octahedral_sky(TextureImage map, float luminance_nits) {
-  Scene scene;
+  Scene scene = test::make_grey_floor_seen_from_above(1.0f, 60.0f);
   scene.name = "octahedral-sky-floor";
-  Material grey;
-  grey.base_color = Vec3f(0.5f);
-  scene.materials = {grey};
-  TriangleMesh floor;
-  floor.positions = {{-100, 0, -100}, {100, 0, -100}, {100, 0, 100}, {-100, 0, 100}};
-  floor.indices = {0, 2, 1, 0, 3, 2};  // front face up
-  scene.meshes.push_back(floor);
-  scene.camera.eye = Vec3f(0, 1, 0);
-  scene.camera.target = Vec3f(0, 0, 0);
-  scene.camera.up = Vec3f(0, 0, 1);
-  scene.camera.fov_degrees = 60.0f;
   scene.textures.push_back(std::move(map));
   Light sky;
   sky.type = LightType::environment;

@@ -113,19 +113,8 @@ TEST(Integrator, LosslessObjectsVanishInAUniformField) {
 // accumulation, 1e-4 relative); spectral transport keeps the noise of estimating Y from
 // sampled wavelengths (ȳ/p varies with λ), so its bound adds 5σ.
 Scene lit_floor(const Light& light) {
-  Scene scene;
+  Scene scene = test::make_grey_floor_seen_from_above(10.0f, 0.01f);
   scene.name = "lit-floor";
-  Material grey;
-  grey.base_color = Vec3f(0.5f);
-  scene.materials = {grey};
-  TriangleMesh floor;
-  floor.positions = {{-100, 0, -100}, {100, 0, -100}, {100, 0, 100}, {-100, 0, 100}};
-  floor.indices = {0, 2, 1, 0, 3, 2};  // front face up
-  scene.meshes.push_back(floor);
-  scene.camera.eye = Vec3f(0, 10, 0);
-  scene.camera.target = Vec3f(0, 0, 0);
-  scene.camera.up = Vec3f(0, 0, 1);
-  scene.camera.fov_degrees = 0.01f;
   scene.lights.push_back(light);
   return scene;
 }

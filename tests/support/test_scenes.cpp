@@ -30,4 +30,21 @@ Scene make_emitting_enclosure(float albedo, float emitted) {
   return scene;
 }
 
+Scene make_grey_floor_seen_from_above(float eye_height, float fov_degrees) {
+  Scene scene;
+  scene.name = "grey-floor";
+  Material grey;
+  grey.base_color = Vec3f(0.5f);
+  scene.materials = {grey};
+  TriangleMesh floor;
+  floor.positions = {{-100, 0, -100}, {100, 0, -100}, {100, 0, 100}, {-100, 0, 100}};
+  floor.indices = {0, 2, 1, 0, 3, 2};  // front face up
+  scene.meshes.push_back(floor);
+  scene.camera.eye = Vec3f(0, eye_height, 0);
+  scene.camera.target = Vec3f(0, 0, 0);
+  scene.camera.up = Vec3f(0, 0, 1);
+  scene.camera.fov_degrees = fov_degrees;
+  return scene;
+}
+
 }  // namespace prism::test

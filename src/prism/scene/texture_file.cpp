@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <cstring>
 #include <optional>
+#include <utility>
 #include <fstream>
 #include <memory>
 #include <vector>
@@ -266,6 +267,23 @@ std::int32_t read_le32(const unsigned char* p) {
 // target: a 610-byte file asking for 2 GB). Checks that every attribute fits in the file,
 // that the data window is within the size limit and that a tiled image's offset table
 // (8 bytes per level-0 tile) fits in the file.
+// Sizes of OpenEXR's fixed-size attribute types (OpenEXR file layout, "Attribute types").
+// OpenEXR reads a value of a known type by its type, not by the declared size, and goes on
+// from there; a walk that skipped the declared size would lose step with it (the fuzz
+// target found a float declaring 247 bytes, after which OpenEXR read a string of the value
+// as an attribute claiming 1.7 GB). So a known type must declare its own size.
+std::optional<std::int32_t> openexr_fixed_attribute_size(std::string_view type) {
+  static constexpr std::pair<std::string_view, std::int32_t> kSizes[] = {
+      {"box2i", 16},    {"box2f", 16},          {"chromaticities", 32}, {"compression", 1}, {"double", 8},
+      {"envmap", 1},    {"float", 4},           {"int", 4},             {"keycode", 28},    {"lineOrder", 1},
+      {"m33f", 36},     {"m33d", 72},           {"m44f", 64},           {"m44d", 128},      {"rational", 8},
+      {"tiledesc", 9},  {"timecode", 8},        {"v2i", 8},             {"v2f", 8},         {"v2d", 16},
+      {"v3i", 12},      {"v3f", 12},            {"v3d", 24},            {"deepImageState", 1}};
+  for (const auto& [name, size] : kSizes)
+    if (name == type) return size;
+  return std::nullopt;
+}
+
 void check_openexr_header(std::span<const unsigned char> bytes, int max_dimension, std::string_view name) {
   const auto corrupt = [&](std::string_view why) {
     throw IoError(fmt::format("cannot read image '{}': corrupt or truncated OpenEXR header ({})", name, why));
@@ -294,6 +312,8 @@ void check_openexr_header(std::span<const unsigned char> bytes, int max_dimensio
       pos += 4;
       if (size < 0 || static_cast<std::size_t>(size) > bytes.size() - pos)
         corrupt(fmt::format("attribute '{}' claims {} bytes", attribute, size));
+      if (const auto fixed = openexr_fixed_attribute_size(type); fixed && *fixed != size)
+        corrupt(fmt::format("attribute '{}' of type {} claims {} bytes, not {}", attribute, type, size, *fixed));
       const unsigned char* value = bytes.data() + pos;
       if (attribute == "dataWindow" && type == "box2i" && size == 16) {
         width = static_cast<long>(read_le32(value + 8)) - read_le32(value) + 1;

@@ -163,6 +163,23 @@ TEST(TextureFile, OpenExrHeaderClaimingMoreThanTheFileHoldsIsRefusedBeforeAlloca
             std::string::npos);
 }
 
+TEST(TextureFile, OpenExrAttributeOfAFixedSizeTypeMustDeclareThatSize) {
+  // Regression (fuzz_image_readers): a 742-byte EXR whose float attribute declares 247 bytes.
+  // OpenEXR reads 4 and carries on inside the value, where it finds an "attribute" of 1.7 GB
+  // and allocates it; our walk, skipping 247 bytes, saw nothing wrong. Known types must now
+  // declare their own size.
+  const std::filesystem::path file =
+      std::filesystem::path(PRISM_SOURCE_DIR) / "tests/scene/loaders/data/fuzz_exr_fixed_size_attribute.exr";
+  ASSERT_TRUE(std::filesystem::exists(file));
+  const std::string message = error_of<IoError>([&] { read_texture_file(file, TextureEncoding::linear, 32768); });
+  EXPECT_NE(message.find("attribute 'pix-lAspectRatio' of type float claims 247 bytes, not 4"), std::string::npos)
+      << message;
+  // Files OpenEXR itself writes still pass the walk.
+  test::ScratchFolder dir;
+  write_exr(dir / "ok.exr", ImageRgbF{2, 2, std::vector<float>(2 * 2 * 3, 0.5f)}, kRec709);
+  EXPECT_EQ(read_texture_file(dir / "ok.exr", TextureEncoding::linear, 32768).width, 2);
+}
+
 TEST(TextureFile, JpegHuffmanTableWithTooManyCodesIsRefusedBeforeStbImage) {
   // Regression (fuzz_image_readers, found by the CI's fuzz-smoke run): a 684-byte JPEG whose
   // DHT counts sum past 256; stb_image wrote past its 257-entry size table (UBSan

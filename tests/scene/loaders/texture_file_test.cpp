@@ -152,13 +152,17 @@ TEST(TextureFile, CacheLoadsEachFileOncePerEncodingAndAddressing) {
 namespace prism {
 namespace {
 
+// The IoError read_texture_file gives a fuzz regression input kept in tests/scene/loaders/data.
+std::string regression_input_error(std::string_view file_name, TextureEncoding encoding) {
+  const std::filesystem::path file = std::filesystem::path(PRISM_SOURCE_DIR) / "tests/scene/loaders/data" / file_name;
+  EXPECT_TRUE(std::filesystem::exists(file)) << file;
+  return error_of<IoError>([&] { read_texture_file(file, encoding, 32768); });
+}
+
 TEST(TextureFile, OpenExrHeaderClaimingMoreThanTheFileHoldsIsRefusedBeforeAllocating) {
   // Regression (fuzz_image_readers): a 610-byte EXR whose string attribute declares ~2 GB;
   // OpenEXR 3.1 allocated it before reading. Now refused by our own header walk.
-  const std::filesystem::path file =
-      std::filesystem::path(PRISM_SOURCE_DIR) / "tests/scene/loaders/data/fuzz_exr_huge_attribute.exr";
-  ASSERT_TRUE(std::filesystem::exists(file));
-  EXPECT_NE(error_of<IoError>([&] { read_texture_file(file, TextureEncoding::linear, 32768); })
+  EXPECT_NE(regression_input_error("fuzz_exr_huge_attribute.exr", TextureEncoding::linear)
                 .find("corrupt or truncated OpenEXR header"),
             std::string::npos);
 }
@@ -168,10 +172,7 @@ TEST(TextureFile, OpenExrAttributeOfAFixedSizeTypeMustDeclareThatSize) {
   // OpenEXR reads 4 and carries on inside the value, where it finds an "attribute" of 1.7 GB
   // and allocates it; our walk, skipping 247 bytes, saw nothing wrong. Known types must now
   // declare their own size.
-  const std::filesystem::path file =
-      std::filesystem::path(PRISM_SOURCE_DIR) / "tests/scene/loaders/data/fuzz_exr_fixed_size_attribute.exr";
-  ASSERT_TRUE(std::filesystem::exists(file));
-  const std::string message = error_of<IoError>([&] { read_texture_file(file, TextureEncoding::linear, 32768); });
+  const std::string message = regression_input_error("fuzz_exr_fixed_size_attribute.exr", TextureEncoding::linear);
   EXPECT_NE(message.find("attribute 'pix-lAspectRatio' of type float claims 247 bytes, not 4"), std::string::npos)
       << message;
   // Files OpenEXR itself writes still pass the walk.
@@ -184,10 +185,7 @@ TEST(TextureFile, JpegHuffmanTableWithTooManyCodesIsRefusedBeforeStbImage) {
   // Regression (fuzz_image_readers, found by the CI's fuzz-smoke run): a 684-byte JPEG whose
   // DHT counts sum past 256; stb_image wrote past its 257-entry size table (UBSan
   // index-out-of-bounds in stbi__build_huffman). Now refused by our own marker walk.
-  const std::filesystem::path file =
-      std::filesystem::path(PRISM_SOURCE_DIR) / "tests/scene/loaders/data/fuzz_jpeg_huffman_overflow.jpg";
-  ASSERT_TRUE(std::filesystem::exists(file));
-  EXPECT_NE(error_of<IoError>([&] { read_texture_file(file, TextureEncoding::srgb, 32768); })
+  EXPECT_NE(regression_input_error("fuzz_jpeg_huffman_overflow.jpg", TextureEncoding::srgb)
                 .find("corrupt JPEG (Huffman table with"),
             std::string::npos);
   // A valid JPEG still decodes (the fuzz corpus' seed image).
@@ -200,10 +198,7 @@ TEST(TextureFile, JpegScanUsingAnUndefinedHuffmanTableIsRefusedBeforeStbImage) {
   // Regression (fuzz_image_readers, CI fuzz-smoke): a 661-byte baseline JPEG whose first scan
   // selects AC table 3, which no DHT defines; stb_image decoded with its uninitialised table
   // (UBSan: index 637 out of bounds for 'stbi_uc[256]' in stbi__jpeg_huff_decode).
-  const std::filesystem::path file =
-      std::filesystem::path(PRISM_SOURCE_DIR) / "tests/scene/loaders/data/fuzz_jpeg_undefined_huffman_table.jpg";
-  ASSERT_TRUE(std::filesystem::exists(file));
-  EXPECT_NE(error_of<IoError>([&] { read_texture_file(file, TextureEncoding::srgb, 32768); })
+  EXPECT_NE(regression_input_error("fuzz_jpeg_undefined_huffman_table.jpg", TextureEncoding::srgb)
                 .find("corrupt JPEG (scan uses AC Huffman table 3 before it is defined)"),
             std::string::npos);
 }

@@ -219,10 +219,7 @@ int run_render(const RenderOptions& o) {
   apply_environment_override(scene, o.environment,
                              LoadOptions{.allow_external_paths = true, .memory_budget = &load_budget});
   for (const std::string& w : scene.warnings) fmt::print(stderr, "prism: warning: {}\n", w);
-  if (!scene_has_emitters(scene))
-    fmt::print(stderr, "prism: warning: {} has no lights or emissive surfaces, so the image will be black; light it with "
-                       "--environment FILE.hdr or --environment uniform\n",
-               scene.name);
+  if (const auto warning = no_emitters_warning(scene)) fmt::print(stderr, "prism: warning: {}\n", *warning);
   for (std::size_t i = 1, n = 0; i <= scene.lights.size(); ++i)
     if (scene.lights[i - 1].type == LightType::environment && ++n == 2)
       fmt::print(stderr, "prism: warning: only the first environment light is used\n");

@@ -67,4 +67,11 @@ bool scene_has_emitters(const Scene& scene) {
   });
 }
 
+std::optional<std::string> no_emitters_warning(const Scene& scene) {
+  if (scene_has_emitters(scene)) return std::nullopt;
+  return fmt::format("{} has no lights or emissive surfaces, so the image will be black; light it with "
+                     "--environment FILE.hdr or --environment uniform",
+                     scene.name);
+}
+
 }  // namespace prism

@@ -7,6 +7,7 @@
 // (docs/scene-formats.md): a texel value of 1 (or the uniform sky) has that luminance.
 // `rotation_degrees` turns the map about the world's +y axis (right-handed, so +90° carries
 // the map's +x direction to −z).
+#include <optional>
 #include <string>
 
 #include "prism/scene/load_options.h"
@@ -29,5 +30,9 @@ void apply_environment_override(Scene& scene, const EnvironmentOverride& overrid
 // Whether anything in the scene emits light: a non-geometric light or a material with
 // emission that some mesh uses.
 bool scene_has_emitters(const Scene& scene);
+
+// The one-line warning `prism render` and `prism view` print for a scene without emitters
+// (it would render black), naming the way out; nothing when the scene emits.
+std::optional<std::string> no_emitters_warning(const Scene& scene);
 
 }  // namespace prism

@@ -338,10 +338,7 @@ int run_viewer(const ViewerOptions& options) {
   Scene scene = load_scene(options.scene, LoadOptions{.allow_external_paths = options.allow_external_paths});
   if (!options.camera.empty()) select_camera(scene, options.camera);
   apply_environment_override(scene, options.environment, LoadOptions{.allow_external_paths = true});
-  if (!scene_has_emitters(scene))
-    fmt::print(stderr, "prism: warning: {} has no lights or emissive surfaces, so the image will be black; light it with "
-                       "--environment FILE.hdr or --environment uniform\n",
-               scene.name);
+  if (const auto warning = no_emitters_warning(scene)) fmt::print(stderr, "prism: warning: {}\n", *warning);
   ViewerApp app(options, std::move(scene), window);
   return app.run();
 }

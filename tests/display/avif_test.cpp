@@ -6,6 +6,7 @@
 
 #include "prism/core/error.h"
 #include "prism/io/avif.h"
+#include "support/scratch_folder.h"
 
 namespace prism {
 namespace {
@@ -22,7 +23,8 @@ EncodedImage gradient(int depth) {
 
 TEST(DisplayAvif, WritesCicpAndReadsBackLosslessly) {
   for (int depth : {10, 12}) {
-    const auto path = std::filesystem::temp_directory_path() / ("prism_avif_test_" + std::to_string(depth) + ".avif");
+    const test::ScratchFolder scratch;
+    const auto path = scratch / ("gradient_" + std::to_string(depth) + ".avif");
     const EncodedImage img = gradient(depth);
     write_avif(path, img, CicpInfo{9, 16, 0, 1});
     const AvifInfo info = read_avif_info(path);
@@ -35,15 +37,15 @@ TEST(DisplayAvif, WritesCicpAndReadsBackLosslessly) {
     EXPECT_EQ(info.cicp.video_full_range, 1);
     EXPECT_TRUE(info.yuv444);
     EXPECT_EQ(read_avif(path).samples, img.samples);
-    std::filesystem::remove(path);
   }
 }
 
 TEST(DisplayAvif, RejectsBadInput) {
-  const auto path = std::filesystem::temp_directory_path() / "prism_avif_bad.avif";
+  const test::ScratchFolder scratch;
+  const auto path = scratch / "bad.avif";
   EXPECT_THROW(write_avif(path, gradient(8), CicpInfo{}), UsageError);
   EXPECT_FALSE(std::filesystem::exists(path));
-  EXPECT_THROW(read_avif_info(std::filesystem::temp_directory_path() / "no_such_file.avif"), IoError);
+  EXPECT_THROW(read_avif_info(scratch / "no_such_file.avif"), IoError);
 }
 
 }  // namespace

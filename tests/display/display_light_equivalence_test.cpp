@@ -13,6 +13,7 @@
 #include "prism/io/exr_scrgb.h"
 #include "prism/io/png.h"
 #include "prism/io/png_hdr.h"
+#include "support/scratch_folder.h"
 
 namespace prism::display {
 namespace {
@@ -37,8 +38,8 @@ void check_same_light(bool stretch_black) {
   DisplaySettings s;
   s.odt = OdtId::rec2020_pq_1000nit;
   s.stretch_black = stretch_black;
-  const auto dir = std::filesystem::temp_directory_path();
-  const auto png_path = dir / "prism_equiv_pq.png", exr_path = dir / "prism_equiv_scrgb.exr";
+  const test::ScratchFolder scratch;
+  const auto png_path = scratch / "pq.png", exr_path = scratch / "scrgb.exr";
 
   const DisplayImage pq = apply_display_pipeline(film, rec709, s);
   PngColorMetadata meta;
@@ -76,8 +77,6 @@ void check_same_light(bool stretch_black) {
     }
   }
   std::printf("[ equiv ] stretch_black=%d: PQ PNG vs scRGB EXR max |ΔXYZ|/Y %.2e\n", stretch_black, max_rel);
-  std::filesystem::remove(png_path);
-  std::filesystem::remove(exr_path);
 }
 
 TEST(DisplayLightEquivalence, PqPngAndScrgbExrShowTheSameLight) { check_same_light(true); }

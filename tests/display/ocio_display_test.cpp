@@ -5,11 +5,11 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 
 #include "prism/color/transfer_functions.h"
 #include "prism/core/error.h"
 #include "prism/display/ocio_display.h"
+#include "support/scratch_folder.h"
 
 namespace prism::display {
 namespace {
@@ -34,11 +34,7 @@ colorspaces:
     from_scene_reference: !<ExponentWithLinearTransform> {gamma: 2.4, offset: 0.055, direction: inverse}
 )";
 
-std::filesystem::path write_config() {
-  const auto path = std::filesystem::temp_directory_path() / "prism_ocio_test_config.ocio";
-  std::ofstream(path) << kConfig;
-  return path;
-}
+std::filesystem::path write_config(const test::ScratchFolder& scratch) { return scratch.write("config.ocio", kConfig); }
 
 ImageRgbF ramp() {
   ImageRgbF film{11, 1, {}};
@@ -48,7 +44,8 @@ ImageRgbF ramp() {
 }
 
 TEST(DisplayOcio, ConfigFileDisplayAndView) {
-  const auto path = write_config();
+  const test::ScratchFolder scratch;
+  const auto path = write_config(scratch);
   const ImageRgbF film = ramp();
   const DisplayImage out = apply_ocio_display(film, 1.0, {path.string(), "sRGB", "Standard", ""});
   ASSERT_EQ(out.code.size(), film.rgb.size());
@@ -56,11 +53,11 @@ TEST(DisplayOcio, ConfigFileDisplayAndView) {
   for (std::size_t i = 0; i < film.rgb.size(); ++i) EXPECT_NEAR(out.code[i], color::srgb_encode(film.rgb[i]), 1e-5) << i;
   const DisplayImage raw = apply_ocio_display(film, 2.0, {path.string(), "sRGB", "Raw", ""});
   for (std::size_t i = 0; i < film.rgb.size(); ++i) EXPECT_NEAR(raw.code[i], 2.0 * film.rgb[i], 1e-6);
-  std::filesystem::remove(path);
 }
 
 TEST(DisplayOcio, HonoursOcioEnvironmentVariable) {
-  const auto path = write_config();
+  const test::ScratchFolder scratch;
+  const auto path = write_config(scratch);
   const char* old = std::getenv("OCIO");
   const std::string saved = old ? old : "";
   setenv("OCIO", path.c_str(), 1);
@@ -69,16 +66,15 @@ TEST(DisplayOcio, HonoursOcioEnvironmentVariable) {
   unsetenv("OCIO");
   EXPECT_THROW(apply_ocio_display(ramp(), 1.0, {"", "sRGB", "Standard", ""}), UsageError);
   if (old) setenv("OCIO", saved.c_str(), 1);
-  std::filesystem::remove(path);
 }
 
 TEST(DisplayOcio, BadConfigDisplayOrView) {
-  const auto path = write_config();
+  const test::ScratchFolder scratch;
+  const auto path = write_config(scratch);
   EXPECT_THROW(apply_ocio_display(ramp(), 1.0, {path.string(), "P3", "Standard", ""}), UsageError);
   EXPECT_THROW(apply_ocio_display(ramp(), 1.0, {path.string(), "sRGB", "Filmic", ""}), UsageError);
   EXPECT_THROW(apply_ocio_display(ramp(), 1.0, {path.string(), "sRGB", "Standard", "nope"}), UsageError);
   EXPECT_THROW(apply_ocio_display(ramp(), 1.0, {"/nonexistent/config.ocio", "sRGB", "Standard", ""}), UsageError);
-  std::filesystem::remove(path);
 }
 
 }  // namespace

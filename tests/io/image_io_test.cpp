@@ -7,6 +7,7 @@
 #include "prism/io/atomic_file.h"
 #include "prism/io/exr.h"
 #include "prism/io/png.h"
+#include "support/scratch_folder.h"
 
 namespace prism {
 namespace {
@@ -14,12 +15,6 @@ namespace fs = std::filesystem;
 
 class ImageIo : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("prism-io-test-" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                                        "-" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
   // Nothing but the named files may be left in the directory (no temporaries).
   std::vector<std::string> files() const {
     std::vector<std::string> names;
@@ -27,7 +22,8 @@ class ImageIo : public ::testing::Test {
     std::sort(names.begin(), names.end());
     return names;
   }
-  fs::path dir_;
+  const test::ScratchFolder scratch_;
+  const fs::path dir_ = scratch_.path();
 };
 
 ImageRgbF gradient(int w, int h) {

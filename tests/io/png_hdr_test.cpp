@@ -16,6 +16,7 @@
 #include "prism/io/hdr10_metadata.h"
 #include "prism/io/png.h"
 #include "prism/io/png_hdr.h"
+#include "support/scratch_folder.h"
 
 namespace prism {
 namespace {
@@ -86,7 +87,8 @@ TEST(ContentLightLevel, ExactOnSyntheticImage) {
 }
 
 TEST(PngHdr, ChunksReadBackWithLibpng) {
-  const auto path = std::filesystem::temp_directory_path() / "prism_png_hdr_test.png";
+  const test::ScratchFolder scratch;
+  const auto path = scratch / "hdr.png";
   EncodedImage img;
   img.width = 2;
   img.height = 1;
@@ -120,11 +122,11 @@ TEST(PngHdr, ChunksReadBackWithLibpng) {
   EXPECT_EQ(back.image.bit_depth, 16);
   EXPECT_EQ(back.image.samples, img.samples);
   EXPECT_FALSE(back.has_srgb_chunk);
-  std::filesystem::remove(path);
 }
 
 TEST(PngHdr, IccProfileReadsBackWithLibpng) {
-  const auto path = std::filesystem::temp_directory_path() / "prism_png_iccp_test.png";
+  const test::ScratchFolder scratch;
+  const auto path = scratch / "iccp.png";
   EncodedImage img{2, 1, 3, 8, {0, 128, 255, 10, 20, 30}};
   PngColorMetadata meta;
   meta.cicp = CicpInfo{12, 13, 0, 1};
@@ -142,7 +144,6 @@ TEST(PngHdr, IccProfileReadsBackWithLibpng) {
   // PNG allows an sRGB chunk or an ICC profile, not both.
   meta.srgb_chunk = true;
   EXPECT_THROW(write_png_with_color_metadata(path, img, meta), IoError);
-  std::filesystem::remove(path);
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "prism/core/error.h"
+#include "support/scratch_folder.h"
 
 namespace prism {
 namespace {
@@ -46,7 +47,8 @@ TEST(CameraJson, RejectsBadInput) {
 }
 
 TEST(CameraJson, FileRoundTripAndMissingFile) {
-  const auto path = std::filesystem::temp_directory_path() / "prism_camera_json_test.json";
+  const test::ScratchFolder scratch;
+  const auto path = scratch / "camera.json";
   Camera c;
   c.eye = {3, 4, 5};
   write_camera_json(path, c);

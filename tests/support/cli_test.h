@@ -4,7 +4,6 @@
 // log, and the log's text for failure messages.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -12,18 +11,12 @@
 #include <iterator>
 #include <string>
 
+#include "support/scratch_folder.h"
+
 namespace prism::test {
 
 class CliTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    dir_ = std::filesystem::temp_directory_path() /
-           ("prism-cli-test-" + std::to_string(::getpid()) + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->test_suite_name() + "-" +
-            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
   // Exit status of `prism ARGS` (-1 when it did not exit normally).
   int run(const std::string& args) {
     const std::string cmd = std::string(PRISM_CLI) + " " + args + " >" + (dir_ / "log").string() + " 2>&1";
@@ -35,7 +28,8 @@ class CliTest : public ::testing::Test {
     return std::string(std::istreambuf_iterator<char>(in), {});
   }
   std::string path(const std::string& name) const { return (dir_ / name).string(); }
-  std::filesystem::path dir_;
+  const ScratchFolder scratch_;
+  const std::filesystem::path dir_ = scratch_.path();
 };
 
 }  // namespace prism::test

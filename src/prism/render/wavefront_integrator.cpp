@@ -154,12 +154,12 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
 
   if (!p.hit_found[slot]) {
     // Escaped: only directional lights with an angular size can be hit.
-    for (const auto& e : lights_.escaped(ray.direction)) {
+    lights_.visit_escaped(ray.direction, [&](const LightSampler::EscapedHit& e) {
       float w = 1.0f;
       if (!p.prev_specular[slot] && use_nee) w = weight_bsdf_hits ? power_heuristic(p.prev_pdf[slot], e.pdf) : 0.0f;
       const Spectrum<Mode> Le = e.has_rgb ? colors_.rgb_radiance(e.rgb, wl) : colors_.emission(e.emitter, wl) * e.scale;
       L += beta * Le * w;
-    }
+    });
     p.finished[slot] = 1;
     return;
   }

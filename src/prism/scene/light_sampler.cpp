@@ -374,18 +374,18 @@ float LightSampler::pdf_triangle(std::uint32_t mesh, std::uint32_t triangle, con
          triangle_light_pdf(emitters_[index].triangle, options_.triangle, reference, receiver_normal, position);
 }
 
+std::optional<LightSampler::EscapedHit> LightSampler::escaped_hit(std::uint32_t index, const Vec3f& wi) const {
+  const Emitter& e = emitters_[index];
+  if (e.kind == Kind::environment)
+    return EscapedHit{e.emitter, 1.0f, selection_pmf_[index] * environment_pdf(e, wi), true, environment_rgb(e, wi)};
+  if (e.kind != Kind::directional || e.cos_max >= 1.0f || dot(wi, -e.axis) < e.cos_max) return std::nullopt;
+  return EscapedHit{e.emitter, e.disc_radiance_scale, selection_pmf_[index] * uniform_cone_pdf(e.cos_max), false,
+                    Vec3f(0.0f)};
+}
+
 std::vector<LightSampler::EscapedHit> LightSampler::escaped(const Vec3f& wi) const {
   std::vector<EscapedHit> hits;
-  for (const std::uint32_t i : escapable_emitters_) {
-    const Emitter& e = emitters_[i];
-    if (e.kind == Kind::environment) {
-      hits.push_back({e.emitter, 1.0f, selection_pmf_[i] * environment_pdf(e, wi), true, environment_rgb(e, wi)});
-      continue;
-    }
-    if (e.kind != Kind::directional || e.cos_max >= 1.0f) continue;
-    if (dot(wi, -e.axis) < e.cos_max) continue;
-    hits.push_back({e.emitter, e.disc_radiance_scale, selection_pmf_[i] * uniform_cone_pdf(e.cos_max), false, Vec3f(0.0f)});
-  }
+  visit_escaped(wi, [&](const EscapedHit& hit) { hits.push_back(hit); });
   return hits;
 }
 

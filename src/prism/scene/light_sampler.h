@@ -88,7 +88,14 @@ class LightSampler {
     bool has_rgb = false;  // environment maps: texel radiance, see LightSample
     Vec3f rgb;
   };
-  std::vector<EscapedHit> escaped(const Vec3f& wi) const;
+  // Calls visit(const EscapedHit&) for each emitter a ray leaving the scene in direction wi
+  // hits; nothing is allocated (the integrator calls this for every escaping ray).
+  template <class Visit>
+  void visit_escaped(const Vec3f& wi, Visit&& visit) const {
+    for (const std::uint32_t i : escapable_emitters_)
+      if (const std::optional<EscapedHit> hit = escaped_hit(i, wi)) visit(*hit);
+  }
+  std::vector<EscapedHit> escaped(const Vec3f& wi) const;  // the same hits, collected
 
  private:
   enum class Kind : std::uint8_t { triangle, point, spot, directional, environment };
@@ -109,6 +116,7 @@ class LightSampler {
     Transform world_to_map, map_to_world;
     float intensity_nits = 0.0f;
   };
+  std::optional<EscapedHit> escaped_hit(std::uint32_t index, const Vec3f& wi) const;  // index into emitters_
   double build_environment_distribution(const Emitter& e);  // returns the sky's average luminance
   bool environment_built_ = false;
   // Environment radiance (linear Rec.709, nits) seen in world direction `d`.

@@ -21,14 +21,20 @@ PiecewiseLinearDensity::PiecewiseLinearDensity(double first, double step, std::v
   for (double& p : pdf_) p /= total;
   for (double& c : cdf_) c /= total;
   cdf_.back() = 1.0;
-  // About four guide cells per segment: the segment search then scans 0–2 nodes.
-  const std::size_t cells = 4 * (pdf_.size() - 1);
+  // Guide cells: at least four per segment, and at least 1/(smallest segment mass), so that
+  // no cell holds two nodes and sample() finds its segment in one step (capped at 2^16
+  // cells; past that the search loops over the few extra nodes).
+  double smallest_mass = 1.0;
+  for (std::size_t n = 1; n < cdf_.size(); ++n) smallest_mass = std::min(smallest_mass, cdf_[n] - cdf_[n - 1]);
+  std::size_t cells = 4 * (pdf_.size() - 1);
+  if (smallest_mass > 0.0) cells = std::max(cells, static_cast<std::size_t>(std::min(65536.0, 1.0 / smallest_mass)) + 1);
+  else cells = std::max<std::size_t>(cells, 65536);
   guide_.resize(cells);
   std::size_t segment = 0;
   for (std::size_t g = 0; g < cells; ++g) {
     const double u = double(g) / double(cells);
     while (segment + 2 < cdf_.size() && cdf_[segment + 1] <= u) ++segment;
-    guide_[g] = static_cast<int>(segment);
+    guide_[g] = static_cast<std::uint32_t>(segment);
   }
 }
 
@@ -39,23 +45,6 @@ double PiecewiseLinearDensity::pdf(double x) const {
   const std::size_t n = static_cast<std::size_t>(std::min(position, last_segment));
   const double t = position - double(n);
   return pdf_[n] + t * (pdf_[n + 1] - pdf_[n]);
-}
-
-double PiecewiseLinearDensity::sample(double u) const {
-  u = std::clamp(u, 0.0, 1.0);
-  const std::size_t cells = guide_.size();
-  std::size_t n = static_cast<std::size_t>(guide_[std::min(cells - 1, static_cast<std::size_t>(u * double(cells)))]);
-  while (n + 2 < cdf_.size() && cdf_[n + 1] <= u) ++n;
-  // In the segment the density is p0 + (p1 − p0)·t, t ∈ [0, 1], so the CDF rises by
-  // step·(p0·t + (p1 − p0)·t²/2). Solve for the remaining mass r; the form 2c/(b + √(b² + 4ac))
-  // of the quadratic's root has no cancellation when p1 ≈ p0.
-  const double p0 = pdf_[n], p1 = pdf_[n + 1];
-  const double r = (u - cdf_[n]) * inverse_step_;
-  const double a = 0.5 * (p1 - p0), b = p0;
-  const double discriminant = std::max(0.0, b * b + 4.0 * a * r);
-  const double denominator = b + std::sqrt(discriminant);
-  const double t = denominator > 0.0 ? std::clamp(2.0 * r / denominator, 0.0, 1.0) : 0.0;
-  return first_ + step_ * (double(n) + t);
 }
 
 }  // namespace prism::color

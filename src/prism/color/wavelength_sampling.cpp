@@ -175,8 +175,12 @@ void sample_three_cosh_wavelengths(double u, int count, float* wavelength_nm, fl
   const std::array<double, 3> weights = ThreeCoshTables::lobe_weights(count);
   for (int i = 0; i < count; ++i) {
     const int lobe = i % 3, copy = i / 3, copies = (count - lobe + 2) / 3;
-    const double shifted = u + tables.lobes[lobe].center_shift + double(copy) / copies;
-    const double nm = tables.lobes[lobe].density.sample(shifted - std::floor(shifted));
+    // shifted ∈ (−1, 2): u ∈ [0, 1), |center_shift| < 1, copy/copies < 1. Wrapped without
+    // std::floor, a libm call in a build without SSE4.1.
+    double shifted = u + tables.lobes[lobe].center_shift + double(copy) / copies;
+    shifted -= double(shifted >= 1.0);
+    shifted += double(shifted < 0.0);
+    const double nm = tables.lobes[lobe].density.sample(shifted);
     wavelength_nm[i] = static_cast<float>(nm);
     pdf[i] = static_cast<float>(tables.effective_pdf(weights, nm));
   }

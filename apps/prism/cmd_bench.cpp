@@ -96,6 +96,9 @@ void add_bench_command(CLI::App& root, Action& action) {
   cmd->add_option("--threads", o->run.threads, "Worker threads (0: all)")->check(CLI::Range(0, 4096));
   cmd->add_option("--spp", o->run.spp, "Samples per pixel (0: each suite's default)")->check(CLI::Range(0, 1 << 20));
   cmd->add_option("--size", o->run.size, "Square image size (0: each suite's default)")->check(CLI::Range(0, 16384));
+  cmd->add_option("--scene", o->run.scene,
+                  "efficiency: render this scene file (e.g. data/scenes/cornell-box.pbrt, through its loader) "
+                  "instead of the built-in Cornell box");
   cmd->callback([o, &action] { action = [o] { return run_bench(*o); }; });
 #else
   cmd->allow_extras();

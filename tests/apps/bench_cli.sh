@@ -38,6 +38,21 @@ else
   fail "bench scaling steadiness --quick: $(cat "$work/err")"
 fi
 
+# efficiency --scene renders a scene file through its loader (the glossy pbrt-v4 box here).
+scenes="$(cd "$(dirname "$0")/../../data/scenes" && pwd)"
+if "$prism" bench efficiency --quick --scene "$scenes/cornell-box-glossy.pbrt" >"$work/out" 2>"$work/err"; then
+  grep -q "^## efficiency: .*cornell-box-glossy.pbrt 16^2" "$work/out" ||
+    fail "bench efficiency --scene: the table does not name the scene: $(head -3 "$work/out")"
+else
+  fail "bench efficiency --scene cornell-box-glossy.pbrt: $(cat "$work/err")"
+fi
+# A missing scene file: a one-line error naming it, a non-zero exit.
+"$prism" bench efficiency --quick --scene "$work/missing.pbrt" >/dev/null 2>"$work/err"
+status=$?
+[ "$status" != 0 ] || fail "bench efficiency --scene MISSING: exit 0"
+[ "$(wc -l <"$work/err")" = 1 ] && grep -q "missing.pbrt" "$work/err" ||
+  fail "bench efficiency --scene MISSING: expected one line naming the file, got: $(cat "$work/err")"
+
 # Usage errors: exit 2 and one line on stderr.
 for args in "no-such-suite" "" "limit --quick --full" "limit --repeat 0"; do
   # shellcheck disable=SC2086

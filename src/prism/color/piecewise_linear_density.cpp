@@ -23,12 +23,11 @@ PiecewiseLinearDensity::PiecewiseLinearDensity(double first, double step, std::v
   cdf_.back() = 1.0;
   // Guide cells: at least four per segment, and at least 1/(smallest segment mass), so that
   // no cell holds two nodes and sample() finds its segment in one step (capped at 2^16
-  // cells; past that the search loops over the few extra nodes).
+  // cells; past that, or across empty segments, the search loops over the extra nodes).
   double smallest_mass = 1.0;
   for (std::size_t n = 1; n < cdf_.size(); ++n) smallest_mass = std::min(smallest_mass, cdf_[n] - cdf_[n - 1]);
   std::size_t cells = 4 * (pdf_.size() - 1);
   if (smallest_mass > 0.0) cells = std::max(cells, static_cast<std::size_t>(std::min(65536.0, 1.0 / smallest_mass)) + 1);
-  else cells = std::max<std::size_t>(cells, 65536);
   guide_.resize(cells);
   std::size_t segment = 0;
   for (std::size_t g = 0; g < cells; ++g) {

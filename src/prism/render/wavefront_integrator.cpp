@@ -153,7 +153,7 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     record_first_hit_aovs(slot, ray, p.hit_found[slot] ? &p.hit[slot] : nullptr, p.cone_spread[slot]);
 
   if (!p.hit_found[slot]) {
-    // Escaped: only directional lights with an angular size can be hit.
+    // Escaped: only the environment and directional lights with an angular size can be hit.
     lights_.visit_escaped(ray.direction, [&](const LightSampler::EscapedHit& e) {
       float w = 1.0f;
       if (!p.prev_specular[slot] && use_nee) w = weight_bsdf_hits ? power_heuristic(p.prev_pdf[slot], e.pdf) : 0.0f;

@@ -37,7 +37,7 @@ TEST(PbrtLoader, CornellBoxMatchesBuiltIn) {
   EXPECT_EQ(pbrt.default_width, 512);
   EXPECT_EQ(pbrt.default_height, 512);
   EXPECT_EQ(pbrt.default_spp, 64);
-  EXPECT_EQ(pbrt.default_max_depth, 5);
+  EXPECT_EQ(pbrt.default_max_depth, 8);
   // Every built-in reflectance appears in the pbrt scene, and the one emitter matches.
   for (const Material& b : builtin.materials) {
     bool found = false;

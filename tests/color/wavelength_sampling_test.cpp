@@ -171,6 +171,28 @@ TEST(WavelengthSampling, FirstStratifiedSampleLandsNearTheLobeCentres) {
   }
 }
 
+// Lobe 0 (600 nm) is antithetic to the other two: as u grows its wavelength falls while
+// lobes 1 and 2 rise, for every slot count; at u = ½ all three sit on their centres.
+TEST(WavelengthSampling, ThreeCoshLobeZeroRunsAgainstTheOthers) {
+  for (int count : {3, 4, 8}) {
+    for (int slot = 0; slot < count; ++slot) {
+      const int lobe = slot % 3;
+      const double a = sample_wavelength_slot(WavelengthStrategy::cosh3, slot, slot_u(WavelengthStrategy::cosh3, 0.40, slot, count));
+      const double b = sample_wavelength_slot(WavelengthStrategy::cosh3, slot, slot_u(WavelengthStrategy::cosh3, 0.41, slot, count));
+      if (slot < 3) {  // the first copy of each lobe: no wrap-around between 0.40 and 0.41
+        if (lobe == 0) EXPECT_LT(b, a) << count << " slot " << slot;
+        else EXPECT_GT(b, a) << count << " slot " << slot;
+      }
+    }
+    const double centres[3] = {600.0, 535.0, 445.0};
+    for (int slot = 0; slot < 3; ++slot) {
+      // The centre lies at u = ½ of the tabulated lobe (rounding of the 1 nm table only).
+      const double nm = sample_wavelength_slot(WavelengthStrategy::cosh3, slot, slot_u(WavelengthStrategy::cosh3, 0.5, slot, count));
+      EXPECT_NEAR(nm, centres[slot], 0.05) << count << " slot " << slot;
+    }
+  }
+}
+
 // The unbiasedness check: the mean of the estimator (1/N) Σ S(λ_i) x̄(λ_i)/p(λ_i) over M
 // independent tuples must match ∫ S x̄ dλ. Reference: the 1 nm trapezoid integral; the
 // Monte Carlo estimator converges to the exact integral of the (piecewise-linear) data,

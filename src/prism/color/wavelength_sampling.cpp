@@ -153,12 +153,27 @@ double sample_wavelength_slot(WavelengthStrategy strategy, int slot, double u) {
   return kVisibleMinNm;
 }
 
+namespace {
+
+// The number cosh3's slot `slot` of `count` inverts (see wavelength_sampling.h): lobe 0
+// runs through u backwards; each lobe is shifted so that u = ½ lands on its centre, and
+// repeated lobes rotate evenly among themselves.
+double three_cosh_slot_u(const ThreeCoshTables& tables, double u, int slot, int count) {
+  const int lobe = slot % 3, copy = slot / 3, copies = (count - lobe + 2) / 3;
+  const double along = lobe == 0 ? 1.0 - u : u;
+  // ∈ (−1, 2): along ∈ [0, 1], |center_shift| < ½, copy/copies < 1. Wrapped without
+  // std::floor, a libm call in a build without SSE4.1.
+  double shifted = along + tables.lobes[lobe].center_shift + double(copy) / copies;
+  shifted -= double(shifted >= 1.0);
+  shifted += double(shifted < 0.0);
+  return shifted;
+}
+
+}  // namespace
+
 double slot_u(WavelengthStrategy strategy, double u, int slot, int count) {
-  double shifted = u + double(slot) / count;
-  if (strategy == WavelengthStrategy::cosh3) {
-    const int lobe = slot % 3, copy = slot / 3, copies = (count - lobe + 2) / 3;
-    shifted = u + three_cosh_lobe(lobe).center_shift + double(copy) / copies;
-  }
+  if (strategy == WavelengthStrategy::cosh3) return three_cosh_slot_u(three_cosh_tables(), u, slot, count);
+  const double shifted = u + double(slot) / count;
   return shifted - std::floor(shifted);
 }
 
@@ -174,13 +189,7 @@ void sample_three_cosh_wavelengths(double u, int count, float* wavelength_nm, fl
   const ThreeCoshTables& tables = three_cosh_tables();
   const std::array<double, 3> weights = ThreeCoshTables::lobe_weights(count);
   for (int i = 0; i < count; ++i) {
-    const int lobe = i % 3, copy = i / 3, copies = (count - lobe + 2) / 3;
-    // shifted ∈ (−1, 2): u ∈ [0, 1), |center_shift| < 1, copy/copies < 1. Wrapped without
-    // std::floor, a libm call in a build without SSE4.1.
-    double shifted = u + tables.lobes[lobe].center_shift + double(copy) / copies;
-    shifted -= double(shifted >= 1.0);
-    shifted += double(shifted < 0.0);
-    const double nm = tables.lobes[lobe].density.sample(shifted);
+    const double nm = tables.lobes[i % 3].density.sample(three_cosh_slot_u(tables, u, i, count));
     wavelength_nm[i] = static_cast<float>(nm);
     pdf[i] = static_cast<float>(tables.effective_pdf(weights, nm));
   }

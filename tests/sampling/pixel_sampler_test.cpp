@@ -99,9 +99,9 @@ TEST(PixelSampler, BounceBlocksDrawOnlyTheNumbersAskedFor) {
       const BounceSamples full = bounce_samples(k, s, depth);
       for (unsigned needs = 0; needs <= kNeedAllBounceSamples; ++needs) {
         const BounceSamples b = bounce_samples(k, s, depth, needs);
-        const bool light = needs & kNeedLight, lobe = needs & kNeedLobe, direction = needs & kNeedDirection,
-                   roulette = needs & kNeedRoulette;
-        EXPECT_EQ(b.light_select, light ? full.light_select : 0.0f);
+        const bool select = needs & kNeedLightSelect, light = needs & kNeedLightPoint, lobe = needs & kNeedLobe,
+                   direction = needs & kNeedDirection, roulette = needs & kNeedRoulette;
+        EXPECT_EQ(b.light_select, select ? full.light_select : 0.0f);
         expect_same(b.light, light ? full.light : Vec2f(0.0f, 0.0f));
         EXPECT_EQ(b.lobe, lobe ? full.lobe : 0.0f);
         expect_same(b.direction, direction ? full.direction : Vec2f(0.0f, 0.0f));

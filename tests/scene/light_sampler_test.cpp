@@ -83,6 +83,19 @@ TEST(LightSampler, ReusedSelectionSampleIsTheRescaledRemainder) {
   ASSERT_TRUE(a && b);
   EXPECT_EQ(a->position, b->position);
   EXPECT_EQ(a->pdf, b->pdf);
+
+  // uses_selection_number() says when u_select is read at all (the integrator then skips
+  // drawing it): never with reuse and every pmf ≥ 1/256 — any u_select gives the same
+  // sample — otherwise yes.
+  EXPECT_FALSE(reuse.uses_selection_number());
+  EXPECT_TRUE(plain.uses_selection_number());
+  EXPECT_TRUE(reuse_bright.uses_selection_number());
+  for (const float x : {0.0f, 0.3f, 0.77f}) {
+    const auto u0 = reuse.sample(reference, 0.0f, Vec2f(x, 0.4f), normal);
+    const auto u1 = reuse.sample(reference, 0.999f, Vec2f(x, 0.4f), normal);
+    ASSERT_TRUE(u0 && u1);
+    EXPECT_EQ(u0->position, u1->position) << x;
+  }
 }
 
 TEST(LightSampler, TrianglePdfMatchesSampling) {

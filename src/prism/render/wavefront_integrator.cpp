@@ -207,7 +207,7 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   // only the numbers this vertex reads are drawn (the others cost a hash each).
   const bool light_sampled = use_nee && !bsdf.is_specular();
   unsigned needs = 0;
-  if (light_sampled) needs |= kNeedLight;
+  if (light_sampled) needs |= lights_.uses_selection_number() ? kNeedLight : kNeedLightPoint;
   if (bsdf.uses_lobe_sample()) needs |= kNeedLobe;
   if (bsdf.uses_direction_sample()) needs |= kNeedDirection;
   if (p.depth[slot] + 1 >= settings_.russian_roulette_depth) needs |= kNeedRoulette;

@@ -110,10 +110,8 @@ template <class Dimensions>
 BounceSamples bounce_block(const Dimensions& d, int depth, unsigned needs) {
   const std::uint32_t base = kFirstBounceDimension + kDimensionsPerBounce * static_cast<std::uint32_t>(depth);
   BounceSamples b;
-  if (needs & kNeedLight) {
-    b.light_select = d.get1d(base);
-    b.light = d.get2d(base + 1);
-  }
+  if (needs & kNeedLightSelect) b.light_select = d.get1d(base);
+  if (needs & kNeedLightPoint) b.light = d.get2d(base + 1);
   if (needs & kNeedLobe) b.lobe = d.get1d(base + 3);
   if (needs & kNeedDirection) b.direction = d.get2d(base + 4);
   if (needs & kNeedRoulette) b.roulette = d.get1d(base + 6);

@@ -70,11 +70,13 @@ struct BounceSamples {
 // Which numbers of a bounce block a vertex uses. The others are left 0 and cost nothing;
 // their dimensions stay reserved, so the numbers that are drawn do not depend on the mask.
 enum BounceNeeds : unsigned {
-  kNeedLight = 1u,      // light_select and light
+  kNeedLightPoint = 1u,  // light
   kNeedLobe = 2u,
   kNeedDirection = 4u,
   kNeedRoulette = 8u,
-  kNeedAllBounceSamples = 15u,
+  kNeedLightSelect = 16u,  // light_select
+  kNeedLight = kNeedLightSelect | kNeedLightPoint,
+  kNeedAllBounceSamples = 31u,
 };
 
 // One switch over the sampler per block, not per number.

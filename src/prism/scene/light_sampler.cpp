@@ -215,6 +215,9 @@ LightSampler::LightSampler(const Scene& scene, const Bounds3f& world, const Ligh
     selection_cdf_.push_back(static_cast<float>(running / total));
   }
   selection_cdf_.back() = 1.0f;
+  uses_selection_number_ = !options_.reuse_selection_sample ||
+                           std::any_of(selection_pmf_.begin(), selection_pmf_.end(),
+                                       [](float pmf) { return pmf > 0.0f && pmf < kMinReusedSelectionPmf; });
   for (std::size_t i = 0; i < emitters_.size(); ++i)
     if (emitters_[i].kind == Kind::environment || (emitters_[i].kind == Kind::directional && emitters_[i].cos_max < 1.0f))
       escapable_emitters_.push_back(static_cast<std::uint32_t>(i));

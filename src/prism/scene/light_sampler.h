@@ -70,6 +70,10 @@ class LightSampler {
   // the receiver's cosine; pdf_triangle must be given the same one.
   std::optional<LightSample> sample(const Vec3f& reference, float u_select, Vec2f u_point,
                                     const Vec3f& receiver_normal = Vec3f(0.0f)) const;
+  // Whether sample() can read u_select at all: false when the selection number is reused
+  // (options) and every emitter is chosen with probability ≥ kMinReusedSelectionPmf; the
+  // caller may then skip drawing it.
+  bool uses_selection_number() const { return uses_selection_number_; }
 
   // Density (solid angle at `reference`, including selection) with which sample() would
   // choose the point `position` on the given emissive triangle; 0 for non-emitters and
@@ -136,6 +140,7 @@ class LightSampler {
   // What a ray leaving the scene can hit: the environment and directional lights with a
   // size. escaped() visits only these, not every emissive triangle.
   std::vector<std::uint32_t> escapable_emitters_;
+  bool uses_selection_number_ = true;
 };
 
 }  // namespace prism

@@ -53,6 +53,11 @@ TEST(PixelSampler, BlocksFollowTheFixedDimensionLayout) {
     expect_same(c.lens, sample_2d(k, s, 2));
     // The wavelength number keeps more bits (double); a float request truncates to 24.
     EXPECT_NEAR(c.wavelength, sample_1d(k, s, 4), 0x1p-24);
+    // Without a lens (pinhole) the other numbers are the same and the lens's are not drawn.
+    const CameraSamples pinhole = camera_samples(k, s, false);
+    expect_same(pinhole.pixel_jitter, c.pixel_jitter);
+    EXPECT_EQ(pinhole.wavelength, c.wavelength);
+    expect_same(pinhole.lens, Vec2f(0.0f, 0.0f));
     for (int depth : {0, 3}) {
       const std::uint32_t base = 5 + 7 * static_cast<std::uint32_t>(depth);
       const BounceSamples b = bounce_samples(k, s, depth);

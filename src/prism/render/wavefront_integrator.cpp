@@ -124,7 +124,8 @@ Spectrum<Mode> WavefrontIntegrator<Mode>::emitted_radiance(std::uint32_t materia
 template <class Mode>
 void WavefrontIntegrator<Mode>::generate(Paths& p, std::uint32_t slot, std::uint32_t sample_index) const {
   const std::uint32_t x = slot % static_cast<std::uint32_t>(width_), y = slot / static_cast<std::uint32_t>(width_);
-  const CameraSamples u = camera_samples(settings_.sampler, PixelSample{seed_, x, y, slot, sample_index});
+  const CameraSamples u =
+      camera_samples(settings_.sampler, PixelSample{seed_, x, y, slot, sample_index}, camera_.has_lens());
   p.wavelengths[slot] = colors_.sample_wavelengths(sample_index, u.wavelength);
   p.ray[slot] = camera_.generate_ray(static_cast<float>(x) + u.pixel_jitter.x, static_cast<float>(y) + u.pixel_jitter.y,
                                      u.lens);

@@ -102,8 +102,9 @@ struct ZSobolDimensions {
 };
 
 template <class Dimensions>
-CameraSamples camera_block(const Dimensions& d) {
-  return {d.get2d(kPixelJitterDimension), d.get2d(kLensDimension), d.get1d_double(kWavelengthDimension)};
+CameraSamples camera_block(const Dimensions& d, bool lens) {
+  return {d.get2d(kPixelJitterDimension), lens ? d.get2d(kLensDimension) : Vec2f(0.0f, 0.0f),
+          d.get1d_double(kWavelengthDimension)};
 }
 
 template <class Dimensions>
@@ -135,13 +136,13 @@ std::optional<SamplerKind> parse_sampler(std::string_view name) {
   return std::nullopt;
 }
 
-CameraSamples camera_samples(SamplerKind kind, const PixelSample& s) {
+CameraSamples camera_samples(SamplerKind kind, const PixelSample& s, bool lens) {
   switch (kind) {
-    case SamplerKind::sobol: return camera_block(PaddedSobolDimensions{s});
-    case SamplerKind::zsobol: return camera_block(ZSobolDimensions{s});
+    case SamplerKind::sobol: return camera_block(PaddedSobolDimensions{s}, lens);
+    case SamplerKind::zsobol: return camera_block(ZSobolDimensions{s}, lens);
     case SamplerKind::independent: break;
   }
-  return camera_block(IndependentDimensions{s});
+  return camera_block(IndependentDimensions{s}, lens);
 }
 
 BounceSamples bounce_samples(SamplerKind kind, const PixelSample& s, int depth, unsigned needs) {

@@ -79,8 +79,9 @@ enum BounceNeeds : unsigned {
   kNeedAllBounceSamples = 31u,
 };
 
-// One switch over the sampler per block, not per number.
-CameraSamples camera_samples(SamplerKind kind, const PixelSample& sample);
+// One switch over the sampler per block, not per number. Without `lens` (pinhole
+// cameras) the lens numbers are left 0 and not drawn; their dimensions stay reserved.
+CameraSamples camera_samples(SamplerKind kind, const PixelSample& sample, bool lens = true);
 BounceSamples bounce_samples(SamplerKind kind, const PixelSample& sample, int depth,
                              unsigned needs = kNeedAllBounceSamples);
 

@@ -14,6 +14,7 @@ class PinholeCamera {
   Ray generate_ray(float film_x, float film_y, Vec2f u_lens = Vec2f(0.5f, 0.5f)) const;
   // Angle subtended by one pixel at the image centre: the ray cone's spread (texture LOD).
   float pixel_spread_angle() const { return 2.0f * scale_y_ * inv_height_; }
+  bool has_lens() const { return aperture_radius_ > 0.0f; }  // generate_ray reads u_lens
 
  private:
   Transform camera_to_world_;

@@ -49,22 +49,31 @@ BENCHMARK(BM_EmbreeIncoherentClosestHit);
 // The same rays as a queue of 1024 slots (the integrator's grain) through
 // EmbreeAccel::intersect_slots / occluded_slots (Embree ray streams, incoherent flag):
 // what the integrator's stages 1 and 3 cost per ray, against the one-ray loop above.
+// run_queues hands `trace` successive queues of consecutive slots over `ray_count` rays
+// (a power of two) and counts every slot as one item.
+template <class Trace>
+void run_queues(benchmark::State& state, std::size_t ray_count, Trace&& trace) {
+  constexpr std::size_t kQueue = 1024;
+  std::vector<std::uint32_t> slots(kQueue);
+  std::size_t first = 0;
+  for (auto _ : state) {
+    for (std::size_t i = 0; i < kQueue; ++i) slots[i] = static_cast<std::uint32_t>(first + i);
+    trace(slots.data(), kQueue);
+    first = (first + kQueue) & (ray_count - 1);
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kQueue));
+}
+
 void BM_EmbreeStreamClosestHit(benchmark::State& state) {
   const prism::Scene scene = prism::make_cornell_box();
   const prism::EmbreeAccel accel(scene);
   const std::vector<prism::Ray> rays = secondary_rays(accel);
-  constexpr std::size_t kQueue = 1024;
-  std::vector<std::uint32_t> slots(kQueue);
   std::vector<prism::Hit> hits(rays.size());
   std::vector<std::uint8_t> found(rays.size());
-  std::size_t first = 0;
-  for (auto _ : state) {
-    for (std::size_t i = 0; i < kQueue; ++i) slots[i] = static_cast<std::uint32_t>(first + i);
-    accel.intersect_slots(rays.data(), slots.data(), kQueue, hits.data(), found.data());
+  run_queues(state, rays.size(), [&](const std::uint32_t* slots, std::size_t count) {
+    accel.intersect_slots(rays.data(), slots, count, hits.data(), found.data());
     benchmark::DoNotOptimize(found.data());
-    first = (first + kQueue) & (rays.size() - 1);
-  }
-  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kQueue));
+  });
 }
 BENCHMARK(BM_EmbreeStreamClosestHit);
 
@@ -92,17 +101,11 @@ void BM_EmbreeStreamOccluded(benchmark::State& state) {
   const prism::Scene scene = prism::make_cornell_box();
   const prism::EmbreeAccel accel(scene);
   const std::vector<prism::Ray> rays = bounded(accel, secondary_rays(accel));
-  constexpr std::size_t kQueue = 1024;
-  std::vector<std::uint32_t> slots(kQueue);
   std::vector<std::uint8_t> pending(rays.size(), 1), blocked(rays.size());
-  std::size_t first = 0;
-  for (auto _ : state) {
-    for (std::size_t i = 0; i < kQueue; ++i) slots[i] = static_cast<std::uint32_t>(first + i);
-    accel.occluded_slots(rays.data(), slots.data(), kQueue, pending.data(), blocked.data());
+  run_queues(state, rays.size(), [&](const std::uint32_t* slots, std::size_t count) {
+    accel.occluded_slots(rays.data(), slots, count, pending.data(), blocked.data());
     benchmark::DoNotOptimize(blocked.data());
-    first = (first + kQueue) & (rays.size() - 1);
-  }
-  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(kQueue));
+  });
 }
 BENCHMARK(BM_EmbreeStreamOccluded);
 

@@ -16,6 +16,9 @@
 namespace prism::loaders {
 namespace {
 
+using test::append;
+using test::glb;
+
 std::string base64(const std::string& bytes) {
   static const char* k = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
@@ -33,11 +36,6 @@ std::string base64(const std::string& bytes) {
     out += {k[v >> 18], k[(v >> 12) & 63], k[(v >> 6) & 63], '='};
   }
   return out;
-}
-
-template <typename T>
-void append(std::string& s, std::initializer_list<T> values) {
-  for (T v : values) s.append(reinterpret_cast<const char*>(&v), sizeof(T));
 }
 
 // A unit quad in the xy plane: positions (48 B), uvs (32 B), ushort indices (12 B).
@@ -69,19 +67,6 @@ std::string quad_document(const std::string& buffer_uri, const std::string& extr
             {"camera": 0, "translation": [0, 0, 5]}],
   "scenes": [{"nodes": [0, 1, 3]}]
 })";
-}
-
-std::string glb(const std::string& json, const std::string& bin) {
-  std::string j = json, b = bin;
-  while (j.size() % 4) j += ' ';
-  while (b.size() % 4) b += '\0';
-  std::string out = "glTF";
-  append<std::uint32_t>(out, {2, static_cast<std::uint32_t>(12 + 8 + j.size() + 8 + b.size())});
-  append<std::uint32_t>(out, {static_cast<std::uint32_t>(j.size()), 0x4E4F534Au});
-  out += j;
-  append<std::uint32_t>(out, {static_cast<std::uint32_t>(b.size()), 0x004E4942u});
-  out += b;
-  return out;
 }
 
 Scene parse(const std::string& text, const std::filesystem::path& dir = {}, LoadOptions options = {}) {

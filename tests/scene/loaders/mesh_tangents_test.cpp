@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "loader_test_files.h"
 #include "prism/render/surface_interaction.h"
 #include "prism/core/error.h"
 #include "prism/scene/flatten_instances.h"
@@ -16,6 +17,8 @@
 
 namespace prism::loaders {
 namespace {
+
+using test::append;
 
 // Float rounding of a few products and one normalisation: 1e-6 is ~10 ε of unit values.
 constexpr float kTolerance = 1e-6f;
@@ -126,11 +129,6 @@ TEST(MeshTangents, MeshChecksRefuseBadSigns) {
   EXPECT_EQ(check_and_clean_mesh(m, "quad"), 0u);
 }
 
-template <typename T>
-void append(std::string& s, std::initializer_list<T> values) {
-  for (T v : values) s.append(reinterpret_cast<const char*>(&v), sizeof(T));
-}
-
 // A GLB of the +z quad with normals and uvs (u right, v down), and optionally TANGENT
 // with w = −1.
 std::string quad_glb(bool with_tangents) {
@@ -141,7 +139,7 @@ std::string quad_glb(bool with_tangents) {
   append<std::uint16_t>(bin, {0, 1, 2, 0, 2, 3, 0, 0});      // 16 B indices (padded)
   append<float>(bin, {0, 1, 0, -1, 0, 1, 0, -1, 0, 1, 0, -1, 0, 1, 0, -1});  // 64 B tangents
   const std::string tangent = with_tangents ? R"(, "TANGENT": 4)" : "";
-  std::string json = R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 208}],
+  const std::string json = R"({"asset": {"version": "2.0"}, "buffers": [{"byteLength": 208}],
   "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48}, {"buffer": 0, "byteOffset": 48, "byteLength": 48},
                   {"buffer": 0, "byteOffset": 96, "byteLength": 32}, {"buffer": 0, "byteOffset": 128, "byteLength": 12},
                   {"buffer": 0, "byteOffset": 144, "byteLength": 64}],
@@ -153,13 +151,7 @@ std::string quad_glb(bool with_tangents) {
   "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2)" +
                      tangent + R"(}, "indices": 3}]}],
   "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]})";
-  while (json.size() % 4) json += ' ';
-  std::string out = "glTF";
-  append<std::uint32_t>(out, {2, static_cast<std::uint32_t>(12 + 8 + json.size() + 8 + bin.size())});
-  append<std::uint32_t>(out, {static_cast<std::uint32_t>(json.size()), 0x4E4F534Au});
-  out += json;
-  append<std::uint32_t>(out, {static_cast<std::uint32_t>(bin.size()), 0x004E4942u});
-  return out + bin;
+  return test::glb(json, bin);
 }
 
 Scene parse_glb(const std::string& bytes) {

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <stdexcept>
 #include <cstdio>
 #include <string>
 #include <vector>
@@ -150,6 +151,31 @@ TEST(WavelengthSampling, ThreeLobeEffectivePdfIsNormalisedAndMatchesAFineHistogr
     const test::ChiSquareResult r = test::chi_square_test(observed, expected);
     EXPECT_GT(r.p_value, 1e-3) << "cosh3 N=" << count << ": " << r.message;
   }
+}
+
+// The one-call cosh3 tuple looks its per-slot constants up from a table per count; it must
+// give bit for bit the wavelengths and pdfs of the slot-by-slot definition, for every count
+// it accepts, and refuse the counts it has no table for.
+TEST(WavelengthSampling, ThreeCoshTupleEqualsTheSlotBySlotDefinition) {
+  Pcg32 rng(3, 5);
+  for (int count = 1; count <= 8; ++count) {
+    for (int t = 0; t < 2000; ++t) {
+      const double u = t == 0 ? 0.0 : (t == 1 ? 0.5 : rng.next_double());
+      std::array<float, 8> nm{}, pdf{};
+      sample_three_cosh_wavelengths(u, count, nm.data(), pdf.data());
+      for (int i = 0; i < count; ++i) {
+        const double expected_nm =
+            sample_wavelength_slot(WavelengthStrategy::cosh3, i, slot_u(WavelengthStrategy::cosh3, u, i, count));
+        ASSERT_EQ(nm[static_cast<std::size_t>(i)], static_cast<float>(expected_nm)) << count << " " << i << " " << u;
+        ASSERT_EQ(pdf[static_cast<std::size_t>(i)],
+                  static_cast<float>(wavelength_pdf(WavelengthStrategy::cosh3, count, expected_nm)))
+            << count << " " << i << " " << u;
+      }
+    }
+  }
+  std::array<float, 9> nm{}, pdf{};
+  EXPECT_THROW(sample_three_cosh_wavelengths(0.5, 0, nm.data(), pdf.data()), std::invalid_argument);
+  EXPECT_THROW(sample_three_cosh_wavelengths(0.5, 9, nm.data(), pdf.data()), std::invalid_argument);
 }
 
 TEST(WavelengthSampling, HeroPartnersAreEvenlyRotated) {

@@ -5,6 +5,8 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "prism/color/piecewise_linear_density.h"
@@ -93,15 +95,37 @@ struct TabulatedLobe {
 };
 
 struct ThreeCoshTables {
+  // What a tuple of `count` wavelengths does per slot, worked out once per count: which
+  // lobe, which way it runs through u, and its shift (see three_cosh_slot_u below).
+  struct SlotPlan {
+    const PiecewiseLinearDensity* density;
+    bool reversed;
+    double center_shift, rotation;  // added to u in that order, so the sum rounds as it always did
+  };
+  static constexpr int kMaxTupleWavelengths = 8;  // the renderer's largest N
+  struct TuplePlan {
+    std::array<double, 3> weights;
+    std::array<SlotPlan, kMaxTupleWavelengths> slots;
+  };
   TabulatedLobe lobes[3] = {TabulatedLobe(kThreeCoshLobes[0]), TabulatedLobe(kThreeCoshLobes[1]),
                             TabulatedLobe(kThreeCoshLobes[2])};
   // The three lobes' node values side by side: the effective pdf of a wavelength needs all
   // three at the same node, so one index computation and one cache line serve them.
   std::vector<std::array<double, 3>> node_pdfs;
+  std::array<TuplePlan, kMaxTupleWavelengths + 1> plans{};  // by count
 
   ThreeCoshTables() {
     for (double nm = kVisibleMinNm; nm <= kVisibleMaxNm; nm += kLobeTableStepNm)
       node_pdfs.push_back({lobes[0].density.pdf(nm), lobes[1].density.pdf(nm), lobes[2].density.pdf(nm)});
+    for (int count = 1; count <= kMaxTupleWavelengths; ++count) {
+      TuplePlan& plan = plans[static_cast<std::size_t>(count)];
+      plan.weights = lobe_weights(count);
+      for (int slot = 0; slot < count; ++slot) plan.slots[static_cast<std::size_t>(slot)] = slot_plan(slot, count);
+    }
+  }
+  SlotPlan slot_plan(int slot, int count) const {
+    const int lobe = slot % 3, copy = slot / 3, copies = (count - lobe + 2) / 3;
+    return {&lobes[lobe].density, lobe == 0, lobes[lobe].center_shift, double(copy) / copies};
   }
   // Weight of each lobe's pdf in (1/count) Σ_slots p_slot: slot i uses lobe i mod 3, so
   // lobe l serves (count − l + 2)/3 of the slots.
@@ -155,15 +179,14 @@ double sample_wavelength_slot(WavelengthStrategy strategy, int slot, double u) {
 
 namespace {
 
-// The number cosh3's slot `slot` of `count` inverts (see wavelength_sampling.h): lobe 0
-// runs through u backwards; each lobe is shifted so that u = ½ lands on its centre, and
-// repeated lobes rotate evenly among themselves.
-double three_cosh_slot_u(const ThreeCoshTables& tables, double u, int slot, int count) {
-  const int lobe = slot % 3, copy = slot / 3, copies = (count - lobe + 2) / 3;
-  const double along = lobe == 0 ? 1.0 - u : u;
-  // ∈ (−1, 2): along ∈ [0, 1], |center_shift| < ½, copy/copies < 1. Wrapped without
+// The number cosh3's slot inverts (see wavelength_sampling.h): lobe 0 runs through u
+// backwards; each lobe is shifted so that u = ½ lands on its centre, and repeated lobes
+// rotate evenly among themselves.
+double three_cosh_slot_u(const ThreeCoshTables::SlotPlan& slot, double u) {
+  const double along = slot.reversed ? 1.0 - u : u;
+  // ∈ (−1, 2): along ∈ [0, 1], |center_shift| < ½, rotation < 1. Wrapped without
   // std::floor, a libm call in a build without SSE4.1.
-  double shifted = along + tables.lobes[lobe].center_shift + double(copy) / copies;
+  double shifted = along + slot.center_shift + slot.rotation;
   shifted -= double(shifted >= 1.0);
   shifted += double(shifted < 0.0);
   return shifted;
@@ -172,7 +195,7 @@ double three_cosh_slot_u(const ThreeCoshTables& tables, double u, int slot, int 
 }  // namespace
 
 double slot_u(WavelengthStrategy strategy, double u, int slot, int count) {
-  if (strategy == WavelengthStrategy::cosh3) return three_cosh_slot_u(three_cosh_tables(), u, slot, count);
+  if (strategy == WavelengthStrategy::cosh3) return three_cosh_slot_u(three_cosh_tables().slot_plan(slot, count), u);
   const double shifted = u + double(slot) / count;
   return shifted - std::floor(shifted);
 }
@@ -184,14 +207,19 @@ double wavelength_pdf(WavelengthStrategy strategy, int count, double wavelength_
 }
 
 void sample_three_cosh_wavelengths(double u, int count, float* wavelength_nm, float* pdf) {
-  // The same slot_u / sample_wavelength_slot / wavelength_pdf as the generic path, with the
-  // tables fetched once and the per-lobe weights computed once per tuple.
+  // The same slot_u / sample_wavelength_slot / wavelength_pdf as the generic path, with
+  // every per-slot constant (lobe, direction, shift, MIS weights) looked up from the
+  // count's plan instead of recomputed with integer and floating-point divisions.
   const ThreeCoshTables& tables = three_cosh_tables();
-  const std::array<double, 3> weights = ThreeCoshTables::lobe_weights(count);
+  if (count < 1 || count > ThreeCoshTables::kMaxTupleWavelengths)
+    throw std::invalid_argument("sample_three_cosh_wavelengths: " + std::to_string(count) +
+                                " wavelengths per tuple (1 to 8 are planned)");
+  const ThreeCoshTables::TuplePlan& plan = tables.plans[static_cast<std::size_t>(count)];
   for (int i = 0; i < count; ++i) {
-    const double nm = tables.lobes[i % 3].density.sample(three_cosh_slot_u(tables, u, i, count));
+    const ThreeCoshTables::SlotPlan& slot = plan.slots[static_cast<std::size_t>(i)];
+    const double nm = slot.density->sample(three_cosh_slot_u(slot, u));
     wavelength_nm[i] = static_cast<float>(nm);
-    pdf[i] = static_cast<float>(tables.effective_pdf(weights, nm));
+    pdf[i] = static_cast<float>(tables.effective_pdf(plan.weights, nm));
   }
 }
 

@@ -89,6 +89,8 @@ double slot_u(WavelengthStrategy strategy, double u, int slot, int count);
 
 // cosh3's sample_wavelengths in one call (the generic loop below costs three calls per
 // wavelength): wavelength_nm[i], pdf[i] for i < count, the same values as that loop.
+// count ∈ [1, 8] (std::invalid_argument otherwise): the per-count slot constants are
+// tabulated for the renderer's tuple sizes.
 void sample_three_cosh_wavelengths(double u, int count, float* wavelength_nm, float* pdf);
 
 template <int N>

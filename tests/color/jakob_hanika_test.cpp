@@ -2,6 +2,7 @@
 // samples must match), and the RGB → spectrum → XYZ → RGB round trip in ΔE*ab.
 #include <cmath>
 #include <algorithm>
+#include <array>
 #include <cstdio>
 #include <vector>
 #include <string>
@@ -14,6 +15,7 @@
 #include "prism/color/illuminants.h"
 #include "prism/color/jakob_hanika_fit.h"
 #include "prism/color/jakob_hanika_table.h"
+#include "prism/color/sigmoid_polynomial.h"
 
 namespace prism::color {
 namespace {
@@ -152,6 +154,89 @@ TEST(JakobHanikaTable, GreysAreExactAndUnknownSpacesAreRejected) {
   EXPECT_DOUBLE_EQ(JakobHanikaTable::get("srgb").lookup({1, 1, 1})(550.0), 1.0);
   EXPECT_THROW(JakobHanikaTable::get("display-p3"), UsageError);
   EXPECT_THROW(JakobHanikaTable::get("nonsense"), UsageError);
+}
+
+// The renderer's single-precision sigmoid against the definition in long double, written
+// in the same cancellation-free tail form min(S, 1 − S) = 1/(2r(r + |x|)) so the reference
+// is exact to ~1e-19 on both sides. Tolerance: the float path rounds x once (the tail's
+// relative sensitivity to x is at most 2, so ≤ 2 × 6e-8) and then makes six roundings of
+// ≤ 6e-8 each, ≤ 5e-7 in all, asserted as 1e-6 relative on the tail; on the bright side
+// S = 1 − tail carries that tail error and is rounded once more, to float's step at 1
+// (1.2e-7 absolute).
+TEST(JakobHanikaSigmoid, SinglePrecisionFormIsAccurateOnBothSides) {
+  auto reference_tail = [](long double x) {
+    const long double r = std::sqrt(1.0L + x * x);
+    return 1.0L / (2.0L * r * (r + std::fabs(x)));
+  };
+  int checked = 0;
+  for (double magnitude = 1e-6; magnitude < 1e6; magnitude *= 1.07) {
+    for (const double x : {magnitude, -magnitude}) {
+      const float xf = static_cast<float>(x);
+      const float s = sigmoid_jakob_hanika_float(xf);
+      const long double tail = reference_tail(xf);  // the error of rounding x is asserted below
+      if (x < 0.0) {
+        ASSERT_NEAR(s, static_cast<double>(tail), 1e-6 * static_cast<double>(tail)) << x;
+      } else {
+        ASSERT_NEAR(s, static_cast<double>(1.0L - tail), 1e-6 * static_cast<double>(tail) + 1.2e-7) << x;
+      }
+      // The double definition agrees wherever it is itself accurate (no cancellation).
+      if (std::abs(x) < 10.0) {
+        ASSERT_NEAR(s, sigmoid_jakob_hanika(x), 1e-6 * sigmoid_jakob_hanika(x) + 1.2e-7) << x;
+      }
+      ++checked;
+    }
+  }
+  EXPECT_GT(checked, 400);
+  // The constant spectra 0 and 1 (c₂ = ∓∞) stay exactly 0 and 1; x = 0 is ½; NaN is NaN.
+  EXPECT_EQ(sigmoid_jakob_hanika_float(-INFINITY), 0.0f);
+  EXPECT_EQ(sigmoid_jakob_hanika_float(INFINITY), 1.0f);
+  EXPECT_EQ(sigmoid_jakob_hanika_float(0.0f), 0.5f);
+  EXPECT_TRUE(std::isnan(sigmoid_jakob_hanika_float(NAN)));
+}
+
+// evaluate_sigmoid_polynomial (the renderer's N-wavelength path) against operator() for
+// every table's colours across the visible range: within the tolerance above, plus 1e-12
+// absolute where operator()'s own ½ + x/(2r) cancels (it keeps 1e-16 absolute there).
+TEST(JakobHanikaSigmoid, NWavelengthEvaluationMatchesTheDefinition) {
+  constexpr int kLevels = 9;
+  int checked = 0;
+  for (const std::string name : {"srgb", "acescg", "rec2020"}) {
+    const JakobHanikaTable& table = JakobHanikaTable::get(name);
+    for (int a = 0; a < kLevels; ++a)
+      for (int b = 0; b < kLevels; ++b)
+        for (int c = 0; c < kLevels; ++c) {
+          const SigmoidPolynomial poly = table.lookup(Vec3d(a, b, c) / double(kLevels - 1));
+          for (float first = 380.0f; first <= 780.0f; first += 37.0f) {
+            const std::array<float, 4> nm{first, std::fmod(first + 100.3f, 400.0f) + 380.0f,
+                                          std::fmod(first + 201.7f, 400.0f) + 380.0f, 780.0f - (first - 380.0f)};
+            const std::array<float, 4> scaled = evaluate_sigmoid_polynomial(poly, nm, 2.5f);
+            const std::array<float, 4> s = evaluate_sigmoid_polynomial(poly, nm);
+            // The 3- and 8-wavelength forms (the renderer's other N) give the same bits,
+            // and so does the scalar sigmoid (the SIMD path makes the same operations).
+            const std::array<float, 3> three = evaluate_sigmoid_polynomial(poly, std::array<float, 3>{nm[0], nm[1], nm[2]});
+            const std::array<float, 8> eight = evaluate_sigmoid_polynomial(
+                poly, std::array<float, 8>{nm[0], nm[1], nm[2], nm[3], nm[3], nm[2], nm[1], nm[0]});
+            for (std::size_t i = 0; i < 4; ++i) {
+              const double nm_i = nm[i];
+              ASSERT_EQ(s[i], sigmoid_jakob_hanika_float(static_cast<float>((poly.c0 * nm_i + poly.c1) * nm_i + poly.c2)));
+              ASSERT_EQ(eight[i], s[i]);
+              ASSERT_EQ(eight[7 - i], s[i]);
+              if (i < 3) {
+                ASSERT_EQ(three[i], s[i]);
+              }
+            }
+            for (std::size_t i = 0; i < 4; ++i) {
+              const double expected = poly(nm[i]);
+              const double tolerance =
+                  expected < 0.5 ? 1e-6 * expected + 1e-12 : 1.2e-7 + 1e-6 * (1.0 - expected);
+              ASSERT_NEAR(s[i], expected, tolerance) << name << " " << a << b << c << " at " << nm[i] << " nm";
+              ASSERT_EQ(scaled[i], 2.5f * s[i]);
+              ++checked;
+            }
+          }
+        }
+  }
+  EXPECT_EQ(checked, 3 * 9 * 9 * 9 * 11 * 4);
 }
 
 }  // namespace

@@ -69,8 +69,8 @@ Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::reflectance(const Vec3f
     const color::MallettYukselSpectrum my{Vec3d(srgb)};
     for (int i = 0; i < N; ++i) s[i] = static_cast<float>(my(w.wavelength_nm[i]));
   } else {
-    const color::SigmoidPolynomial c = color::JakobHanikaTable::get("srgb").lookup(Vec3d(srgb));
-    for (int i = 0; i < N; ++i) s[i] = static_cast<float>(c(w.wavelength_nm[i]));
+    s.values = color::evaluate_sigmoid_polynomial(color::JakobHanikaTable::get("srgb").lookup(Vec3d(srgb)),
+                                                  w.wavelength_nm);
   }
   return s;
 }
@@ -83,8 +83,7 @@ Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::base_color(std::uint32_
     const color::MallettYukselSpectrum my(base_color_rgb_[material]);
     for (int i = 0; i < N; ++i) s[i] = static_cast<float>(my(w.wavelength_nm[i]));
   } else {
-    const color::SigmoidPolynomial& c = base_color_jh_[material];
-    for (int i = 0; i < N; ++i) s[i] = static_cast<float>(c(w.wavelength_nm[i]));
+    s.values = color::evaluate_sigmoid_polynomial(base_color_jh_[material], w.wavelength_nm);
   }
   return s;
 }
@@ -93,7 +92,7 @@ template <int N>
 Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::emission(std::uint32_t emitter, const Wavelengths<Mode>& w) const {
   Spectrum<Mode> s;
   const color::EmissionSpectrum& e = emitters_[emitter];
-  for (int i = 0; i < N; ++i) s[i] = static_cast<float>(e(w.wavelength_nm[i]));
+  s.values = color::evaluate_sigmoid_polynomial(e.shape, w.wavelength_nm, static_cast<float>(e.scale));
   return s;
 }
 
@@ -105,7 +104,7 @@ Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::rgb_radiance(const Vec3
   const color::SigmoidPolynomial c = color::JakobHanikaTable::get("srgb").lookup(Vec3d(rgb / (2.0f * m)));
   // 683 ∫ L ȳ ≈ Y(rgb): L(λ) = 2m s(λ) / (683 ∫ ȳ), exact for greys (s = ½).
   const double k = 2.0 * m / (color::kMaxLuminousEfficacyLmPerW * color::cie1931_y_integral());
-  for (int i = 0; i < N; ++i) s[i] = static_cast<float>(k * c(w.wavelength_nm[i]));
+  s.values = color::evaluate_sigmoid_polynomial(c, w.wavelength_nm, static_cast<float>(k));
   return s;
 }
 

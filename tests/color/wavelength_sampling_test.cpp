@@ -26,10 +26,20 @@ namespace {
 const double kAlpha = test::sidak_alpha(0.01, 7);
 constexpr int kBins = 80;  // 5 nm bins
 
-// ∫ over [a, b] of a slot pdf by Simpson's rule on 50 panels: the pdfs are smooth (cosh
-// lobes) or constant, so the quadrature error (~1e-12 relative) is far below the
-// statistical resolution of the test.
+// cosh3 samples and evaluates a tabulated density: each lobe constant on every whole-nm
+// cell (wavelength_sampling.h). The midpoint sum over whole-nm cells is then exact.
+double whole_nm_cell_sum(const std::function<double(double)>& f, double from_nm, double to_nm) {
+  double sum = 0.0;
+  for (double nm = from_nm; nm < to_nm; nm += 1.0) sum += f(nm + 0.5);
+  return sum;
+}
+
+// ∫ over [a, b] of a slot pdf: for cosh3 the exact cell sum (a, b whole nm); otherwise
+// Simpson's rule on 50 panels: the pdfs are smooth (cosh lobe) or constant, so the
+// quadrature error (~1e-12 relative) is far below the statistical resolution of the test.
 double integrate_pdf(WavelengthStrategy s, int slot, double a, double b) {
+  if (s == WavelengthStrategy::cosh3)
+    return whole_nm_cell_sum([&](double nm) { return wavelength_slot_pdf(s, slot, nm); }, a, b);
   constexpr int panels = 50;
   const double h = (b - a) / panels;
   double sum = wavelength_slot_pdf(s, slot, a) + wavelength_slot_pdf(s, slot, b);
@@ -93,43 +103,40 @@ TEST(WavelengthSampling, PdfsAreNormalisedOnTheVisibleRange) {
     EXPECT_NEAR(kRadziszewskiLobe.cdf(kRadziszewskiLobe.sample(u)), u, 1e-12);
 }
 
-// cosh3 samples and evaluates a tabulated density: each lobe linear between whole-nm
-// nodes (wavelength_sampling.h). The trapezoid rule on whole nanometres is then exact.
-double trapezoid_whole_nm(const std::function<double(double)>& f, double from_nm, double to_nm) {
-  double sum = 0.0;
-  for (double nm = from_nm; nm < to_nm; nm = std::floor(nm) + 1.0) {
-    const double next = std::min(std::floor(nm) + 1.0, to_nm);
-    sum += 0.5 * (next - nm) * (f(nm) + f(next));
-  }
-  return sum;
-}
-
 TEST(WavelengthSampling, ThreeLobeTableIsInvertedExactlyAndStaysCloseToTheCoshLobes) {
   for (int slot = 0; slot < 3; ++slot) {
     auto pdf = [slot](double nm) { return wavelength_slot_pdf(WavelengthStrategy::cosh3, slot, nm); };
-    // Exact inversion: the tabulated CDF at the sampled wavelength is u (rounding only).
+    // Exact inversion: the table's CDF at the sampled wavelength is u, up to rounding: u and
+    // the CDF are floats (6e-8), and λ is a float near 600 nm (step 6e-5 nm) times a density
+    // ≤ 0.005/nm (3e-7). Bound 1e-6.
     for (double u : {0.0, 1e-7, 0.013, 0.25, 0.5, 0.77, 0.999, 1.0 - 1e-12}) {
       const double nm = sample_wavelength_slot(WavelengthStrategy::cosh3, slot, u);
-      EXPECT_NEAR(trapezoid_whole_nm(pdf, kVisibleMinNm, nm), u, 1e-12) << "slot " << slot << " u " << u;
+      const double whole = std::floor(nm);
+      const double cdf = whole_nm_cell_sum(pdf, kVisibleMinNm, whole) + (nm - whole) * pdf(whole + 0.5);
+      EXPECT_NEAR(cdf, u, 1e-6) << "slot " << slot << " u " << u;
     }
-    // Linear interpolation of the lobe at 1 nm: relative error ≤ h²·max|p''/p|/8 with
-    // |p''/p| ≤ 4a² for p ∝ 1/cosh²(a(λ − B)), i.e. ≤ 3e-5 for a = 0.0078/nm; the
-    // renormalisation adds the same order. Bound 1e-4 (the chi-square tests above compare
-    // against the tabulated pdf itself, so this is what keeps the table honest).
+    // Each cell holds the lobe's exact mass (float rounding, 1e-7 of the total), so the
+    // table is the lobe averaged over each nanometre; within a cell ln p varies by at most
+    // 2a · ½ nm = a, so the average is within e^a − 1 (0.79 % for a = 0.0078/nm) of the
+    // lobe at every point of the cell. The chi-square tests above compare against the
+    // tabulated pdf itself, so this is what keeps the table honest.
     const CoshLobe& lobe = kThreeCoshLobes[static_cast<std::size_t>(slot)];
+    for (double nm = kVisibleMinNm; nm < kVisibleMaxNm; nm += 1.0)
+      ASSERT_NEAR(pdf(nm + 0.5), lobe.cdf(nm + 1.0) - lobe.cdf(nm), 1e-7) << "slot " << slot << " cell " << nm;
+    const double bound = std::expm1(lobe.a_per_nm);
     for (double nm = kVisibleMinNm; nm <= kVisibleMaxNm; nm += 0.37)
-      EXPECT_NEAR(pdf(nm), lobe.pdf(nm), 1e-4 * lobe.pdf(nm)) << "slot " << slot << " at " << nm;
+      EXPECT_NEAR(pdf(nm), lobe.pdf(nm), bound * lobe.pdf(nm)) << "slot " << slot << " at " << nm;
   }
 }
 
 // The effective pdf stored with each wavelength integrates to 1 (exactly, by the whole-nm
-// trapezoid rule) and matches a fine histogram of the pooled wavelengths: N·p̄ is their
+// cell sum; float rounding of 400 cells, 1e-6) and matches a fine histogram of the pooled wavelengths: N·p̄ is their
 // density. 400 bins of 1 nm, 600 000+ wavelengths (≥ 600 expected per bin); its own
 // false-alarm probability 1e-3, on top of the file's 1 % for the tests above.
 TEST(WavelengthSampling, ThreeLobeEffectivePdfIsNormalisedAndMatchesAFineHistogram) {
   for (int count : {3, 4}) {
     auto pdf = [count](double nm) { return wavelength_pdf(WavelengthStrategy::cosh3, count, nm); };
-    EXPECT_NEAR(trapezoid_whole_nm(pdf, kVisibleMinNm, kVisibleMaxNm), 1.0, 1e-12) << count;
+    EXPECT_NEAR(whole_nm_cell_sum(pdf, kVisibleMinNm, kVisibleMaxNm), 1.0, 1e-6) << count;
     constexpr int kFineBins = 400;
     constexpr long kTuples = 200000;
     std::vector<double> observed(kFineBins, 0.0), expected(kFineBins, 0.0);
@@ -147,7 +154,7 @@ TEST(WavelengthSampling, ThreeLobeEffectivePdfIsNormalisedAndMatchesAFineHistogr
     }
     for (int b = 0; b < kFineBins; ++b)
       expected[static_cast<std::size_t>(b)] =
-          double(kTuples) * count * trapezoid_whole_nm(pdf, kVisibleMinNm + b, kVisibleMinNm + b + 1);
+          double(kTuples) * count * whole_nm_cell_sum(pdf, kVisibleMinNm + b, kVisibleMinNm + b + 1);
     const test::ChiSquareResult r = test::chi_square_test(observed, expected);
     EXPECT_GT(r.p_value, 1e-3) << "cosh3 N=" << count << ": " << r.message;
   }

@@ -56,6 +56,34 @@ TEST(PiecewiseConstant, OneDimensionalDiscreteMatchesPmf) {
   EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
 }
 
+// The guide table (build_guide_table) must find exactly the cells the binary search
+// finds: for random u, for u at and just below/above every CDF step (where an off-by-one
+// would show), across zero-mass cells, and at 0 and 1; sample_continuous then agrees bit
+// for bit. Also with a tiny cell, where the guide needs more entries than 4 per cell.
+TEST(PiecewiseConstant, GuideTableFindsTheSameCellsAsTheSearch) {
+  std::vector<float> tiny = kF;
+  tiny[3] = 1e-6f;
+  for (const std::vector<float>& f : {kF, tiny}) {
+    const PiecewiseConstant1D searched(f, 380.0f, 780.0f);
+    PiecewiseConstant1D guided = searched;
+    guided.build_guide_table();
+    std::vector<float> us = {0.0f, 1.0f, std::nextafter(1.0f, 0.0f), 0.5f};
+    for (int i = 0; i <= searched.size(); ++i) {
+      const float c = searched.cdf(i);
+      us.insert(us.end(), {c, std::nextafter(c, 0.0f), std::nextafter(c, 1.0f)});
+    }
+    Pcg32 rng(5, 6);
+    for (int i = 0; i < 100000; ++i) us.push_back(rng.next_float());
+    for (const float u : us) {
+      const auto a = searched.sample_continuous(u), b = guided.sample_continuous(u);
+      ASSERT_EQ(a.index, b.index) << u;
+      ASSERT_EQ(a.x, b.x) << u;
+      ASSERT_EQ(a.pdf, b.pdf) << u;
+      ASSERT_EQ(searched.sample_discrete(u).index, guided.sample_discrete(u).index) << u;
+    }
+  }
+}
+
 TEST(PiecewiseConstant, DegenerateAndInvalidInputs) {
   const std::vector<float> zeros(5, 0.0f);
   const PiecewiseConstant1D u(zeros);

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "prism/color/piecewise_linear_density.h"
 #include "prism/core/error.h"
+#include "prism/sampling/piecewise_constant.h"
 
 namespace prism::color {
 
@@ -64,33 +64,34 @@ const PreparedLobe& radziszewski_lobe() {
   return lobe;
 }
 
-// The cosh3 lobes, tabulated (see wavelength_sampling.h): each lobe's density at 1 nm
-// nodes, linear in between, sampled by exact inversion of that piecewise-linear density.
-// The analytic inverse (atanh) plus three cosh per wavelength for the MIS pdf cost ≈ 265 ns
-// per 4-wavelength sample; the table needs a guide-table lookup, one sqrt and three
-// linear interpolations at a shared node index. The 1 nm spacing keeps the table within
-// 3e-5 (relative) of the cosh lobe (interpolation error h²·max|p''|/8 with p''/p ≤ 2a²),
-// and puts the kinks on whole nanometres.
-constexpr double kLobeTableStepNm = 1.0;
+// The cosh3 lobes, tabulated (see wavelength_sampling.h): each lobe's exact mass in every
+// 1 nm cell of [380, 780] nm (its CDF is closed-form), sampled and evaluated as the
+// piecewise-constant density with those masses, i.e. the lobe averaged over each
+// nanometre (within ±0.4 % of the cosh inside a cell: |p'/p| ≤ 2a = 0.0156/nm, over
+// ±½ nm). The analytic inverse (atanh) plus three cosh per wavelength for the MIS pdf cost
+// ≈ 265 ns per 4-wavelength sample; a piecewise-linear table with exact quadratic
+// inversion 73 ns; this table a guide-table lookup, one multiply and one load of the
+// effective pdf per wavelength (BENCHMARKS.md "limit").
+constexpr int kLobeCells = 400;  // 1 nm each
 
 struct TabulatedLobe {
-  PiecewiseLinearDensity density;
+  PiecewiseConstant1D density;
   double center_shift;  // cdf(B) − ½ of the tabulated lobe: u = ½ lands on the centre B
 
-  explicit TabulatedLobe(const CoshLobe& lobe) : density(tabulate(lobe)), center_shift(0.0) {
-    // CDF of the table at the centre: integrate the piecewise-linear density up to B.
-    double cdf = 0.0;
-    for (double nm = kVisibleMinNm; nm < lobe.center_nm; nm += kLobeTableStepNm) {
-      const double next = std::min(nm + kLobeTableStepNm, lobe.center_nm);
-      cdf += 0.5 * (next - nm) * (density.pdf(nm) + density.pdf(next));
-    }
-    center_shift = cdf - 0.5;
+  explicit TabulatedLobe(const CoshLobe& lobe)
+      : density(tabulate(lobe), static_cast<float>(kVisibleMinNm), static_cast<float>(kVisibleMaxNm)),
+        center_shift(0.0) {
+    density.build_guide_table();
+    // The table's own CDF at the centre, so that u = ½ inverts to B exactly.
+    const double position = lobe.center_nm - kVisibleMinNm;
+    const int cell = static_cast<int>(position);
+    center_shift = double(density.cdf(cell)) + (position - cell) * double(density.pmf(cell)) - 0.5;
   }
-  static PiecewiseLinearDensity tabulate(const CoshLobe& lobe) {
-    const int nodes = static_cast<int>(kVisibleRangeNm / kLobeTableStepNm + 0.5) + 1;
-    std::vector<double> values;
-    for (int n = 0; n < nodes; ++n) values.push_back(lobe.pdf(kVisibleMinNm + n * kLobeTableStepNm));
-    return PiecewiseLinearDensity(kVisibleMinNm, kLobeTableStepNm, std::move(values));
+  static std::vector<float> tabulate(const CoshLobe& lobe) {
+    std::vector<float> mass;
+    for (int i = 0; i < kLobeCells; ++i)
+      mass.push_back(static_cast<float>(lobe.cdf(kVisibleMinNm + i + 1) - lobe.cdf(kVisibleMinNm + i)));
+    return mass;
   }
 };
 
@@ -98,29 +99,26 @@ struct ThreeCoshTables {
   // What a tuple of `count` wavelengths does per slot, worked out once per count: which
   // lobe, which way it runs through u, and its shift (see three_cosh_slot_u below).
   struct SlotPlan {
-    const PiecewiseLinearDensity* density;
+    const PiecewiseConstant1D* density;
     bool reversed;
-    double center_shift, rotation;  // added to u in that order, so the sum rounds as it always did
+    double center_shift, rotation;  // added to u in that order
   };
   static constexpr int kMaxTupleWavelengths = 8;  // the renderer's largest N
   struct TuplePlan {
     std::array<double, 3> weights;
     std::array<SlotPlan, kMaxTupleWavelengths> slots;
+    std::vector<float> effective_pdf;  // per 1 nm cell: Σ_l w_l p_l, the pdf every λ_i carries
   };
   TabulatedLobe lobes[3] = {TabulatedLobe(kThreeCoshLobes[0]), TabulatedLobe(kThreeCoshLobes[1]),
                             TabulatedLobe(kThreeCoshLobes[2])};
-  // The three lobes' node values side by side: the effective pdf of a wavelength needs all
-  // three at the same node, so one index computation and one cache line serve them.
-  std::vector<std::array<double, 3>> node_pdfs;
   std::array<TuplePlan, kMaxTupleWavelengths + 1> plans{};  // by count
 
   ThreeCoshTables() {
-    for (double nm = kVisibleMinNm; nm <= kVisibleMaxNm; nm += kLobeTableStepNm)
-      node_pdfs.push_back({lobes[0].density.pdf(nm), lobes[1].density.pdf(nm), lobes[2].density.pdf(nm)});
     for (int count = 1; count <= kMaxTupleWavelengths; ++count) {
       TuplePlan& plan = plans[static_cast<std::size_t>(count)];
       plan.weights = lobe_weights(count);
       for (int slot = 0; slot < count; ++slot) plan.slots[static_cast<std::size_t>(slot)] = slot_plan(slot, count);
+      for (int cell = 0; cell < kLobeCells; ++cell) plan.effective_pdf.push_back(effective_pdf(plan.weights, cell));
     }
   }
   SlotPlan slot_plan(int slot, int count) const {
@@ -135,17 +133,18 @@ struct ThreeCoshTables {
       w[static_cast<std::size_t>(lobe)] = double((count - lobe + 2) / 3) / count;
     return w;
   }
-  // Σ_l w_l p_l(λ): the same piecewise-linear pdfs, interpolated once.
-  double effective_pdf(const std::array<double, 3>& weights, double nm) const {
-    const double position = (nm - kVisibleMinNm) * (1.0 / kLobeTableStepNm);
-    const double last_segment = double(node_pdfs.size() - 2);
-    if (!(position >= 0.0) || position > last_segment + 1.0) return 0.0;
-    const std::size_t n = static_cast<std::size_t>(std::min(position, last_segment));
-    const double t = position - double(n);
-    const std::array<double, 3>& a = node_pdfs[n];
-    const std::array<double, 3>& b = node_pdfs[n + 1];
-    return weights[0] * (a[0] + t * (b[0] - a[0])) + weights[1] * (a[1] + t * (b[1] - a[1])) +
-           weights[2] * (a[2] + t * (b[2] - a[2]));
+  // Σ_l w_l p_l in one 1 nm cell (the lobes share their cells), rounded to float once.
+  float effective_pdf(const std::array<double, 3>& weights, int cell) const {
+    double sum = 0.0;
+    for (int l = 0; l < 3; ++l)
+      sum += weights[static_cast<std::size_t>(l)] * double(lobes[l].density.pmf(cell)) /
+             (kVisibleRangeNm / kLobeCells);
+    return static_cast<float>(sum);
+  }
+  // The cell a wavelength falls in (the last one for 780 nm); −1 outside [380, 780] nm.
+  int cell_of(double nm) const {
+    if (!(nm >= kVisibleMinNm && nm <= kVisibleMaxNm)) return -1;
+    return lobes[0].density.cell(static_cast<float>(nm));
   }
 };
 
@@ -163,7 +162,7 @@ double wavelength_slot_pdf(WavelengthStrategy strategy, int slot, double wavelen
       return (wavelength_nm >= kVisibleMinNm && wavelength_nm <= kVisibleMaxNm) ? 1.0 / kVisibleRangeNm
                                                                                 : 0.0;
     case WavelengthStrategy::cosh: return radziszewski_lobe().pdf(wavelength_nm);
-    case WavelengthStrategy::cosh3: return three_cosh_lobe(slot).density.pdf(wavelength_nm);
+    case WavelengthStrategy::cosh3: return three_cosh_lobe(slot).density.pdf(static_cast<float>(wavelength_nm));
   }
   return 0.0;
 }
@@ -172,7 +171,8 @@ double sample_wavelength_slot(WavelengthStrategy strategy, int slot, double u) {
   switch (strategy) {
     case WavelengthStrategy::hero: return kVisibleMinNm + u * kVisibleRangeNm;
     case WavelengthStrategy::cosh: return radziszewski_lobe().sample(u);
-    case WavelengthStrategy::cosh3: return three_cosh_lobe(slot).density.sample(u);
+    case WavelengthStrategy::cosh3:
+      return three_cosh_lobe(slot).density.sample_continuous(static_cast<float>(u)).x;
   }
   return kVisibleMinNm;
 }
@@ -203,7 +203,12 @@ double slot_u(WavelengthStrategy strategy, double u, int slot, int count) {
 double wavelength_pdf(WavelengthStrategy strategy, int count, double wavelength_nm) {
   if (strategy != WavelengthStrategy::cosh3) return wavelength_slot_pdf(strategy, 0, wavelength_nm);
   // Slot i uses lobe i mod 3.
-  return three_cosh_tables().effective_pdf(ThreeCoshTables::lobe_weights(count), wavelength_nm);
+  const ThreeCoshTables& tables = three_cosh_tables();
+  const int cell = tables.cell_of(wavelength_nm);
+  if (cell < 0) return 0.0;
+  if (count >= 1 && count <= ThreeCoshTables::kMaxTupleWavelengths)
+    return tables.plans[static_cast<std::size_t>(count)].effective_pdf[static_cast<std::size_t>(cell)];
+  return tables.effective_pdf(ThreeCoshTables::lobe_weights(count), cell);
 }
 
 void sample_three_cosh_wavelengths(double u, int count, float* wavelength_nm, float* pdf) {
@@ -215,11 +220,12 @@ void sample_three_cosh_wavelengths(double u, int count, float* wavelength_nm, fl
     throw std::invalid_argument("sample_three_cosh_wavelengths: " + std::to_string(count) +
                                 " wavelengths per tuple (1 to 8 are planned)");
   const ThreeCoshTables::TuplePlan& plan = tables.plans[static_cast<std::size_t>(count)];
+  const PiecewiseConstant1D& cells = tables.lobes[0].density;  // every lobe has the same cells
   for (int i = 0; i < count; ++i) {
     const ThreeCoshTables::SlotPlan& slot = plan.slots[static_cast<std::size_t>(i)];
-    const double nm = slot.density->sample(three_cosh_slot_u(slot, u));
-    wavelength_nm[i] = static_cast<float>(nm);
-    pdf[i] = static_cast<float>(tables.effective_pdf(plan.weights, nm));
+    const float nm = slot.density->sample_continuous(static_cast<float>(three_cosh_slot_u(slot, u))).x;
+    wavelength_nm[i] = nm;
+    pdf[i] = plan.effective_pdf[static_cast<std::size_t>(cells.cell(nm))];
   }
 }
 

@@ -11,9 +11,10 @@
 //          shape close to ȳ, normalised on [380, 780] with an analytic inverse CDF.
 //   cosh3  three cosh lobes (A, B) = (0.0078, 600), (0.0072, 535), (0.0062, 445), one per
 //          slot (slot i uses lobe i mod 3), each normalised on [380, 780] and tabulated:
-//          the density used (sampled and returned) is the lobe's piecewise-linear
-//          interpolant at 1 nm nodes (within 3e-5 of the cosh; piecewise_linear_density.h),
-//          inverted exactly, so pdf and samples agree to rounding. Lobe l's slots
+//          the density used (sampled and returned) is piecewise constant on 1 nm cells,
+//          each holding the lobe's exact mass (the lobe averaged over the nanometre, within
+//          0.8 % of the cosh), inverted exactly (PiecewiseConstant1D with a guide table),
+//          so pdf and samples agree to rounding. Lobe l's slots
 //          share u shifted by cdf_l(B_l) − ½, so u = ½ lands every lobe on its centre B_l,
 //          and repeated lobes (N > 3) are rotated evenly among themselves. Lobe 0 (600 nm)
 //          runs through u backwards (1 − u; antithetic, Hammersley & Morton 1956): as u

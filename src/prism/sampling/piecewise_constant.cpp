@@ -29,12 +29,29 @@ PiecewiseConstant1D::PiecewiseConstant1D(std::span<const float> f, float min, fl
     std::fill(f_.begin(), f_.end(), 1.0f);  // all-zero: uniform fallback
   }
   cdf_[n] = 1.0f;
+  width_ = (max_ - min_) / n;
+  inverse_width_ = n / (max_ - min_);
+  below_max_ = std::nextafter(max_, min_);
 }
 
-int PiecewiseConstant1D::find_cell(float u) const {
-  // Largest i with cdf_[i] ≤ u, skipping zero-width cells (they have f = 0).
-  const auto it = std::upper_bound(cdf_.begin(), cdf_.end(), u);
-  return std::clamp(static_cast<int>(it - cdf_.begin()) - 1, 0, size() - 1);
+void PiecewiseConstant1D::build_guide_table() {
+  // At least four cells per cell of the distribution, and at least 1/(smallest non-zero
+  // mass), so that a guide cell holds at most one CDF step wherever cells have mass and
+  // find_cell's forward walk takes at most one step there (capped at 2^20 entries).
+  const int n = size();
+  float smallest = 1.0f;
+  for (int i = 0; i < n; ++i)
+    if (cdf_[i + 1] > cdf_[i]) smallest = std::min(smallest, cdf_[i + 1] - cdf_[i]);
+  const double cells = std::min(double(1 << 20), std::max(4.0 * n, std::ceil(1.0 / double(smallest)) + 1.0));
+  guide_.resize(static_cast<std::size_t>(cells));
+  std::uint32_t i = 0;
+  for (std::size_t g = 0; g < guide_.size(); ++g) {
+    // Compared in double: a float u with g = ⌊u · size⌋ is ≥ g / size up to the product's
+    // rounding, which is far below float's spacing, so cdf_[guide_[g]] ≤ u holds for it.
+    const double u = double(g) / double(guide_.size());
+    while (static_cast<int>(i) + 1 < n && double(cdf_[i + 1]) <= u) ++i;
+    guide_[g] = i;
+  }
 }
 
 float PiecewiseConstant1D::pmf(int index) const {
@@ -42,18 +59,7 @@ float PiecewiseConstant1D::pmf(int index) const {
   return cdf_[index + 1] - cdf_[index];
 }
 
-PiecewiseConstant1D::ContinuousSample PiecewiseConstant1D::sample_continuous(float u) const {
-  const int i = find_cell(u);
-  const float mass = cdf_[i + 1] - cdf_[i];
-  float du = mass > 0.0f ? (u - cdf_[i]) / mass : 0.0f;
-  du = std::clamp(du, 0.0f, std::nextafter(1.0f, 0.0f));
-  const float width = (max_ - min_) / size();
-  ContinuousSample s;
-  s.index = i;
-  s.x = std::min(min_ + (i + du) * width, std::nextafter(max_, min_));
-  s.pdf = mass / width;
-  return s;
-}
+float PiecewiseConstant1D::cdf(int index) const { return cdf_[static_cast<std::size_t>(std::clamp(index, 0, size()))]; }
 
 PiecewiseConstant1D::DiscreteSample PiecewiseConstant1D::sample_discrete(float u) const {
   const int i = find_cell(u);
@@ -67,9 +73,7 @@ PiecewiseConstant1D::DiscreteSample PiecewiseConstant1D::sample_discrete(float u
 
 float PiecewiseConstant1D::pdf(float x) const {
   if (x < min_ || x > max_) return 0.0f;
-  const float width = (max_ - min_) / size();
-  const int i = std::clamp(static_cast<int>((x - min_) / width), 0, size() - 1);
-  return pmf(i) / width;
+  return pmf(cell(x)) / width_;
 }
 
 PiecewiseConstant2D::PiecewiseConstant2D(std::span<const float> f, int nu, int nv) {

@@ -3,6 +3,9 @@
 // marginal/conditional construction (pbrt-v4 §A.5; the environment-map sampler of
 // Pharr & Humphreys). The 1D form samples continuously (with the cell index and the
 // remapped uniform) or discretely (with the probability mass).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -32,7 +35,14 @@ class PiecewiseConstant1D {
   DiscreteSample sample_discrete(float u) const;
 
   float pdf(float x) const;  // 0 outside [min, max]
+  // The cell pdf() reads at x ∈ [min, max] (the last cell for x = max).
+  int cell(float x) const;
+  // Builds a guide table (≈ 4 bytes per cell) that makes sampling O(1) instead of a binary
+  // search over the CDF; the cells found are the same. For small, hot distributions (the
+  // wavelength lobes); environment maps keep the search and its smaller footprint.
+  void build_guide_table();
   float pmf(int index) const;
+  float cdf(int index) const;  // mass of the cells before `index` (index ∈ [0, N])
   int size() const { return static_cast<int>(f_.size()); }
   // ∫ f over [min, max] (before any fallback to uniform).
   float integral() const { return integral_; }
@@ -44,9 +54,44 @@ class PiecewiseConstant1D {
 
   std::vector<float> f_;
   std::vector<float> cdf_;  // size N + 1, cdf_[0] = 0, cdf_[N] = 1
+  // guide_[g]: the largest cell i with cdf_[i] ≤ g / guide_.size(), when built.
+  std::vector<std::uint32_t> guide_;
   float integral_ = 0.0f;
   float min_ = 0.0f, max_ = 1.0f;
+  float width_ = 1.0f;          // (max − min) / N
+  float inverse_width_ = 1.0f;  // N / (max − min)
+  float below_max_ = 1.0f;   // the largest float below max: samples stay in [min, max)
 };
+
+// Inline: the wavelength lobes sample through them once per wavelength of every path.
+inline int PiecewiseConstant1D::cell(float x) const {
+  return std::clamp(static_cast<int>((x - min_) * inverse_width_), 0, size() - 1);
+}
+
+inline int PiecewiseConstant1D::find_cell(float u) const {
+  // Largest i with cdf_[i] ≤ u, skipping zero-width cells (they have f = 0).
+  if (!guide_.empty() && u >= 0.0f) {
+    // guide_[g] ≤ the answer for every u ≥ g / size, so walking forward finds it.
+    const std::size_t g = std::min(static_cast<std::size_t>(double(u) * double(guide_.size())), guide_.size() - 1);
+    int i = static_cast<int>(guide_[g]);
+    while (i + 1 < size() && cdf_[static_cast<std::size_t>(i) + 1] <= u) ++i;
+    return i;
+  }
+  const auto it = std::upper_bound(cdf_.begin(), cdf_.end(), u);
+  return std::clamp(static_cast<int>(it - cdf_.begin()) - 1, 0, size() - 1);
+}
+
+inline PiecewiseConstant1D::ContinuousSample PiecewiseConstant1D::sample_continuous(float u) const {
+  const int i = find_cell(u);
+  const float mass = cdf_[i + 1] - cdf_[i];
+  float du = mass > 0.0f ? (u - cdf_[i]) / mass : 0.0f;
+  du = std::clamp(du, 0.0f, std::nextafter(1.0f, 0.0f));
+  ContinuousSample s;
+  s.index = i;
+  s.x = std::min(min_ + (i + du) * width_, below_max_);
+  s.pdf = mass / width_;
+  return s;
+}
 
 // Density over [0,1]² proportional to a grid of nu × nv cells, f row-major with u along
 // rows: f[v * nu + u]. Sampling draws the row v from the marginal ∫ f du and then u from

@@ -67,11 +67,12 @@ const PreparedLobe& radziszewski_lobe() {
 // The cosh3 lobes, tabulated (see wavelength_sampling.h): each lobe's exact mass in every
 // 1 nm cell of [380, 780] nm (its CDF is closed-form), sampled and evaluated as the
 // piecewise-constant density with those masses, i.e. the lobe averaged over each
-// nanometre (within ±0.4 % of the cosh inside a cell: |p'/p| ≤ 2a = 0.0156/nm, over
-// ±½ nm). The analytic inverse (atanh) plus three cosh per wavelength for the MIS pdf cost
-// ≈ 265 ns per 4-wavelength sample; a piecewise-linear table with exact quadratic
-// inversion 73 ns; this table a guide-table lookup, one multiply and one load of the
-// effective pdf per wavelength (BENCHMARKS.md "limit").
+// nanometre: within e^a − 1 (0.8 %) of the cosh anywhere in the cell, as |d ln p/dλ| ≤ 2a
+// and a point is at most ½ nm from wherever the lobe equals its average. The analytic
+// inverse (atanh) plus three cosh per wavelength for the MIS pdf cost ≈ 265 ns per
+// 4-wavelength sample; a piecewise-linear table with exact quadratic inversion 73 ns; this
+// table 38 ns: a guide-table lookup, one division and one load of the effective pdf per
+// wavelength (BENCHMARKS.md "Session 5").
 constexpr int kLobeCells = 400;  // 1 nm each
 
 struct TabulatedLobe {

@@ -37,9 +37,10 @@ class PiecewiseConstant1D {
   float pdf(float x) const;  // 0 outside [min, max]
   // The cell pdf() reads at x ∈ [min, max] (the last cell for x = max).
   int cell(float x) const;
-  // Builds a guide table (≈ 4 bytes per cell) that makes sampling O(1) instead of a binary
-  // search over the CDF; the cells found are the same. For small, hot distributions (the
-  // wavelength lobes); environment maps keep the search and its smaller footprint.
+  // Builds a guide table (at least four 4-byte entries per cell) that makes sampling O(1)
+  // instead of a binary search over the CDF; the cells found are the same. For small, hot
+  // distributions (the wavelength lobes); environment maps keep the search and its
+  // smaller footprint.
   void build_guide_table();
   float pmf(int index) const;
   float cdf(int index) const;  // mass of the cells before `index` (index ∈ [0, N])

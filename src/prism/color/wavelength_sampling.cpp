@@ -106,7 +106,6 @@ struct ThreeCoshTables {
   };
   static constexpr int kMaxTupleWavelengths = 8;  // the renderer's largest N
   struct TuplePlan {
-    std::array<double, 3> weights;
     std::array<SlotPlan, kMaxTupleWavelengths> slots;
     std::vector<float> effective_pdf;  // per 1 nm cell: Σ_l w_l p_l, the pdf every λ_i carries
   };
@@ -117,9 +116,9 @@ struct ThreeCoshTables {
   ThreeCoshTables() {
     for (int count = 1; count <= kMaxTupleWavelengths; ++count) {
       TuplePlan& plan = plans[static_cast<std::size_t>(count)];
-      plan.weights = lobe_weights(count);
+      const std::array<double, 3> weights = lobe_weights(count);
       for (int slot = 0; slot < count; ++slot) plan.slots[static_cast<std::size_t>(slot)] = slot_plan(slot, count);
-      for (int cell = 0; cell < kLobeCells; ++cell) plan.effective_pdf.push_back(effective_pdf(plan.weights, cell));
+      for (int cell = 0; cell < kLobeCells; ++cell) plan.effective_pdf.push_back(effective_pdf(weights, cell));
     }
   }
   SlotPlan slot_plan(int slot, int count) const {
@@ -214,8 +213,8 @@ double wavelength_pdf(WavelengthStrategy strategy, int count, double wavelength_
 
 void sample_three_cosh_wavelengths(double u, int count, float* wavelength_nm, float* pdf) {
   // The same slot_u / sample_wavelength_slot / wavelength_pdf as the generic path, with
-  // every per-slot constant (lobe, direction, shift, MIS weights) looked up from the
-  // count's plan instead of recomputed with integer and floating-point divisions.
+  // every per-slot constant (lobe, direction, shift) and the effective pdf looked up from
+  // the count's plan instead of recomputed with integer and floating-point divisions.
   const ThreeCoshTables& tables = three_cosh_tables();
   if (count < 1 || count > ThreeCoshTables::kMaxTupleWavelengths)
     throw std::invalid_argument("sample_three_cosh_wavelengths: " + std::to_string(count) +

@@ -7,6 +7,7 @@
 
 #include "prism/core/error.h"
 #include "prism/render/renderer.h"
+#include "prism/render/wavefront_integrator.h"
 #include "prism/scene/builtin_scenes.h"
 #include "support/film_statistics.h"
 #include "support/test_scenes.h"
@@ -109,8 +110,10 @@ TEST(PathTracer, MaxDepthOneIsDirectLightOnly) {
 TEST(Renderer, ImageDoesNotDependOnThreadCount) {
   const Scene scene = make_cornell_box();
   RenderSettings s = small_settings(9, 8);
-  s.width = 48;
-  s.height = 40;
+  // Two tiles of the wavefront integrator (kTilePixels = 4096), the second one partial, so
+  // that two threads do split the image.
+  s.width = 96;
+  s.height = 64;
   s.threads = 1;
   const std::vector<float> one = render(scene, s).film.mean_rgb();
   s.threads = 2;
@@ -152,6 +155,41 @@ TEST(Renderer, BouncesPerPassShowsProgressWithoutChangingTheImage) {
   EXPECT_TRUE(r.film.mean_rgb() == reference) << "bounces per pass changed the image";
   s.bounces_per_pass = -1;
   EXPECT_THROW(render(scene, s), UsageError);
+}
+
+// The tiled queues (each tile's wave run by one thread) against the whole-image queue that
+// bounces per pass keeps (every stage split across the threads): the same paths, so the
+// same image bit for bit and the same ray counts, on an image of three tiles, the last
+// one partial.
+TEST(Renderer, TiledQueuesGiveTheWholeImageQueuesImage) {
+  static_assert(WavefrontIntegrator<SpectralMode<4>>::kTilePixels == 4096, "sizes below assume 4096");
+  const Scene scene = make_cornell_box();
+  RenderSettings s = small_settings(13, 3);
+  s.width = 100;
+  s.height = 90;  // 9000 pixels: tiles of 4096, 4096 and 808
+  s.samples_per_pass = 3;
+  s.threads = 2;
+  s.aovs = AovSet{true, true, true, false};  // albedo, normal, depth: written per slot by shade()
+  const RenderResult tiled = render(scene, s);
+  s.bounces_per_pass = 1000;  // whole-image queue; the hook never runs (paths end sooner)
+  RenderHooks hooks;
+  int calls = 0;
+  hooks.on_bounces = [&](const Film&, int) { ++calls; };
+  const RenderResult whole = render(scene, s, hooks);
+  EXPECT_EQ(calls, 0);
+  EXPECT_TRUE(tiled.film.mean_rgb() == whole.film.mean_rgb()) << "tiles changed the image";
+  EXPECT_TRUE(tiled.film.aov_sums().albedo == whole.film.aov_sums().albedo) << "tiles changed the albedo AOV";
+  EXPECT_TRUE(tiled.film.aov_sums().normal == whole.film.aov_sums().normal) << "tiles changed the normal AOV";
+  EXPECT_TRUE(tiled.film.aov_sums().depth == whole.film.aov_sums().depth) << "tiles changed the depth AOV";
+  EXPECT_EQ(tiled.rays, whole.rays);
+  EXPECT_EQ(tiled.shadow_rays, whole.shadow_rays);
+  ASSERT_EQ(tiled.pass_live_paths.size(), 1u);
+  ASSERT_EQ(whole.pass_live_paths.size(), 1u);
+  // Every tile starts with all its pixels live; per-step counts add across tiles.
+  EXPECT_EQ(tiled.pass_live_paths[0].front(), 9000u);
+  std::uint64_t tiled_rays = 0;
+  for (const std::uint32_t n : tiled.pass_live_paths[0]) tiled_rays += n;
+  EXPECT_EQ(tiled_rays, tiled.rays);
 }
 
 TEST(Renderer, TimeLimitStopsWithCompletePasses) {

@@ -13,6 +13,7 @@
 #include "prism/render/aov_images.h"
 #include "prism/render/memory_estimate.h"
 #include "prism/render/renderer.h"
+#include "prism/render/wavefront_integrator.h"
 #include "prism/scene/builtin_scenes.h"
 
 namespace prism {
@@ -146,6 +147,7 @@ TEST(Aov, BitwiseIndependentOfThreadsAndLeavesTheBeautyAlone) {
 TEST(Aov, MemoryEstimateCountsTheAovs) {
   const Scene scene = make_cornell_box();
   RenderSettings s = aov_settings(1000, 500, 1);
+  s.threads = 2;  // the path state is one tile per thread
   s.aovs = {};
   const MemoryEstimate none = estimate_render_memory(scene, s);
   s.aovs = kAllAovs;
@@ -154,7 +156,7 @@ TEST(Aov, MemoryEstimateCountsTheAovs) {
   // Sums: albedo and normal 3 doubles, depth a double and a u32 hit count; the first-hit
   // record per slot; output images of 8 float channels.
   EXPECT_EQ(all.film - none.film, pixels * (24 + 24 + 12));
-  EXPECT_EQ(all.path_pool - none.path_pool, pixels * kAovSlotBytesPerPixel);
+  EXPECT_EQ(all.path_pool - none.path_pool, 2 * kWavefrontTilePixels * kAovBytesPerSlot);
   EXPECT_EQ(all.images - none.images, pixels * 8 * 4);
   EXPECT_EQ(none.film, pixels * kFilmBytesPerPixel);
 }

@@ -9,6 +9,7 @@
 
 #include "prism/core/error.h"
 #include "prism/render/renderer.h"
+#include "prism/render/wavefront_integrator.h"
 #include "prism/scene/builtin_scenes.h"
 
 namespace prism {
@@ -16,14 +17,29 @@ namespace {
 
 constexpr std::uint64_t kGiB = 1ull << 30;
 
-TEST(MemoryEstimate, FilmAndPathPoolScaleWithPixels) {
+TEST(MemoryEstimate, FilmScalesWithPixelsAndPathPoolWithThreads) {
   const Scene scene = make_cornell_box();
   RenderSettings s;
   s.width = 100;
-  s.height = 50;
+  s.height = 50;  // 5000 pixels: two tiles of the wavefront integrator
+  s.threads = 1;
   const MemoryEstimate e = estimate_render_memory(scene, s);
   EXPECT_EQ(e.film, 5000u * (2 * 24 + 4));
-  EXPECT_EQ(e.path_pool, 5000u * 250);
+  // One tile's path state per thread that runs tiles: no more threads than tiles.
+  EXPECT_EQ(e.path_pool, kWavefrontTilePixels * kPathPoolBytesPerSlot);
+  s.threads = 3;
+  EXPECT_EQ(estimate_render_memory(scene, s).path_pool, 2 * kWavefrontTilePixels * kPathPoolBytesPerSlot);
+  s.width = s.height = 4000;
+  s.threads = 2;
+  EXPECT_EQ(estimate_render_memory(scene, s).path_pool, 2 * kWavefrontTilePixels * kPathPoolBytesPerSlot)
+      << "the path state must not grow with the image";
+  // Passes that report every few bounces keep one whole-image queue: a slot per pixel.
+  s.bounces_per_pass = 1;
+  EXPECT_EQ(estimate_render_memory(scene, s).path_pool, 4000u * 4000u * kPathPoolBytesPerSlot);
+  s.bounces_per_pass = 0;
+  s.width = 100;
+  s.height = 50;
+  s.threads = 1;
   EXPECT_GT(e.meshes, 0u);
   EXPECT_EQ(e.textures, 0u);  // the Cornell box has no textures
   EXPECT_EQ(e.total(), e.film + e.path_pool + e.images + e.textures + e.meshes);

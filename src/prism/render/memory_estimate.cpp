@@ -2,21 +2,33 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 
 #include <fmt/format.h>
 
 #include "prism/core/error.h"
+#include "prism/core/parallel.h"
+#include "prism/render/wavefront_integrator.h"
 
 namespace prism {
 namespace {
 
-static_assert(sizeof(AovSample) <= kAovSlotBytesPerPixel, "the memory estimate must cover the first-hit record");
+static_assert(sizeof(AovSample) <= kAovBytesPerSlot, "the memory estimate must cover the first-hit record");
 
 std::uint64_t mesh_bytes(const TriangleMesh& m) {
   return m.positions.size() * sizeof(Vec3f) + m.normals.size() * sizeof(Vec3f) + m.uvs.size() * sizeof(Vec2f) +
          m.tangents.size() * sizeof(Vec3f) + m.tangent_signs.size() * sizeof(float) + m.indices.size() * sizeof(std::uint32_t);
+}
+
+// Path state slots (wavefront_integrator.h): one tile's per thread that runs tiles, or one
+// per pixel when passes report every few bounces (the whole-image lockstep queue).
+std::uint64_t path_slots(const RenderSettings& s, std::uint64_t pixels) {
+  if (s.bounces_per_pass > 0) return pixels;
+  const std::uint64_t tiles = (pixels + kWavefrontTilePixels - 1) / kWavefrontTilePixels;
+  const auto threads = static_cast<std::uint64_t>(s.threads > 0 ? s.threads : ThreadLimit::hardware_threads());
+  return std::min(tiles, threads) * kWavefrontTilePixels;
 }
 
 }  // namespace
@@ -31,7 +43,7 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderSettings& 
   const std::uint64_t aov_channels =
       (a.albedo ? 3 : 0) + (a.normal ? 3 : 0) + (a.depth ? 2 : 0) + (a.variance ? 3 : 0);  // Z + coverage
   e.film = pixels * (kFilmBytesPerPixel + aov_film);
-  e.path_pool = pixels * (kPathPoolBytesPerPixel + (a.first_hit() ? kAovSlotBytesPerPixel : 0));
+  e.path_pool = path_slots(settings, pixels) * (kPathPoolBytesPerSlot + (a.first_hit() ? kAovBytesPerSlot : 0));
   e.images = pixels * (kImageBytesPerPixel + aov_channels * kAovImageBytesPerChannel);
 
   // The loaded texels, the flattened scene's copy and a mip pyramid (4/3 of the image).

@@ -14,12 +14,17 @@
 
 namespace prism {
 
+// A queue's path state, one slot per pixel of a run of pixels starting at first_pixel:
+// slot s holds pixel first_pixel + s.
 template <class Mode>
 struct WavefrontIntegrator<Mode>::Paths {
   explicit Paths(std::size_t n)
       : ray(n), throughput(n), radiance(n), wavelengths(n), hit(n), hit_found(n), shadow_ray(n),
-        shadow_contribution(n), shadow_pending(n), prev_position(n), prev_normal(n), prev_pdf(n), eta_scale(n), cone_width(n), cone_spread(n), prev_specular(n), depth(n),
-        finished(n), sample_index(n), sample_end(n) {}
+        shadow_contribution(n), shadow_pending(n), shadow_blocked(n), prev_position(n), prev_normal(n), prev_pdf(n),
+        eta_scale(n), cone_width(n), cone_spread(n), prev_specular(n), depth(n), finished(n), sample_index(n),
+        sample_end(n) {}
+  std::size_t capacity() const { return ray.size(); }
+  std::uint32_t first_pixel = 0;
   std::vector<Ray> ray;
   std::vector<Spectrum<Mode>> throughput, radiance;
   std::vector<Wavelengths<Mode>> wavelengths;
@@ -28,6 +33,7 @@ struct WavefrontIntegrator<Mode>::Paths {
   std::vector<Ray> shadow_ray;
   std::vector<Spectrum<Mode>> shadow_contribution;
   std::vector<std::uint8_t> shadow_pending;
+  std::vector<std::uint8_t> shadow_blocked;  // the pending shadow ray hit something
   std::vector<Vec3f> prev_position;
   std::vector<Vec3f> prev_normal;          // its shading normal (triangle light pdfs depend on it)
   std::vector<float> prev_pdf;             // solid-angle pdf of the direction that led here
@@ -37,6 +43,9 @@ struct WavefrontIntegrator<Mode>::Paths {
   std::vector<std::int32_t> depth;
   std::vector<std::uint8_t> finished;
   std::vector<std::uint32_t> sample_index, sample_end;
+  // The AOVs of each slot's current sample, written by shade() at depth 0 and added to the
+  // film with the sample. Empty unless the film keeps AOVs.
+  std::vector<AovSample> first_hit_aovs;
 };
 
 template <class Mode>
@@ -44,8 +53,7 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
                                                const PinholeCamera& camera, const ColorContext<Mode>& colors,
                                                const PathSettings& settings, int width, int height, std::uint64_t seed,
                                                bool regenerate)
-    : paths_(std::make_unique<Paths>(static_cast<std::size_t>(width) * static_cast<std::size_t>(height))),
-      tables_(scene.materials), scene_(scene), accel_(accel), lights_(lights), camera_(camera), colors_(colors), settings_(settings),
+    : tables_(scene.materials), scene_(scene), accel_(accel), lights_(lights), camera_(camera), colors_(colors), settings_(settings),
       width_(width), height_(height), seed_(seed), regenerate_(regenerate) {
   for (const TextureImage& texture : scene.textures) textures_.push_back(build_mip_pyramid(texture));
   for (const Material& m : scene.materials)
@@ -123,9 +131,10 @@ Spectrum<Mode> WavefrontIntegrator<Mode>::emitted_radiance(std::uint32_t materia
 
 template <class Mode>
 void WavefrontIntegrator<Mode>::generate(Paths& p, std::uint32_t slot, std::uint32_t sample_index) const {
-  const std::uint32_t x = slot % static_cast<std::uint32_t>(width_), y = slot / static_cast<std::uint32_t>(width_);
+  const std::uint32_t pixel = p.first_pixel + slot;
+  const std::uint32_t x = pixel % static_cast<std::uint32_t>(width_), y = pixel / static_cast<std::uint32_t>(width_);
   const CameraSamples u =
-      camera_samples(settings_.sampler, PixelSample{seed_, x, y, slot, sample_index}, camera_.has_lens());
+      camera_samples(settings_.sampler, PixelSample{seed_, x, y, pixel, sample_index}, camera_.has_lens());
   p.wavelengths[slot] = colors_.sample_wavelengths(sample_index, u.wavelength);
   p.ray[slot] = camera_.generate_ray(static_cast<float>(x) + u.pixel_jitter.x, static_cast<float>(y) + u.pixel_jitter.y,
                                      u.lens);
@@ -150,8 +159,9 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   const Ray& ray = p.ray[slot];
   const bool use_nee = settings_.estimator != LightEstimator::bsdf_only && !lights_.empty();
   const bool weight_bsdf_hits = settings_.estimator == LightEstimator::mis;
-  if (p.depth[slot] == 0 && !first_hit_aovs_.empty())
-    record_first_hit_aovs(slot, ray, p.hit_found[slot] ? &p.hit[slot] : nullptr, p.cone_spread[slot]);
+  if (p.depth[slot] == 0 && !p.first_hit_aovs.empty())
+    record_first_hit_aovs(p.first_hit_aovs[slot], ray, p.hit_found[slot] ? &p.hit[slot] : nullptr,
+                          p.cone_spread[slot]);
 
   if (!p.hit_found[slot]) {
     // Escaped: only the environment and directional lights with an angular size can be hit.
@@ -213,8 +223,9 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   if (bsdf.uses_direction_sample()) needs |= kNeedDirection;
   if (p.depth[slot] + 1 >= settings_.russian_roulette_depth) needs |= kNeedRoulette;
   const auto row = static_cast<std::uint32_t>(width_);
+  const std::uint32_t pixel = p.first_pixel + slot;
   const BounceSamples u = bounce_samples(settings_.sampler,
-                                         PixelSample{seed_, slot % row, slot / row, slot, p.sample_index[slot]},
+                                         PixelSample{seed_, pixel % row, pixel / row, pixel, p.sample_index[slot]},
                                          p.depth[slot], needs);
 
   if (light_sampled) {
@@ -326,44 +337,52 @@ void for_range(bool parallel, std::size_t count, std::size_t grain,
 template <class Mode>
 PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t first_sample, std::uint32_t count,
                                                    int bounces_per_pass, const std::function<void()>* after_bounces) {
-  const auto slots = static_cast<std::uint32_t>(film.pixel_count());
-  Paths& p = *paths_;
-  first_hit_aovs_.resize(film.aovs().first_hit() ? slots : 0u);
-  shadow_blocked_.resize(slots);
-  const auto start = [&](std::uint32_t s) {
-    generate(p, s, first_sample);
-    p.sample_end[s] = first_sample + count;
+  const auto pixels = static_cast<std::uint32_t>(film.pixel_count());
+  const bool aovs = film.aovs().first_hit();
+  // Slots [0, n) of `p` start pixels p.first_pixel … + n with sample first_sample.
+  const auto start = [&](Paths& p, std::uint32_t slot) {
+    generate(p, slot, first_sample);
+    p.sample_end[slot] = first_sample + count;
   };
 
   // Lockstep: one queue for the whole image, each stage split across the threads, so that
   // after every bounces_per_pass steps every pixel's path has advanced equally.
   if (bounces_per_pass > 0 && after_bounces && *after_bounces) {
-    std::vector<std::uint32_t> live(slots);
-    for (std::uint32_t s = 0; s < slots; ++s) live[s] = s;
-    parallel_for(slots, 4096, [&](std::size_t b, std::size_t e) {
-      for (std::size_t s = b; s < e; ++s) start(static_cast<std::uint32_t>(s));
+    if (!whole_image_paths_ || whole_image_paths_->capacity() != pixels)
+      whole_image_paths_ = std::make_unique<Paths>(pixels);
+    Paths& p = *whole_image_paths_;
+    p.first_hit_aovs.resize(aovs ? pixels : 0u);
+    std::vector<std::uint32_t> live(pixels);
+    for (std::uint32_t s = 0; s < pixels; ++s) live[s] = s;
+    parallel_for(pixels, 4096, [&](std::size_t b, std::size_t e) {
+      for (std::size_t s = b; s < e; ++s) start(p, static_cast<std::uint32_t>(s));
     });
-    return run_queue(film, live, /*parallel=*/true, bounces_per_pass, after_bounces);
+    return run_queue(film, p, live, /*parallel=*/true, bounces_per_pass, after_bounces);
   }
 
-  // Tiles: each thread takes a run of kTilePixels pixels and runs their whole wave alone.
-  // The path state of a tile (≈ 250 B per slot) stays in the core's caches for every stage,
-  // where a whole-image queue streams it from memory once per stage, and the threads meet
-  // once per pass instead of three times per step. A slot is still its pixel and renders
-  // its samples in order, so the image is bitwise that of the lockstep queue
-  // (wavefront_integrator.h, "Determinism").
-  const std::size_t tiles = (slots + kTilePixels - 1) / kTilePixels;
+  // Tiles: each thread takes a run of kTilePixels pixels and runs their whole wave alone,
+  // in a path state of its own (≈ 250 B per slot, 1 MB per tile) that stays in the core's
+  // caches for every stage, where a whole-image queue streams its state from memory once
+  // per stage; the threads meet once per pass instead of three times per step, and the
+  // path state is a few tiles' worth instead of one slot per pixel. A slot is still one
+  // pixel and renders its samples in order, so the image is bitwise that of the lockstep
+  // queue (wavefront_integrator.h, "Determinism").
+  const std::size_t tiles = (pixels + kTilePixels - 1) / kTilePixels;
   std::vector<PassStatistics> per_tile(tiles);
   parallel_for(tiles, 1, [&](std::size_t tb, std::size_t te) {
     for (std::size_t t = tb; t < te; ++t) {
       const auto begin = static_cast<std::uint32_t>(t * kTilePixels);
-      const auto end = static_cast<std::uint32_t>(std::min<std::size_t>(slots, (t + 1) * kTilePixels));
+      const auto end = static_cast<std::uint32_t>(std::min<std::size_t>(pixels, (t + 1) * kTilePixels));
+      std::unique_ptr<Paths> p = acquire_tile_paths();
+      p->first_pixel = begin;
+      p->first_hit_aovs.resize(aovs ? kTilePixels : 0u);
       std::vector<std::uint32_t> live(end - begin);
-      for (std::uint32_t s = begin; s < end; ++s) {
-        live[s - begin] = s;
-        start(s);
+      for (std::uint32_t s = 0; s < end - begin; ++s) {
+        live[s] = s;
+        start(*p, s);
       }
-      per_tile[t] = run_queue(film, live, /*parallel=*/false, 0, nullptr);
+      per_tile[t] = run_queue(film, *p, live, /*parallel=*/false, 0, nullptr);
+      release_tile_paths(std::move(p));
     }
   });
   // Per-step figures add up across tiles step by step (each tile counts its own steps).
@@ -382,10 +401,32 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
   return stats;
 }
 
+// One tile's path state per thread at most: a tile takes one from the pool (or makes one)
+// and gives it back when its wave ends, so the pool grows to the number of threads that
+// ran tiles at once and is reused by every later pass.
 template <class Mode>
-PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, std::vector<std::uint32_t>& live, bool parallel,
-                                                    int bounces_per_pass, const std::function<void()>* after_bounces) {
-  Paths& p = *paths_;
+std::unique_ptr<typename WavefrontIntegrator<Mode>::Paths> WavefrontIntegrator<Mode>::acquire_tile_paths() {
+  {
+    const std::lock_guard<std::mutex> lock(tile_paths_mutex_);
+    if (!idle_tile_paths_.empty()) {
+      std::unique_ptr<Paths> p = std::move(idle_tile_paths_.back());
+      idle_tile_paths_.pop_back();
+      return p;
+    }
+  }
+  return std::make_unique<Paths>(kTilePixels);
+}
+
+template <class Mode>
+void WavefrontIntegrator<Mode>::release_tile_paths(std::unique_ptr<Paths> p) {
+  const std::lock_guard<std::mutex> lock(tile_paths_mutex_);
+  idle_tile_paths_.push_back(std::move(p));
+}
+
+template <class Mode>
+PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::vector<std::uint32_t>& live,
+                                                    bool parallel, int bounces_per_pass,
+                                                    const std::function<void()>* after_bounces) {
   PassStatistics stats;
   std::atomic<std::uint64_t> shadow_rays{0}, invalid{0}, completed{0};
   constexpr std::size_t kGrain = 1024;
@@ -414,19 +455,19 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, std::vector<std:
         std::uint64_t local_invalid = 0, local_completed = 0, traced = 0;
         const std::size_t end = std::min(live.size(), (c + 1) * kGrain);
         accel_.occluded_slots(p.shadow_ray.data(), live.data() + c * kGrain, end - c * kGrain,
-                              p.shadow_pending.data(), shadow_blocked_.data());
+                              p.shadow_pending.data(), p.shadow_blocked.data());
         std::size_t kept = c * kGrain;
         for (std::size_t i = c * kGrain; i < end; ++i) {
           const std::uint32_t s = live[i];
           if (p.shadow_pending[s]) {
             ++traced;
-            if (!shadow_blocked_[s]) p.radiance[s] += p.shadow_contribution[s];
+            if (!p.shadow_blocked[s]) p.radiance[s] += p.shadow_contribution[s];
           }
           if (p.finished[s]) {
             const Vec3d value = colors_.to_film(p.radiance[s], p.wavelengths[s]);
             if (is_finite(value)) {
-              film.add_sample(s, value);
-              if (!first_hit_aovs_.empty()) film.add_aov_sample(s, first_hit_aovs_[s]);
+              film.add_sample(p.first_pixel + s, value);
+              if (!p.first_hit_aovs.empty()) film.add_aov_sample(p.first_pixel + s, p.first_hit_aovs[s]);
             } else {
               ++local_invalid;  // never written to the film; reported at the end
             }

@@ -19,6 +19,7 @@
 #include <memory>
 #include <cstdint>
 #include <functional>
+#include <mutex>
 #include <optional>
 #include <vector>
 
@@ -55,6 +56,11 @@ struct PathSettings {
   LightSamplerOptions light;
 };
 
+// Pixels per tile: a tile's queue is run by one thread from its first step to its last, in
+// a path state of its own (unless a pass reports after every few bounces, which keeps one
+// whole-image queue). Any size gives the same image; 1024 to 16384 measured alike.
+inline constexpr std::size_t kWavefrontTilePixels = 4096;
+
 struct PassStatistics {
   std::uint64_t rays = 0;             // closest-hit rays (camera and continuation)
   std::uint64_t shadow_rays = 0;
@@ -67,9 +73,7 @@ struct PassStatistics {
 template <class Mode>
 class WavefrontIntegrator {
  public:
-  // Pixels per tile: a tile's queue is run by one thread from its first step to its last
-  // (unless a pass reports after every few bounces, which keeps one whole-image queue).
-  static constexpr std::size_t kTilePixels = 4096;
+  static constexpr std::size_t kTilePixels = kWavefrontTilePixels;
 
   ~WavefrontIntegrator();
   WavefrontIntegrator(const Scene& scene, const EmbreeAccel& accel, const LightSampler& lights,
@@ -88,7 +92,7 @@ class WavefrontIntegrator {
                                 int bounces_per_pass = 0, const std::function<void()>* after_bounces = nullptr);
 
  private:
-  struct Paths;  // structure of arrays, one slot per pixel
+  struct Paths;  // structure of arrays, one slot per pixel of a tile (or of the image)
   void generate(Paths& paths, std::uint32_t slot, std::uint32_t sample_index) const;
   void shade(Paths& paths, std::uint32_t slot) const;
   Spectrum<Mode> base_color(const Material& material, const SurfaceInteraction& si, float cone_width,
@@ -109,22 +113,21 @@ class WavefrontIntegrator {
   // texel at `uv`, filtered at `level_of_detail`, multiplies the emission colour.
   Spectrum<Mode> emitted_radiance(std::uint32_t material, bool has_uv, Vec2f uv, float level_of_detail,
                                   const Wavelengths<Mode>& wl) const;
-  // Writes first_hit_aovs_[slot] for a camera ray (wavefront_integrator_aovs.cpp); `hit`
-  // is null when the ray escaped.
-  void record_first_hit_aovs(std::uint32_t slot, const Ray& ray, const Hit* hit, float cone_spread) const;
+  // Writes the AOVs of a camera ray (wavefront_integrator_aovs.cpp); `hit` is null when the
+  // ray escaped.
+  void record_first_hit_aovs(AovSample& aovs, const Ray& ray, const Hit* hit, float cone_spread) const;
   PassStatistics run_wave(Film& film, std::uint32_t first_sample, std::uint32_t count, int bounces_per_pass,
                           const std::function<void()>* after_bounces);
   // Steps the queue `live` (generated slots) until every path in it has its samples:
   // each stage split across the threads (`parallel`) or run on this thread (a tile).
-  PassStatistics run_queue(Film& film, std::vector<std::uint32_t>& live, bool parallel, int bounces_per_pass,
-                           const std::function<void()>* after_bounces);
+  PassStatistics run_queue(Film& film, Paths& paths, std::vector<std::uint32_t>& live, bool parallel,
+                           int bounces_per_pass, const std::function<void()>* after_bounces);
+  std::unique_ptr<Paths> acquire_tile_paths();
+  void release_tile_paths(std::unique_ptr<Paths> paths);
 
-  std::unique_ptr<Paths> paths_;  // allocated once, reused by every wave
-  // Per slot: the AOVs of its current sample, written by shade() at depth 0 (each slot by
-  // the one thread shading it) and added to the film with the sample. Empty unless the
-  // film keeps AOVs.
-  mutable std::vector<AovSample> first_hit_aovs_;
-  std::vector<std::uint8_t> shadow_blocked_;     // per slot: its pending shadow ray hit something
+  std::mutex tile_paths_mutex_;
+  std::vector<std::unique_ptr<Paths>> idle_tile_paths_;  // tile path states not in use
+  std::unique_ptr<Paths> whole_image_paths_;             // lockstep queue's, made on first use
   MaterialTables tables_;
   std::vector<MipPyramid> textures_;  // one per Scene::textures entry
   std::vector<Mat3> textured_emission_;  // per material: texel → Rec.709 radiance (scene/emission.h)

@@ -7,9 +7,8 @@
 namespace prism {
 
 template <class Mode>
-void WavefrontIntegrator<Mode>::record_first_hit_aovs(std::uint32_t slot, const Ray& ray, const Hit* hit,
+void WavefrontIntegrator<Mode>::record_first_hit_aovs(AovSample& a, const Ray& ray, const Hit* hit,
                                                       float cone_spread) const {
-  AovSample& a = first_hit_aovs_[slot];
   a = AovSample{};
   if (hit == nullptr) return;  // escaped: zero albedo and normal, no depth
   const SurfaceInteraction si = surface_interaction(scene_, *hit, ray);
@@ -36,12 +35,12 @@ void WavefrontIntegrator<Mode>::record_first_hit_aovs(std::uint32_t slot, const 
   a.hit = true;
 }
 
-template void WavefrontIntegrator<SpectralMode<3>>::record_first_hit_aovs(std::uint32_t, const Ray&, const Hit*,
+template void WavefrontIntegrator<SpectralMode<3>>::record_first_hit_aovs(AovSample&, const Ray&, const Hit*,
                                                                           float) const;
-template void WavefrontIntegrator<SpectralMode<4>>::record_first_hit_aovs(std::uint32_t, const Ray&, const Hit*,
+template void WavefrontIntegrator<SpectralMode<4>>::record_first_hit_aovs(AovSample&, const Ray&, const Hit*,
                                                                           float) const;
-template void WavefrontIntegrator<SpectralMode<8>>::record_first_hit_aovs(std::uint32_t, const Ray&, const Hit*,
+template void WavefrontIntegrator<SpectralMode<8>>::record_first_hit_aovs(AovSample&, const Ray&, const Hit*,
                                                                           float) const;
-template void WavefrontIntegrator<RgbMode>::record_first_hit_aovs(std::uint32_t, const Ray&, const Hit*, float) const;
+template void WavefrontIntegrator<RgbMode>::record_first_hit_aovs(AovSample&, const Ray&, const Hit*, float) const;
 
 }  // namespace prism

@@ -45,6 +45,17 @@ void BM_BsdfSample(benchmark::State& state) {
 }
 BENCHMARK(BM_BsdfSample)->Arg(0)->Arg(1)->Arg(2)->ArgName("lambert0_conductor1_dielectric2");
 
+// The diffuse warp alone (concentric disk + Malley), on precomputed uniform numbers.
+void BM_SampleCosineHemisphere(benchmark::State& state) {
+  prism::Pcg32 rng(7, 8);
+  std::vector<Vec2f> u(4096);
+  for (auto& v : u) v = Vec2f(rng.next_float(), rng.next_float());
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(prism::sample_cosine_hemisphere(u[i++ & 4095]));
+  state.SetItemsProcessed(state.iterations());
+}
+BENCHMARK(BM_SampleCosineHemisphere);
+
 void BM_BsdfEvalPdf(benchmark::State& state) {
   const auto bsdf = make_bsdf(static_cast<int>(state.range(0)));
   const auto wo = outgoing_directions();

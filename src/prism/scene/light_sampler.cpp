@@ -291,22 +291,31 @@ std::optional<LightSample> LightSampler::sample(const Vec3f& reference, float u_
                     ? std::clamp((u_point.x - cdf_before) / pmf, 0.0f, 0x1.fffffep-1f)
                     : u_select;
   }
-  std::optional<LightSample> s = sample_emitter(index, reference, u_point, receiver_normal);
-  if (s) s->pdf *= pmf;
-  return s;
+  // One LightSample object from here to the caller: returned as a prvalue here and as
+  // the single named result in sample_emitter (copy elision), not copied at each level.
+  return sample_emitter(index, reference, u_point, receiver_normal, pmf);
 }
 
 std::optional<LightSample> LightSampler::sample_emitter(std::size_t index, const Vec3f& reference, Vec2f u,
-                                                        const Vec3f& receiver_normal) const {
+                                                        const Vec3f& receiver_normal, float selection_pmf) const {
+  std::optional<LightSample> result(std::in_place);
+  if (fill_emitter_sample(index, reference, u, receiver_normal, *result))
+    result->pdf *= selection_pmf;
+  else
+    result.reset();
+  return result;
+}
+
+bool LightSampler::fill_emitter_sample(std::size_t index, const Vec3f& reference, Vec2f u,
+                                       const Vec3f& receiver_normal, LightSample& s) const {
   const Emitter& e = emitters_[index];
-  LightSample s;
   s.emitter = e.emitter;
   switch (e.kind) {
     case Kind::triangle: {
       const auto t = options_.triangle == TriangleLightSampling::area
                          ? sample_triangle_light_by_area(e.triangle, reference, u)
                          : sample_triangle_light(e.triangle, options_.triangle, reference, receiver_normal, u);
-      if (!t) return std::nullopt;
+      if (!t) return false;
       s.position = t->position;
       s.normal = e.triangle.normal;
       s.wi = t->wi;
@@ -316,13 +325,13 @@ std::optional<LightSample> LightSampler::sample_emitter(std::size_t index, const
         s.has_uv = true;
         s.uv = barycentric_uv(e.uv0, e.duv1, e.duv2, t->barycentric);
       }
-      return s;
+      return true;
     }
     case Kind::point:
     case Kind::spot: {
       const Vec3f d = e.position - reference;
       const float d2 = length_squared(d);
-      if (!(d2 > 0.0f)) return std::nullopt;
+      if (!(d2 > 0.0f)) return false;
       s.distance = std::sqrt(d2);
       s.wi = d / s.distance;
       s.position = e.position;
@@ -331,8 +340,8 @@ std::optional<LightSample> LightSampler::sample_emitter(std::size_t index, const
       // Intensity I (cd) → irradiance-like I / r² at the reference point.
       s.scale = 1.0f / d2;
       if (e.kind == Kind::spot) s.scale *= spot_falloff(dot(-s.wi, e.axis), e.cos_outer, e.cos_inner);
-      if (s.scale <= 0.0f) return std::nullopt;
-      return s;
+      if (s.scale <= 0.0f) return false;
+      return true;
     }
     case Kind::directional: {
       s.distance = std::numeric_limits<float>::infinity();
@@ -340,13 +349,13 @@ std::optional<LightSample> LightSampler::sample_emitter(std::size_t index, const
         s.wi = -e.axis;
         s.is_delta = true;
         s.pdf = 1.0f;
-        return s;  // scale 1: the spectrum is the illuminance
+        return true;  // scale 1: the spectrum is the illuminance
       }
       const Vec3f local = sample_uniform_cone(u, e.cos_max);
       s.wi = Frame::from_normal(-e.axis).to_world(local);
       s.pdf = uniform_cone_pdf(e.cos_max);
       s.scale = e.disc_radiance_scale;
-      return s;
+      return true;
     }
     case Kind::environment: {
       s.distance = std::numeric_limits<float>::infinity();
@@ -357,15 +366,15 @@ std::optional<LightSample> LightSampler::sample_emitter(std::size_t index, const
       } else {
         const PiecewiseConstant2D::Sample m = environment_distribution_.sample(u);
         const float jacobian = environment_solid_angle_per_uv_area(e.mapping, m.p);
-        if (!(jacobian > 0.0f) || m.pdf <= 0.0f) return std::nullopt;
+        if (!(jacobian > 0.0f) || m.pdf <= 0.0f) return false;
         s.wi = normalize(e.map_to_world.apply_vector(environment_uv_to_direction(e.mapping, m.p)));
         s.pdf = m.pdf / jacobian;
       }
       s.rgb = environment_rgb(e, s.wi);
-      return s;
+      return true;
     }
   }
-  return std::nullopt;
+  return false;
 }
 
 float LightSampler::pdf_triangle(std::uint32_t mesh, std::uint32_t triangle, const Vec3f& reference,

@@ -128,8 +128,12 @@ class LightSampler {
   float environment_pdf(const Emitter& e, const Vec3f& d) const;
   static Vec3f map_direction(const Emitter& e, const Vec3f& world_direction);  // unit, in the map's frame
   PiecewiseConstant2D environment_distribution_;
+  // The sample on emitter `index`, its pdf times the selection probability.
   std::optional<LightSample> sample_emitter(std::size_t index, const Vec3f& reference, Vec2f u,
-                                           const Vec3f& receiver_normal) const;
+                                           const Vec3f& receiver_normal, float selection_pmf) const;
+  // Fills `s` (default-constructed) for emitter `index`; false when it cannot light the point.
+  bool fill_emitter_sample(std::size_t index, const Vec3f& reference, Vec2f u, const Vec3f& receiver_normal,
+                           LightSample& s) const;
 
   LightSamplerOptions options_;
 

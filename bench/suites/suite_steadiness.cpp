@@ -2,7 +2,7 @@
 // a fixed number of samples per pass, regeneration on (a finished path restarts at once
 // with its pixel's next sample) and off (one wave per sample, the queue drains to the
 // longest path). Reports the pass-time spread and how full the queues stay: live paths
-// per step as a fraction of the path slots (one per pixel).
+// per step (added across the tiles, step by step) as a fraction of the pixels.
 #include <algorithm>
 #include <vector>
 
@@ -53,7 +53,8 @@ SuiteReport run_steadiness_suite(const BenchOptions& o) {
   }
   report.data["rows"] = rows;
   report.notes.push_back("CoV = standard deviation / mean of the pass times; live fraction = live paths per "
-                         "wavefront step / path slots (one per pixel), over every step of every pass");
+                         "wavefront step / pixels, over every step of every pass; each tile runs its own queue, "
+                         "so a step's count adds every tile's paths at that step");
   return report;
 }
 

@@ -110,7 +110,7 @@ TEST(PathTracer, MaxDepthOneIsDirectLightOnly) {
 TEST(Renderer, ImageDoesNotDependOnThreadCount) {
   const Scene scene = make_cornell_box();
   RenderSettings s = small_settings(9, 8);
-  // Two tiles of the wavefront integrator (kTilePixels = 4096), the second one partial, so
+  // Two tiles of the wavefront integrator (kWavefrontTilePixels = 4096), the second one partial, so
   // that two threads do split the image.
   s.width = 96;
   s.height = 64;
@@ -162,7 +162,7 @@ TEST(Renderer, BouncesPerPassShowsProgressWithoutChangingTheImage) {
 // same image bit for bit and the same ray counts, on an image of three tiles, the last
 // one partial.
 TEST(Renderer, TiledQueuesGiveTheWholeImageQueuesImage) {
-  static_assert(WavefrontIntegrator<SpectralMode<4>>::kTilePixels == 4096, "sizes below assume 4096");
+  static_assert(kWavefrontTilePixels == 4096, "sizes below assume 4096");
   const Scene scene = make_cornell_box();
   RenderSettings s = small_settings(13, 3);
   s.width = 100;

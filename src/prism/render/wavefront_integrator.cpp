@@ -309,10 +309,7 @@ PassStatistics WavefrontIntegrator<Mode>::render_samples(Film& film, std::uint32
   PassStatistics total;
   for (std::uint32_t s = 0; s < count; ++s) {
     const PassStatistics wave = run_wave(film, first_sample + s, 1, bounces_per_pass, after_bounces);
-    total.rays += wave.rays;
-    total.shadow_rays += wave.shadow_rays;
-    total.invalid_samples += wave.invalid_samples;
-    total.completed_samples += wave.completed_samples;
+    total.add_counts(wave);
     total.steps += wave.steps;
     total.live_paths_per_step.insert(total.live_paths_per_step.end(), wave.live_paths_per_step.begin(),
                                      wave.live_paths_per_step.end());
@@ -360,22 +357,22 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
     return run_queue(film, p, live, /*parallel=*/true, bounces_per_pass, after_bounces);
   }
 
-  // Tiles: each thread takes a run of kTilePixels pixels and runs their whole wave alone,
+  // Tiles: each thread takes a run of kWavefrontTilePixels pixels and runs their whole wave alone,
   // in a path state of its own (≈ 250 B per slot, 1 MB per tile) that stays in the core's
   // caches for every stage, where a whole-image queue streams its state from memory once
   // per stage; the threads meet once per pass instead of three times per step, and the
   // path state is a few tiles' worth instead of one slot per pixel. A slot is still one
   // pixel and renders its samples in order, so the image is bitwise that of the lockstep
   // queue (wavefront_integrator.h, "Determinism").
-  const std::size_t tiles = (pixels + kTilePixels - 1) / kTilePixels;
+  const std::size_t tiles = (pixels + kWavefrontTilePixels - 1) / kWavefrontTilePixels;
   std::vector<PassStatistics> per_tile(tiles);
   parallel_for(tiles, 1, [&](std::size_t tb, std::size_t te) {
     for (std::size_t t = tb; t < te; ++t) {
-      const auto begin = static_cast<std::uint32_t>(t * kTilePixels);
-      const auto end = static_cast<std::uint32_t>(std::min<std::size_t>(pixels, (t + 1) * kTilePixels));
+      const auto begin = static_cast<std::uint32_t>(t * kWavefrontTilePixels);
+      const auto end = static_cast<std::uint32_t>(std::min<std::size_t>(pixels, (t + 1) * kWavefrontTilePixels));
       std::unique_ptr<Paths> p = acquire_tile_paths();
       p->first_pixel = begin;
-      p->first_hit_aovs.resize(aovs ? kTilePixels : 0u);
+      p->first_hit_aovs.resize(aovs ? kWavefrontTilePixels : 0u);
       std::vector<std::uint32_t> live(end - begin);
       for (std::uint32_t s = 0; s < end - begin; ++s) {
         live[s] = s;
@@ -388,10 +385,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
   // Per-step figures add up across tiles step by step (each tile counts its own steps).
   PassStatistics stats;
   for (const PassStatistics& t : per_tile) {
-    stats.rays += t.rays;
-    stats.shadow_rays += t.shadow_rays;
-    stats.invalid_samples += t.invalid_samples;
-    stats.completed_samples += t.completed_samples;
+    stats.add_counts(t);
     stats.steps = std::max(stats.steps, t.steps);
     if (stats.live_paths_per_step.size() < t.live_paths_per_step.size())
       stats.live_paths_per_step.resize(t.live_paths_per_step.size(), 0u);
@@ -414,7 +408,7 @@ std::unique_ptr<typename WavefrontIntegrator<Mode>::Paths> WavefrontIntegrator<M
       return p;
     }
   }
-  return std::make_unique<Paths>(kTilePixels);
+  return std::make_unique<Paths>(kWavefrontTilePixels);
 }
 
 template <class Mode>

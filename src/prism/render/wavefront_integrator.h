@@ -5,7 +5,7 @@
 // roulette), shadow rays, then completion. A finished path is regenerated at once with its
 // pixel's next sample, so the queue stays full and step times stay steady; queues are
 // compacted every step, so only live paths are traced. The image is cut into tiles of
-// kTilePixels pixels, one queue each, and each thread runs whole tiles: a tile's path
+// kWavefrontTilePixels pixels, one queue each, and each thread runs whole tiles: a tile's path
 // state stays in cache across the stages (1.07× at 256², 1.13× at 512², one thread;
 // BENCHMARKS.md "Session 6"). Only a pass that reports every few bounces keeps one queue
 // for the whole image, stepped in lockstep with each stage split across the threads.
@@ -68,13 +68,18 @@ struct PassStatistics {
   std::uint64_t completed_samples = 0;
   int steps = 0;
   std::vector<std::uint32_t> live_paths_per_step;
+  // Adds another queue's ray and sample counts (the per-step figures are the caller's).
+  void add_counts(const PassStatistics& other) {
+    rays += other.rays;
+    shadow_rays += other.shadow_rays;
+    invalid_samples += other.invalid_samples;
+    completed_samples += other.completed_samples;
+  }
 };
 
 template <class Mode>
 class WavefrontIntegrator {
  public:
-  static constexpr std::size_t kTilePixels = kWavefrontTilePixels;
-
   ~WavefrontIntegrator();
   WavefrontIntegrator(const Scene& scene, const EmbreeAccel& accel, const LightSampler& lights,
                       const PinholeCamera& camera, const ColorContext<Mode>& colors, const PathSettings& settings,

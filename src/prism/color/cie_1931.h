@@ -1,6 +1,9 @@
 #pragma once
 // The CIE 1931 2° standard observer (CIE 018:2019, tabulated at 1 nm) and the photometric
 // constants that turn its ȳ integral into luminance.
+#include <algorithm>
+
+#include "prism/color/tabulated_data.h"
 #include "prism/core/vec.h"
 
 namespace prism::color {
@@ -14,9 +17,27 @@ inline constexpr double kVisibleRangeNm = kVisibleMaxNm - kVisibleMinNm;
 // Maximum luminous efficacy of radiation at 555 nm (SI definition of the candela): lm/W.
 inline constexpr double kMaxLuminousEfficacyLmPerW = 683.0;
 
+namespace detail {
+// wavelength_nm, x̄, ȳ, z̄ per row, 360–830 nm at 1 nm (one object for the whole program).
+inline const data::Table& cie1931_table() {
+  static const data::Table table = data::cie1931_2deg_xyz();
+  return table;
+}
+}  // namespace detail
+
 // x̄, ȳ, z̄ at `wavelength_nm`, linearly interpolated between the 1 nm table entries; zero
-// outside the tabulated 360–830 nm.
-Vec3d cie1931_xyz_bar(double wavelength_nm);
+// outside the tabulated 360–830 nm. Inline: the film calls it for every wavelength of
+// every path sample.
+inline Vec3d cie1931_xyz_bar(double wavelength_nm) {
+  const data::Table& table = detail::cie1931_table();
+  const double first_nm = table.at(0, 0);
+  const double offset = wavelength_nm - first_nm;  // the table is at exactly 1 nm steps
+  if (!(offset >= 0.0) || offset > table.rows - 1) return {};
+  const int i = std::min(static_cast<int>(offset), table.rows - 2);
+  const double t = offset - i;
+  auto row = [&](int r) { return Vec3d{table.at(r, 1), table.at(r, 2), table.at(r, 3)}; };
+  return row(i) * (1.0 - t) + row(i + 1) * t;
+}
 double cie1931_y_bar(double wavelength_nm);
 
 // ∫ȳ dλ over [380, 780] nm by the trapezoid rule at 1 nm (≈ 106.857): the Y of a flat

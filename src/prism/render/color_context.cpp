@@ -76,23 +76,11 @@ Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::reflectance(const Vec3f
 }
 
 template <int N>
-Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::base_color(std::uint32_t material,
-                                                                     const Wavelengths<Mode>& w) const {
+Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::mallett_yuksel_base_color(std::uint32_t material,
+                                                                                    const Wavelengths<Mode>& w) const {
   Spectrum<Mode> s;
-  if (settings_.upsampling == Upsampling::mallett_yuksel) {
-    const color::MallettYukselSpectrum my(base_color_rgb_[material]);
-    for (int i = 0; i < N; ++i) s[i] = static_cast<float>(my(w.wavelength_nm[i]));
-  } else {
-    s.values = color::evaluate_sigmoid_polynomial(base_color_jh_[material], w.wavelength_nm);
-  }
-  return s;
-}
-
-template <int N>
-Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::emission(std::uint32_t emitter, const Wavelengths<Mode>& w) const {
-  Spectrum<Mode> s;
-  const color::EmissionSpectrum& e = emitters_[emitter];
-  s.values = color::evaluate_sigmoid_polynomial(e.shape, w.wavelength_nm, static_cast<float>(e.scale));
+  const color::MallettYukselSpectrum my(base_color_rgb_[material]);
+  for (int i = 0; i < N; ++i) s[i] = static_cast<float>(my(w.wavelength_nm[i]));
   return s;
 }
 
@@ -106,12 +94,6 @@ Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::rgb_radiance(const Vec3
   const double k = 2.0 * m / (color::kMaxLuminousEfficacyLmPerW * color::cie1931_y_integral());
   s.values = color::evaluate_sigmoid_polynomial(c, w.wavelength_nm, static_cast<float>(k));
   return s;
-}
-
-template <int N>
-Vec3d ColorContext<SpectralMode<N>>::to_film(const Spectrum<Mode>& value, const Wavelengths<Mode>& w) const {
-  // Y in nits: the emission rule scales spectra so that 683 ∫ L ȳ dλ is the luminance.
-  return color::to_xyz(value, w) * color::kMaxLuminousEfficacyLmPerW;
 }
 
 template <int N>

@@ -14,6 +14,7 @@
 
 #include "prism/color/color_space.h"
 #include "prism/color/emission_spectrum.h"
+#include "prism/color/cie_1931.h"
 #include "prism/color/sigmoid_polynomial.h"
 #include "prism/render/transport_mode.h"
 #include "prism/scene/scene.h"
@@ -40,6 +41,8 @@ class ColorContext<SpectralMode<N>> {
   // `u` is the sample's primary number of wavelength sampling, uniform in [0, 1).
   Wavelengths<Mode> sample_wavelengths(std::uint64_t sample_index, double u) const;
   Spectrum<Mode> reflectance(const Vec3f& linear_srgb, const Wavelengths<Mode>& w) const;
+  // base_color, emission and to_film run at every vertex or sample of every path: inline
+  // below, so the spectra stay in registers instead of passing through memory at each call.
   Spectrum<Mode> base_color(std::uint32_t material, const Wavelengths<Mode>& w) const;
   // Emitted radiance (or intensity / illuminance for delta lights) of an emitter.
   Spectrum<Mode> emission(std::uint32_t emitter, const Wavelengths<Mode>& w) const;
@@ -62,12 +65,38 @@ class ColorContext<SpectralMode<N>> {
   void terminate_secondary(Wavelengths<Mode>& w) const;
 
  private:
+  Spectrum<Mode> mallett_yuksel_base_color(std::uint32_t material, const Wavelengths<Mode>& w) const;
+
   TransportSettings settings_;
   Mat3 srgb_to_film_;
   std::vector<color::SigmoidPolynomial> base_color_jh_;
   std::vector<Vec3d> base_color_rgb_;
   std::vector<color::EmissionSpectrum> emitters_;
 };
+
+template <int N>
+inline Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::base_color(std::uint32_t material,
+                                                                            const Wavelengths<Mode>& w) const {
+  if (settings_.upsampling == Upsampling::mallett_yuksel) return mallett_yuksel_base_color(material, w);
+  Spectrum<Mode> s;
+  s.values = color::evaluate_sigmoid_polynomial(base_color_jh_[material], w.wavelength_nm);
+  return s;
+}
+
+template <int N>
+inline Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::emission(std::uint32_t emitter,
+                                                                          const Wavelengths<Mode>& w) const {
+  Spectrum<Mode> s;
+  const color::EmissionSpectrum& e = emitters_[emitter];
+  s.values = color::evaluate_sigmoid_polynomial(e.shape, w.wavelength_nm, static_cast<float>(e.scale));
+  return s;
+}
+
+template <int N>
+inline Vec3d ColorContext<SpectralMode<N>>::to_film(const Spectrum<Mode>& value, const Wavelengths<Mode>& w) const {
+  // Y in nits: the emission rule scales spectra so that 683 ∫ L ȳ dλ is the luminance.
+  return color::to_xyz(value, w) * color::kMaxLuminousEfficacyLmPerW;
+}
 
 template <>
 class ColorContext<RgbMode> {

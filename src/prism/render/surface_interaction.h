@@ -77,7 +77,8 @@ inline SurfaceInteraction surface_interaction(const Scene& scene, const Hit& hit
 // towards, scaled to the coordinates' magnitude so it stays above float rounding (about
 // 2^-23 relative) at any scene scale.
 inline Vec3f offset_ray_origin(const Vec3f& p, const Vec3f& n, const Vec3f& direction) {
-  const float magnitude = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z), 1.0f});
+  // Pairwise max, not std::max({…}): the initializer-list form is a loop over memory.
+  const float magnitude = std::max(std::max(std::abs(p.x), std::abs(p.y)), std::max(std::abs(p.z), 1.0f));
   return p + (dot(direction, n) >= 0.0f ? n : -n) * (magnitude * 1e-5f);
 }
 

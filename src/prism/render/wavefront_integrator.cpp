@@ -1,6 +1,7 @@
 #include "prism/render/wavefront_integrator.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -66,7 +67,9 @@ WavefrontIntegrator<Mode>::~WavefrontIntegrator() = default;
 template <class Mode>
 Spectrum<Mode> WavefrontIntegrator<Mode>::base_color(const Material& m, const SurfaceInteraction& si, float cone_width,
                                                      const Ray& ray, const Wavelengths<Mode>& wl) const {
-  if (const auto rgb = textured_base_color(m, si, cone_width, ray)) return colors_.reflectance(*rgb, wl);
+  // Untextured materials (most vertices) skip the texture lookup's call chain.
+  if (m.base_color_texture >= 0)
+    if (const auto rgb = textured_base_color(m, si, cone_width, ray)) return colors_.reflectance(*rgb, wl);
   return colors_.base_color(si.material, wl);
 }
 
@@ -105,6 +108,7 @@ template <class Mode>
 MaterialPoint WavefrontIntegrator<Mode>::material_point(const Material& m, const SurfaceInteraction& si,
                                                         float cone_width, const Ray& ray) const {
   MaterialPoint point = untextured_point(m);
+  if (m.metallic_roughness_texture < 0) return point;
   // glTF 2.0 §3.9.2: metallicRoughnessTexture's G channel scales roughnessFactor, B scales
   // metallicFactor (linear data). Grey textures expand to (g, g, g), so both use g.
   if (const auto texel = texel_at_hit(m.metallic_roughness_texture, si, cone_width, ray)) {
@@ -445,8 +449,15 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
     const std::size_t chunks = (live.size() + kGrain - 1) / kGrain;
     survivor_counts.assign(chunks, 0);
     for_range(parallel, chunks, 1, [&](std::size_t cb, std::size_t ce) {
+      // The chunk's finished slots, and which of them restart: the film and the new
+      // samples are done after the walk, each in a loop of its own, so that the CIE and
+      // wavelength tables and the sampler stay in the L1 cache for the whole run of slots
+      // instead of taking turns with the path state. Each slot's numbers are its own, so
+      // the order changes nothing.
+      std::array<std::uint32_t, kGrain> finished, restarted;
       for (std::size_t c = cb; c < ce; ++c) {
-        std::uint64_t local_invalid = 0, local_completed = 0, traced = 0;
+        std::uint64_t local_invalid = 0, traced = 0;
+        std::size_t finished_count = 0, restarted_count = 0;
         const std::size_t end = std::min(live.size(), (c + 1) * kGrain);
         accel_.occluded_slots(p.shadow_ray.data(), live.data() + c * kGrain, end - c * kGrain,
                               p.shadow_pending.data(), p.shadow_blocked.data());
@@ -458,19 +469,24 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
             if (!p.shadow_blocked[s]) p.radiance[s] += p.shadow_contribution[s];
           }
           if (p.finished[s]) {
-            const Vec3d value = colors_.to_film(p.radiance[s], p.wavelengths[s]);
-            if (is_finite(value)) {
-              film.add_sample(p.first_pixel + s, value);
-              if (!p.first_hit_aovs.empty()) film.add_aov_sample(p.first_pixel + s, p.first_hit_aovs[s]);
-            } else {
-              ++local_invalid;  // never written to the film; reported at the end
-            }
-            ++local_completed;
+            finished[finished_count++] = s;
             if (!regenerate_ || p.sample_index[s] + 1 >= p.sample_end[s]) continue;
-            generate(p, s, p.sample_index[s] + 1);
+            restarted[restarted_count++] = s;
           }
           live[kept++] = s;
         }
+        for (std::size_t k = 0; k < finished_count; ++k) {
+          const std::uint32_t s = finished[k];
+          const Vec3d value = colors_.to_film(p.radiance[s], p.wavelengths[s]);
+          if (is_finite(value)) {
+            film.add_sample(p.first_pixel + s, value);
+            if (!p.first_hit_aovs.empty()) film.add_aov_sample(p.first_pixel + s, p.first_hit_aovs[s]);
+          } else {
+            ++local_invalid;  // never written to the film; reported at the end
+          }
+        }
+        for (std::size_t k = 0; k < restarted_count; ++k) generate(p, restarted[k], p.sample_index[restarted[k]] + 1);
+        const std::uint64_t local_completed = finished_count;
         survivor_counts[c] = static_cast<std::uint32_t>(kept - c * kGrain);
         invalid += local_invalid;
         completed += local_completed;

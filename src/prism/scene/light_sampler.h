@@ -28,6 +28,11 @@
 namespace prism {
 
 struct LightSample {
+  // User-provided, so that value-initialisation (std::optional's in-place construction)
+  // writes the member initialisers below one by one: as an aggregate the whole 88 bytes
+  // are cleared first, which GCC 12 does with `rep stosq` (tens of cycles to start, and
+  // NEE builds one sample per path vertex).
+  LightSample() {}
   Vec3f wi;                 // unit direction from the shading point towards the light
   float distance = 0.0f;    // to the sampled point; infinity for directional lights
   float pdf = 0.0f;         // solid-angle density × selection probability; for delta lights the selection probability

@@ -119,9 +119,9 @@ MaterialPoint WavefrontIntegrator<Mode>::material_point(const Material& m, const
 }
 
 template <class Mode>
-Spectrum<Mode> WavefrontIntegrator<Mode>::emitted_radiance(std::uint32_t material, bool has_uv, Vec2f uv,
-                                                           float level_of_detail, const Wavelengths<Mode>& wl) const {
-  if (!has_uv) return colors_.emission(material, wl);  // also every non-geometric light
+Spectrum<Mode> WavefrontIntegrator<Mode>::textured_emitted_radiance(std::uint32_t material, Vec2f uv,
+                                                                    float level_of_detail,
+                                                                    const Wavelengths<Mode>& wl) const {
   const int texture = scene_.materials[material].emission.texture;
   if (texture < 0 || static_cast<std::size_t>(texture) >= textures_.size()) return colors_.emission(material, wl);
   const TexelRgba t = texel_at(texture, uv, level_of_detail);
@@ -226,11 +226,14 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   if (bsdf.uses_lobe_sample()) needs |= kNeedLobe;
   if (bsdf.uses_direction_sample()) needs |= kNeedDirection;
   if (p.depth[slot] + 1 >= settings_.russian_roulette_depth) needs |= kNeedRoulette;
-  const auto row = static_cast<std::uint32_t>(width_);
   const std::uint32_t pixel = p.first_pixel + slot;
-  const BounceSamples u = bounce_samples(settings_.sampler,
-                                         PixelSample{seed_, pixel % row, pixel / row, pixel, p.sample_index[slot]},
-                                         p.depth[slot], needs);
+  PixelSample pixel_sample{seed_, 0, 0, pixel, p.sample_index[slot]};
+  if (settings_.sampler == SamplerKind::zsobol) {  // the only sampler that reads x and y (an integer division)
+    const auto row = static_cast<std::uint32_t>(width_);
+    pixel_sample.pixel_x = pixel % row;
+    pixel_sample.pixel_y = pixel / row;
+  }
+  const BounceSamples u = bounce_samples(settings_.sampler, pixel_sample, p.depth[slot], needs);
 
   if (light_sampled) {
     if (const auto ls = lights_.sample(si.position, u.light_select, u.light, si.shading.n)) {

@@ -39,6 +39,7 @@ void PiecewiseConstant1D::build_guide_table() {
   // mass), so that a guide cell holds at most one CDF step wherever cells have mass and
   // find_cell's forward walk takes at most one step there (capped at 2^20 entries).
   const int n = size();
+  if (n > 65536) return;  // cell indices would not fit the 16-bit entries
   float smallest = 1.0f;
   for (int i = 0; i < n; ++i)
     if (cdf_[i + 1] > cdf_[i]) smallest = std::min(smallest, cdf_[i + 1] - cdf_[i]);
@@ -50,7 +51,7 @@ void PiecewiseConstant1D::build_guide_table() {
     // rounding, which is far below float's spacing, so cdf_[guide_[g]] ≤ u holds for it.
     const double u = double(g) / double(guide_.size());
     while (static_cast<int>(i) + 1 < n && double(cdf_[i + 1]) <= u) ++i;
-    guide_[g] = i;
+    guide_[g] = static_cast<std::uint16_t>(i);
   }
 }
 

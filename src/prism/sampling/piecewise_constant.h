@@ -37,7 +37,7 @@ class PiecewiseConstant1D {
   float pdf(float x) const;  // 0 outside [min, max]
   // The cell pdf() reads at x ∈ [min, max] (the last cell for x = max).
   int cell(float x) const;
-  // Builds a guide table (at least four 4-byte entries per cell) that makes sampling O(1)
+  // Builds a guide table (at least four 2-byte entries per cell) that makes sampling O(1)
   // instead of a binary search over the CDF; the cells found are the same. For small, hot
   // distributions (the wavelength lobes); environment maps keep the search and its
   // smaller footprint.
@@ -55,8 +55,10 @@ class PiecewiseConstant1D {
 
   std::vector<float> f_;
   std::vector<float> cdf_;  // size N + 1, cdf_[0] = 0, cdf_[N] = 1
-  // guide_[g]: the largest cell i with cdf_[i] ≤ g / guide_.size(), when built.
-  std::vector<std::uint32_t> guide_;
+  // guide_[g]: the largest cell i with cdf_[i] ≤ g / guide_.size(), when built. 16 bits:
+  // the wavelength lobes' three tables then fit the L1 cache beside the path state
+  // (distributions of more than 65536 cells keep the binary search).
+  std::vector<std::uint16_t> guide_;
   float integral_ = 0.0f;
   float min_ = 0.0f, max_ = 1.0f;
   float width_ = 1.0f;          // (max − min) / N
@@ -75,6 +77,11 @@ inline int PiecewiseConstant1D::find_cell(float u) const {
     // guide_[g] ≤ the answer for every u ≥ g / size, so walking forward finds it.
     const std::size_t g = std::min(static_cast<std::size_t>(double(u) * double(guide_.size())), guide_.size() - 1);
     int i = static_cast<int>(guide_[g]);
+    // The guide is fine enough that one step forward is all it takes wherever cells have
+    // mass (build_guide_table): that step without a branch, whose outcome is a coin flip,
+    // then the loop, which moves on only past cells of zero mass. cdf_ has size() + 1
+    // entries, so cdf_[i + 1] is there even when i + 1 = size().
+    i += static_cast<int>(i + 1 < size()) & static_cast<int>(cdf_[static_cast<std::size_t>(i) + 1] <= u);
     while (i + 1 < size() && cdf_[static_cast<std::size_t>(i) + 1] <= u) ++i;
     return i;
   }

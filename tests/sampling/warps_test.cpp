@@ -112,6 +112,28 @@ TEST(Warps, UniformTriangleIsUniform) {
   EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
 }
 
+// Heitz (2019): the half u.x < u.y is sheared onto b2 > b1 by (u.x/2, u.y − u.x/2), the
+// other half onto b1 ≥ b2 by (u.x − u.y/2, u.y/2). Exact in float for these dyadic inputs.
+TEST(Warps, UniformTriangleIsHeitzLowDistortionMap) {
+  const auto expect_map = [](Vec2f u, Vec2f b) {
+    const Vec2f got = sample_uniform_triangle(u);
+    EXPECT_EQ(got.x, b.x) << u.x << ", " << u.y;
+    EXPECT_EQ(got.y, b.y) << u.x << ", " << u.y;
+  };
+  expect_map(Vec2f(0.25f, 0.75f), Vec2f(0.125f, 0.625f));
+  expect_map(Vec2f(0.75f, 0.25f), Vec2f(0.625f, 0.125f));
+  expect_map(Vec2f(0.5f, 0.5f), Vec2f(0.25f, 0.25f));
+  expect_map(Vec2f(0.0f, 0.0f), Vec2f(0.0f, 0.0f));
+  // Low distortion: points 1/64 apart in the square stay within a small multiple of that
+  // on the triangle (the square-root map stretches them without bound near u.x = 0).
+  for (int i = 0; i < 64; ++i)
+    for (int j = 0; j < 64; ++j) {
+      const Vec2f a = sample_uniform_triangle(Vec2f(i / 64.0f, j / 64.0f));
+      const Vec2f b = sample_uniform_triangle(Vec2f((i + 1) / 64.0f * 0.999f, j / 64.0f));
+      EXPECT_LT(std::abs(a.x - b.x) + std::abs(a.y - b.y), 2.0f / 64.0f) << i << ", " << j;
+    }
+}
+
 TEST(Warps, PowerHeuristic) {
   EXPECT_FLOAT_EQ(power_heuristic(1.0f, 1.0f), 0.5f);
   EXPECT_FLOAT_EQ(power_heuristic(3.0f, 1.0f), 0.9f);

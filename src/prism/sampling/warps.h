@@ -58,11 +58,19 @@ inline float cosine_hemisphere_pdf(float cos_theta) {
   return cos_theta > 0.0f ? cos_theta * std::numbers::inv_pi_v<float> : 0.0f;
 }
 
-// Uniform barycentrics on a triangle (Osada et al. 2002, square-root parameterisation).
-// Returns (b1, b2); b0 = 1 - b1 - b2. Area density is 1 / area.
+// Uniform barycentrics on a triangle by Heitz's low-distortion map between the square and
+// the triangle (E. Heitz, "A Low-Distortion Map Between Triangle and Square", 2019): the
+// square is cut along its diagonal and each half sheared onto half of the triangle, so the
+// map is area-preserving (Jacobian ½ on both halves) and keeps neighbouring points
+// neighbours: a stratified u stays stratified on the light, which the square-root
+// parameterisation (Osada et al. 2002) distorts towards one vertex. Also no square root on
+// the NEE path. Returns (b1, b2); b0 = 1 - b1 - b2. Area density is 1 / area.
 inline Vec2f sample_uniform_triangle(Vec2f u) {
-  const float su = std::sqrt(u.x);
-  return {u.y * su, 1.0f - su};
+  // Half of the smaller coordinate, and the larger one less that; which of the two goes
+  // where keeps the halves u.x < u.y and u.x ≥ u.y on their own sides of b1 = b2.
+  const float half = 0.5f * std::min(u.x, u.y);
+  const float rest = std::max(u.x, u.y) - half;
+  return u.x < u.y ? Vec2f(half, rest) : Vec2f(rest, half);
 }
 
 // Uniform directions in the cone of half-angle acos(cos_max) around +z.

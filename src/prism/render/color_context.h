@@ -12,9 +12,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "prism/color/cie_1931.h"
 #include "prism/color/color_space.h"
 #include "prism/color/emission_spectrum.h"
-#include "prism/color/cie_1931.h"
 #include "prism/color/sigmoid_polynomial.h"
 #include "prism/render/transport_mode.h"
 #include "prism/scene/scene.h"

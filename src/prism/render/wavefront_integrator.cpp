@@ -489,10 +489,9 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
           }
         }
         for (std::size_t k = 0; k < restarted_count; ++k) generate(p, restarted[k], p.sample_index[restarted[k]] + 1);
-        const std::uint64_t local_completed = finished_count;
         survivor_counts[c] = static_cast<std::uint32_t>(kept - c * kGrain);
         invalid += local_invalid;
-        completed += local_completed;
+        completed += finished_count;
         shadow_rays += traced;
       }
     });

@@ -122,15 +122,20 @@ class StbInput {
 // Each scan (SOS, §B.2.3: Ns, then per component its selector byte Td<<4|Ta, then Ss, Se,
 // Ah<<4|Al) may only select tables defined earlier: stb_image keeps its four DC and four
 // AC tables in uninitialised memory and decodes with whatever is there (an index of 637
-// into a 256-entry array, found by the same target). A scan needs its DC table when it
-// codes DC coefficients for the first time (Ss = 0, Ah = 0; a DC refinement reads raw
-// bits) and its AC table when it codes any AC coefficient (Se > 0), as in §G.1.2.
+// into a 256-entry array, found by the same target). In a progressive frame (SOF2) a scan
+// needs its DC table when it codes DC coefficients for the first time (Ss = 0, Ah = 0; a
+// DC refinement reads raw bits) and its AC table when it codes any AC coefficient (Se > 0),
+// as in §G.1.2. In a sequential frame (SOF0, SOF1) every scan codes whole blocks (the
+// spectral selection must be 0..63, §B.2.3, and stb_image decodes all 64 coefficients
+// whatever it says), so every component needs both tables: a baseline scan declaring
+// Se = 0 with an undefined AC table was decoded with it (index −1, found by the same target).
 void check_jpeg_huffman_tables(std::span<const unsigned char> bytes, std::string_view name) {
   const auto corrupt = [&](std::string_view why) {
     throw IoError(fmt::format("cannot read image '{}': corrupt JPEG ({})", name, why));
   };
   std::array<bool, 4> dc_defined{};
   std::array<bool, 4> ac_defined{};
+  bool progressive = false;  // the frame's SOF: stb_image reads SOF0, SOF1 and SOF2
   std::size_t pos = 2;  // after SOI
   while (pos + 1 < bytes.size()) {
     if (bytes[pos] != 0xFF) {
@@ -147,6 +152,7 @@ void check_jpeg_huffman_tables(std::span<const unsigned char> bytes, std::string
     const std::size_t length = (std::size_t{bytes[pos + 2]} << 8) | bytes[pos + 3];
     if (length < 2) corrupt("segment length below 2");
     const std::size_t end = std::min(bytes.size(), pos + 2 + length);
+    if (marker == 0xC0 || marker == 0xC1 || marker == 0xC2) progressive = marker == 0xC2;
     if (marker == 0xC4) {
       std::size_t t = pos + 4;
       while (t < end) {
@@ -167,8 +173,8 @@ void check_jpeg_huffman_tables(std::span<const unsigned char> bytes, std::string
       const std::size_t components = bytes[components_at];
       const std::size_t spectral_at = components_at + 1 + 2 * components;
       if (spectral_at + 3 > end) corrupt("scan header runs past its segment");
-      const bool needs_dc = bytes[spectral_at] == 0 && (bytes[spectral_at + 2] >> 4) == 0;
-      const bool needs_ac = bytes[spectral_at + 1] > 0;
+      const bool needs_dc = !progressive || (bytes[spectral_at] == 0 && (bytes[spectral_at + 2] >> 4) == 0);
+      const bool needs_ac = !progressive || bytes[spectral_at + 1] > 0;
       for (std::size_t c = 0; c < components; ++c) {
         const unsigned selectors = bytes[components_at + 2 + 2 * c];
         if (needs_dc && ((selectors >> 4) > 3 || !dc_defined[selectors >> 4]))

@@ -203,6 +203,17 @@ TEST(TextureFile, JpegScanUsingAnUndefinedHuffmanTableIsRefusedBeforeStbImage) {
             std::string::npos);
 }
 
+TEST(TextureFile, SequentialJpegScanNeedsBothHuffmanTablesWhateverItsSpectralSelection) {
+  // Regression (fuzz_image_readers, CI fuzz-smoke): a 715-byte baseline JPEG whose scan
+  // declares Ss = Se = 0 (valid only in progressive frames) and selects AC table 3, which no
+  // DHT defines. The walk took Se = 0 to mean "no AC coefficients", but stb_image decodes
+  // whole blocks in a sequential frame and read its uninitialised table (UBSan: index -1
+  // out of bounds for 'stbi_uc[256]' in stbi__jpeg_huff_decode).
+  EXPECT_NE(regression_input_error("fuzz_jpeg_sequential_scan_without_ac_table.jpg", TextureEncoding::srgb)
+                .find("corrupt JPEG (scan uses AC Huffman table 3 before it is defined)"),
+            std::string::npos);
+}
+
 TEST(TextureFile, PngWithAnEmptyIdatChunkIsReadWithoutIt) {
   // Regression (fuzz_image_readers, CI fuzz-smoke): an empty first IDAT made stb_image memcpy
   // to a null buffer (UBSan). Empty IDATs are dropped first; the file either decodes or is a

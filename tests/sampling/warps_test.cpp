@@ -3,7 +3,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 
 #include "prism/core/pcg32.h"
@@ -132,6 +134,44 @@ TEST(Warps, UniformTriangleIsHeitzLowDistortionMap) {
       const Vec2f b = sample_uniform_triangle(Vec2f((i + 1) / 64.0f * 0.999f, j / 64.0f));
       EXPECT_LT(std::abs(a.x - b.x) + std::abs(a.y - b.y), 2.0f / 64.0f) << i << ", " << j;
     }
+  // The branch-free form is Heitz's two-case form bit for bit, for every u the samplers
+  // make (24-bit fractions: bits_to_unit_float), ties and the edges included.
+  const auto two_case = [](Vec2f u) {
+    return u.x < u.y ? Vec2f(0.5f * u.x, u.y - 0.5f * u.x) : Vec2f(u.x - 0.5f * u.y, 0.5f * u.y);
+  };
+  Pcg32 rng(3u, 5u);
+  for (int k = 0; k < 200000; ++k) {
+    const std::uint32_t bx = rng.next_u32(), by = k % 4 == 0 ? bx : rng.next_u32();
+    const Vec2f u(static_cast<float>(bx >> 8) * 0x1p-24f, static_cast<float>(by >> 8) * 0x1p-24f);
+    const Vec2f got = sample_uniform_triangle(u), want = two_case(u);
+    ASSERT_EQ(std::bit_cast<std::uint32_t>(got.x), std::bit_cast<std::uint32_t>(want.x)) << u.x << ", " << u.y;
+    ASSERT_EQ(std::bit_cast<std::uint32_t>(got.y), std::bit_cast<std::uint32_t>(want.y)) << u.x << ", " << u.y;
+  }
+  const Vec2f top = sample_uniform_triangle(Vec2f(0x1.fffffep-1f, 0x1.fffffep-1f));
+  EXPECT_EQ(top.x, 0.5f * 0x1.fffffep-1f);
+  EXPECT_EQ(top.y, 0.5f * 0x1.fffffep-1f);
+}
+
+// The wedge choice made with masked selects gives the branching form's points bit for bit.
+TEST(Warps, ConcentricDiskSelectsMatchTheWedgeBranches) {
+  const auto branching = [](Vec2f u) {
+    const float a = 2.0f * u.x - 1.0f, b = 2.0f * u.y - 1.0f;
+    if (a == 0.0f && b == 0.0f) return Vec2f(0.0f, 0.0f);
+    const bool wedge_a = std::abs(a) > std::abs(b);
+    const float r = wedge_a ? a : b;
+    const CosSin cs = cos_sin_quarter_pi((wedge_a ? b : a) / r);
+    const float along = r * cs.cos, across = r * cs.sin;
+    return wedge_a ? Vec2f(along, across) : Vec2f(across, along);
+  };
+  Pcg32 rng(9u, 2u);
+  for (int k = 0; k < 200000; ++k) {
+    const float x = static_cast<float>(rng.next_u32() >> 8) * 0x1p-24f;
+    // Every fourth point on a diagonal |a| = |b|, where the wedges meet.
+    const float y = k % 4 == 0 ? (k % 8 == 0 ? x : 1.0f - x) : static_cast<float>(rng.next_u32() >> 8) * 0x1p-24f;
+    const Vec2f got = sample_concentric_disk(Vec2f(x, y)), want = branching(Vec2f(x, y));
+    ASSERT_EQ(std::bit_cast<std::uint32_t>(got.x), std::bit_cast<std::uint32_t>(want.x)) << x << ", " << y;
+    ASSERT_EQ(std::bit_cast<std::uint32_t>(got.y), std::bit_cast<std::uint32_t>(want.y)) << x << ", " << y;
+  }
 }
 
 TEST(Warps, PowerHeuristic) {

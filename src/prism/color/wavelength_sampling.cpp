@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "prism/core/branch_free.h"
 #include "prism/core/error.h"
 #include "prism/sampling/piecewise_constant.h"
 
@@ -185,10 +186,11 @@ namespace {
 double three_cosh_slot_u(const ThreeCoshTables::SlotPlan& slot, double u) {
   const double along = slot.reversed ? 1.0 - u : u;
   // ∈ (−1, 2): along ∈ [0, 1], |center_shift| < ½, rotation < 1. Wrapped without
-  // std::floor, a libm call in a build without SSE4.1.
+  // std::floor, a libm call in a build without SSE4.1, and without a branch on which way
+  // (a coin flip per slot; core/branch_free.h).
   double shifted = along + slot.center_shift + slot.rotation;
-  shifted -= double(shifted >= 1.0);
-  shifted += double(shifted < 0.0);
+  shifted -= select_less(shifted, 1.0, 0.0, 1.0);  // 1 where shifted ≥ 1
+  shifted += select_less(shifted, 0.0, 1.0, 0.0);  // 1 where shifted < 0
   return shifted;
 }
 

@@ -9,6 +9,7 @@
 #include <span>
 #include <vector>
 
+#include "prism/core/branch_free.h"
 #include "prism/core/vec.h"
 
 namespace prism {
@@ -85,8 +86,7 @@ inline int PiecewiseConstant1D::find_cell(float u) const {
     while (i + 1 < size() && cdf_[static_cast<std::size_t>(i) + 1] <= u) ++i;
     return i;
   }
-  const auto it = std::upper_bound(cdf_.begin(), cdf_.end(), u);
-  return std::clamp(static_cast<int>(it - cdf_.begin()) - 1, 0, size() - 1);
+  return std::clamp(static_cast<int>(upper_bound_index(cdf_.data(), cdf_.size(), u)) - 1, 0, size() - 1);
 }
 
 inline PiecewiseConstant1D::ContinuousSample PiecewiseConstant1D::sample_continuous(float u) const {

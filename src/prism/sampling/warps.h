@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "prism/core/branch_free.h"
 #include "prism/core/vec.h"
 
 namespace prism {
@@ -38,12 +39,13 @@ inline CosSin cos_sin_quarter_pi(float t) {
 inline Vec2f sample_concentric_disk(Vec2f u) {
   const float a = 2.0f * u.x - 1.0f, b = 2.0f * u.y - 1.0f;
   if (a == 0.0f && b == 0.0f) return {0.0f, 0.0f};
-  // Selects rather than branches: the wedge is a coin flip per sample.
-  const bool wedge_a = std::abs(a) > std::abs(b);
-  const float r = wedge_a ? a : b;
-  const CosSin cs = cos_sin_quarter_pi((wedge_a ? b : a) / r);
+  // The wedge is a coin flip per sample: masked selects (core/branch_free.h), as GCC
+  // compiles `wedge ? a : b` on floats to branches. Wedge |a| > |b| is |b| < |a|.
+  const float abs_a = std::abs(a), abs_b = std::abs(b);
+  const float r = select_less(abs_b, abs_a, a, b);
+  const CosSin cs = cos_sin_quarter_pi(select_less(abs_b, abs_a, b, a) / r);
   const float along = r * cs.cos, across = r * cs.sin;
-  return {wedge_a ? along : across, wedge_a ? across : along};
+  return {select_less(abs_b, abs_a, along, across), select_less(abs_b, abs_a, across, along)};
 }
 
 // Cosine-weighted hemisphere around +z by Malley's method (project the disk up).
@@ -66,11 +68,12 @@ inline float cosine_hemisphere_pdf(float cos_theta) {
 // parameterisation (Osada et al. 2002) distorts towards one vertex. Also no square root on
 // the NEE path. Returns (b1, b2); b0 = 1 - b1 - b2. Area density is 1 / area.
 inline Vec2f sample_uniform_triangle(Vec2f u) {
-  // Half of the smaller coordinate, and the larger one less that; which of the two goes
-  // where keeps the halves u.x < u.y and u.x ≥ u.y on their own sides of b1 = b2.
+  // Heitz's two halves: (u.x/2, u.y − u.x/2) where u.x < u.y, else (u.x − u.y/2, u.y/2).
+  // Both are u less half its smaller coordinate, so no branch on which half (a coin flip
+  // per sample): the halved coordinate c − c/2 = c/2 is exact by Sterbenz's lemma for
+  // normal floats, so this is bit for bit the two-case form (warps_test checks it).
   const float half = 0.5f * std::min(u.x, u.y);
-  const float rest = std::max(u.x, u.y) - half;
-  return u.x < u.y ? Vec2f(half, rest) : Vec2f(rest, half);
+  return {u.x - half, u.y - half};
 }
 
 // Uniform directions in the cone of half-angle acos(cos_max) around +z.

@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 
+#include "prism/core/branch_free.h"
 #include "prism/core/frame.h"
 #include "prism/core/mat3.h"
 #include "prism/color/color_space.h"
@@ -279,14 +280,16 @@ std::optional<LightSample> LightSampler::sample(const Vec3f& reference, float u_
                                                 const Vec3f& receiver_normal) const {
   if (empty()) return std::nullopt;
   const float u_choice = options_.reuse_selection_sample ? u_point.x : u_select;
-  const auto it = std::upper_bound(selection_cdf_.begin(), selection_cdf_.end(), u_choice);
-  std::size_t index = std::min<std::size_t>(static_cast<std::size_t>(it - selection_cdf_.begin()), selection_cdf_.size() - 1);
+  // Which light is a coin flip per sample among lights of like power: the search without
+  // branches (core/branch_free.h).
+  const std::size_t index =
+      std::min(upper_bound_index(selection_cdf_.data(), selection_cdf_.size(), u_choice), selection_cdf_.size() - 1);
   const float pmf = selection_pmf_[index];
   if (pmf == 0.0f) return std::nullopt;  // float ties at the top of the CDF
   if (options_.reuse_selection_sample) {
     // u_point.x ∈ [cdf_before, cdf_before + pmf): uniform there, so its position in that
     // interval is a uniform number, stratified as u_point.x was.
-    const float cdf_before = index == 0 ? 0.0f : selection_cdf_[index - 1];
+    const float cdf_before = keep_if(index != 0, selection_cdf_[index - (index != 0)]);
     u_point.x = pmf >= kMinReusedSelectionPmf
                     ? std::clamp((u_point.x - cdf_before) / pmf, 0.0f, 0x1.fffffep-1f)
                     : u_select;

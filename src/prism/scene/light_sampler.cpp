@@ -343,7 +343,7 @@ bool LightSampler::fill_emitter_sample(std::size_t index, const Vec3f& reference
       // Intensity I (cd) → irradiance-like I / r² at the reference point.
       s.scale = 1.0f / d2;
       if (e.kind == Kind::spot) s.scale *= spot_falloff(dot(-s.wi, e.axis), e.cos_outer, e.cos_inner);
-      if (s.scale <= 0.0f) return false;
+      if (!(s.scale > 0.0f)) return false;  // NaN too (not reachable today: the axis is sanitised above)
       return true;
     }
     case Kind::directional: {

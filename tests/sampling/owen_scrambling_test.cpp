@@ -25,7 +25,7 @@ TEST(OwenScrambling, EachScrambledPointIsUniformOverSeeds) {
   for (std::uint32_t index : {0u, 1u, 2u, 77u, 1023u}) {
     std::vector<double> observed_1d(kBins * kBins, 0.0), observed_2d(kBins * kBins, 0.0);
     for (int seed = 0; seed < kSeeds; ++seed) {
-      const PixelSample s{7, 0, 0, static_cast<std::uint32_t>(seed), index};
+      const PixelSample s{7, static_cast<std::uint32_t>(seed), 1u << 20, index};
       const Vec2f u = sample_2d(SamplerKind::sobol, s, 5);
       observed_2d[static_cast<std::size_t>(static_cast<int>(u.x * kBins) * kBins + static_cast<int>(u.y * kBins))] += 1;
       observed_1d[static_cast<std::size_t>(sample_1d(SamplerKind::sobol, s, 4) * kBins * kBins)] += 1;
@@ -46,7 +46,7 @@ double rmse(SamplerKind kind, int n, int replicas, F f, double exact) {
   for (int r = 0; r < replicas; ++r) {
     double sum = 0.0;
     for (int i = 0; i < n; ++i) {
-      const Vec2f u = sample_2d(kind, PixelSample{3, 0, 0, static_cast<std::uint32_t>(r), static_cast<std::uint32_t>(i)}, 12);
+      const Vec2f u = sample_2d(kind, PixelSample{3, static_cast<std::uint32_t>(r), 1u << 20, static_cast<std::uint32_t>(i)}, 12);
       sum += f(u.x, u.y);
     }
     const double err = sum / n - exact;

@@ -49,7 +49,7 @@ TEST(PixelSampler, ParsesAndNamesEverySampler) {
 
 TEST(PixelSampler, BlocksFollowTheFixedDimensionLayout) {
   for (SamplerKind k : {SamplerKind::independent, SamplerKind::sobol, SamplerKind::zsobol}) {
-    const PixelSample s{11, 5, 9, 9 * 64 + 5, 37};
+    const PixelSample s{11, 9 * 64 + 5, 64, 37};
     const CameraSamples c = camera_samples(k, s);
     expect_same(c.pixel_jitter, sample_2d(k, s, 0));
     expect_same(c.lens, sample_2d(k, s, 2));
@@ -86,7 +86,7 @@ TEST(PixelSampler, SobolIsItsDefiningComposition) {
           const std::uint32_t x = nested_uniform_scramble(sobol_sample_bits(index, 0), static_cast<std::uint32_t>(h >> 32));
           const std::uint32_t y =
               nested_uniform_scramble(sobol_sample_bits(index, 1), static_cast<std::uint32_t>(mix64(h) >> 32));
-          const PixelSample s{seed, pixel, 0, pixel, sample};
+          const PixelSample s{seed, pixel, 65536, sample};
           const Vec2f u = sample_2d(SamplerKind::sobol, s, dimension);
           EXPECT_EQ(u.x, bits_to_unit_float(x));
           EXPECT_EQ(u.y, bits_to_unit_float(y));
@@ -110,7 +110,7 @@ TEST(PixelSampler, SobolGivesTheSameBitsWithGfniAndPortableBitReversal) {
     const auto put = [&](float u) { out.push_back(std::bit_cast<std::uint32_t>(u)); };
     for (std::uint32_t i = 0; i < 20000; ++i) {
       // Sample indices across all 32 bits, pixels and seeds varied.
-      const PixelSample s{i % 3, i % 97, i % 89, i * 2654435761u >> 8, i * 0x9e3779b9u};
+      const PixelSample s{i % 3, i * 2654435761u >> 8, 1u << 24, i * 0x9e3779b9u};
       const CameraSamples c = camera_samples(SamplerKind::sobol, s);
       put(c.pixel_jitter.x), put(c.pixel_jitter.y), put(c.lens.x), put(c.lens.y);
       out.push_back(static_cast<std::uint32_t>(c.wavelength * 0x1p32));  // all 32 bits of the double
@@ -135,7 +135,7 @@ TEST(PixelSampler, BounceBlocksDrawOnlyTheNumbersAskedFor) {
   // (the image may not depend on which branches a vertex takes) and 0 elsewhere.
   for (SamplerKind k : {SamplerKind::independent, SamplerKind::sobol, SamplerKind::zsobol})
     for (int depth : {0, 2, 7}) {
-      const PixelSample s{3, 7, 2, 2 * 64 + 7, 41};
+      const PixelSample s{3, 2 * 64 + 7, 64, 41};
       const BounceSamples full = bounce_samples(k, s, depth);
       for (unsigned needs = 0; needs <= kNeedAllBounceSamples; ++needs) {
         const BounceSamples b = bounce_samples(k, s, depth, needs);
@@ -160,7 +160,7 @@ TEST(PixelSampler, SobolRunsOfSamplesArePerPixelNetsWhateverTheirLength) {
         for (std::uint32_t run : {0u, 1u, 3u}) {
           std::vector<Vec2f> points;
           for (std::uint32_t i = 0; i < (1u << m); ++i)
-            points.push_back(sample_2d(SamplerKind::sobol, PixelSample{5, pixel, 0, pixel, (run << m) + i}, dimension));
+            points.push_back(sample_2d(SamplerKind::sobol, PixelSample{5, pixel, 65536, (run << m) + i}, dimension));
           EXPECT_TRUE(is_zero_m_2_net(points, m)) << "pixel " << pixel << " dim " << dimension << " m " << m;
         }
 }
@@ -178,7 +178,7 @@ TEST(PixelSampler, ZSobolTilesOfPixelsAreNetsInEverySample) {
           std::vector<int> strata(std::size_t{1} << (2 * k), 0);
           for (std::uint32_t y = y0; y < y0 + side; ++y)
             for (std::uint32_t x = x0; x < x0 + side; ++x) {
-              const PixelSample s{5, x, y, y * 1000 + x, sample};
+              const PixelSample s{5, y * 1000 + x, 1000, sample};
               points.push_back(sample_2d(SamplerKind::zsobol, s, dimension));
               ++strata[bits(sample_1d(SamplerKind::zsobol, s, dimension + 2)) >> (32 - 2 * k)];
             }
@@ -209,7 +209,7 @@ TEST(PixelSampler, EverySamplerIsUniformPerPixel) {
   for (SamplerKind k : {SamplerKind::independent, SamplerKind::sobol, SamplerKind::zsobol}) {
     std::vector<double> observed(kBins * kBins, 0.0);
     for (int i = 0; i < kSamples; ++i) {
-      const Vec2f u = sample_2d(k, PixelSample{2, 3, 4, 4 * 640 + 3, static_cast<std::uint32_t>(i)}, 5 + 7 * 2 + 4);
+      const Vec2f u = sample_2d(k, PixelSample{2, 4 * 640 + 3, 640, static_cast<std::uint32_t>(i)}, 5 + 7 * 2 + 4);
       observed[static_cast<std::size_t>(static_cast<int>(u.x * kBins) * kBins + static_cast<int>(u.y * kBins))] += 1;
     }
     const std::vector<double> expected(kBins * kBins, double(kSamples) / (kBins * kBins));

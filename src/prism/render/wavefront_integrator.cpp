@@ -138,7 +138,8 @@ void WavefrontIntegrator<Mode>::generate(Paths& p, std::uint32_t slot, std::uint
   const std::uint32_t pixel = p.first_pixel + slot;
   const std::uint32_t x = pixel % static_cast<std::uint32_t>(width_), y = pixel / static_cast<std::uint32_t>(width_);
   const CameraSamples u =
-      camera_samples(settings_.sampler, PixelSample{seed_, x, y, pixel, sample_index}, camera_.has_lens());
+      camera_samples(settings_.sampler, PixelSample{seed_, pixel, static_cast<std::uint32_t>(width_), sample_index},
+                     camera_.has_lens());
   p.wavelengths[slot] = colors_.sample_wavelengths(sample_index, u.wavelength);
   p.ray[slot] = camera_.generate_ray(static_cast<float>(x) + u.pixel_jitter.x, static_cast<float>(y) + u.pixel_jitter.y,
                                      u.lens);
@@ -227,13 +228,9 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   if (bsdf.uses_direction_sample()) needs |= kNeedDirection;
   if (p.depth[slot] + 1 >= settings_.russian_roulette_depth) needs |= kNeedRoulette;
   const std::uint32_t pixel = p.first_pixel + slot;
-  PixelSample pixel_sample{seed_, 0, 0, pixel, p.sample_index[slot]};
-  if (settings_.sampler == SamplerKind::zsobol) {  // the only sampler that reads x and y (an integer division)
-    const auto row = static_cast<std::uint32_t>(width_);
-    pixel_sample.pixel_x = pixel % row;
-    pixel_sample.pixel_y = pixel / row;
-  }
-  const BounceSamples u = bounce_samples(settings_.sampler, pixel_sample, p.depth[slot], needs);
+  const BounceSamples u =
+      bounce_samples(settings_.sampler, PixelSample{seed_, pixel, static_cast<std::uint32_t>(width_), p.sample_index[slot]},
+                     p.depth[slot], needs);
 
   if (light_sampled) {
     if (const auto ls = lights_.sample(si.position, u.light_select, u.light, si.shading.n)) {

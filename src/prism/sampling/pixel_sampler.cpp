@@ -111,7 +111,7 @@ struct ZSobolDimensions {
   std::uint32_t morton;
   explicit ZSobolDimensions(const PixelSample& s)
       : layer_key(mix64(mix64(s.seed ^ 0x7a736f626f6cull) + s.sample_index)),
-        morton(morton_index_2d(s.pixel_x, s.pixel_y)) {}
+        morton(morton_index_2d(s.pixel_index % s.image_width, s.pixel_index / s.image_width)) {}
   std::uint64_t request_hash(std::uint32_t dimension) const {
     return mix64(layer_key + 0x9e3779b97f4a7c15ull * (dimension + 1ull));
   }

@@ -48,8 +48,8 @@ inline constexpr std::uint32_t kDimensionsPerBounce = 7;
 
 struct PixelSample {
   std::uint64_t seed = 0;
-  std::uint32_t pixel_x = 0, pixel_y = 0;  // read by zsobol only (its Morton index); callers may leave them 0 otherwise
-  std::uint32_t pixel_index = 0;  // y · width + x
+  std::uint32_t pixel_index = 0;  // y · image_width + x
+  std::uint32_t image_width = 1;  // pixels per row: zsobol finds the pixel's (x, y) from it
   std::uint32_t sample_index = 0;
 };
 

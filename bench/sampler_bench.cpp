@@ -4,9 +4,7 @@
 //   BM_Sobol2DDefinition: the 2D request written as its definition (seven bit reversals),
 //                         against BM_Sobol2D, the sampler's form (three);
 //   BM_BounceSamples/31:  the whole 7-number block, against /21, what a diffuse vertex
-//                         before Russian roulette reads (light and direction only);
-//   .../0 against .../1:  the portable bit reversal against the GFNI one (where the CPU
-//                         has it; the label says which ran).
+//                         before Russian roulette reads (light and direction only).
 #include <benchmark/benchmark.h>
 
 #include "prism/core/sample_stream.h"
@@ -45,31 +43,20 @@ void BM_Sobol2D(benchmark::State& state) {
 }
 BENCHMARK(BM_Sobol2D);
 
-// The second argument picks the bit reversal: 1 the fastest this CPU has (GFNI where it
-// exists, the label says which), 0 the portable code.
-void use_bit_reversal(benchmark::State& state, std::int64_t gfni) {
-  state.SetLabel(prism::set_sampler_gfni(gfni != 0) ? "gfni" : "portable");
-}
-
 void BM_BounceSamples(benchmark::State& state) {
   const auto needs = static_cast<unsigned>(state.range(0));
-  use_bit_reversal(state, state.range(1));
   std::uint32_t i = 0;
   for (auto _ : state)
     benchmark::DoNotOptimize(prism::bounce_samples(prism::SamplerKind::sobol, next_sample(i), 2, needs));
   state.SetItemsProcessed(state.iterations());
-  prism::set_sampler_gfni(true);
 }
-BENCHMARK(BM_BounceSamples)
-    ->ArgsProduct({{prism::kNeedAllBounceSamples, prism::kNeedLight | prism::kNeedDirection}, {0, 1}});
+BENCHMARK(BM_BounceSamples)->Arg(prism::kNeedAllBounceSamples)->Arg(prism::kNeedLight | prism::kNeedDirection);
 
 void BM_CameraSamples(benchmark::State& state) {
-  use_bit_reversal(state, state.range(0));
   std::uint32_t i = 0;
   for (auto _ : state) benchmark::DoNotOptimize(prism::camera_samples(prism::SamplerKind::sobol, next_sample(i)));
   state.SetItemsProcessed(state.iterations());
-  prism::set_sampler_gfni(true);
 }
-BENCHMARK(BM_CameraSamples)->Arg(0)->Arg(1);
+BENCHMARK(BM_CameraSamples);
 
 }  // namespace

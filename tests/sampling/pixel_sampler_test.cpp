@@ -5,8 +5,6 @@
 
 #include <gtest/gtest.h>
 
-#include <bit>
-#include <cstdint>
 #include <vector>
 
 #include "prism/core/sample_stream.h"
@@ -95,39 +93,6 @@ TEST(PixelSampler, SobolIsItsDefiningComposition) {
             EXPECT_EQ(camera_samples(SamplerKind::sobol, s).wavelength, x * 0x1p-32);  // double: all 32 bits
           }
         }
-}
-
-// The GFNI bit reversal (where the CPU has it) must give the portable code's numbers bit for
-// bit, or an image would depend on the machine that rendered it. The definition test above
-// runs whichever path this CPU takes; this one runs both.
-TEST(PixelSampler, SobolGivesTheSameBitsWithGfniAndPortableBitReversal) {
-  if (!set_sampler_gfni(true)) GTEST_SKIP() << "this CPU has no GFNI: only the portable path exists here";
-  struct Restore {
-    ~Restore() { set_sampler_gfni(true); }
-  } restore;
-  const auto draw = [] {
-    std::vector<std::uint32_t> out;
-    const auto put = [&](float u) { out.push_back(std::bit_cast<std::uint32_t>(u)); };
-    for (std::uint32_t i = 0; i < 20000; ++i) {
-      // Sample indices across all 32 bits, pixels and seeds varied.
-      const PixelSample s{i % 3, i * 2654435761u >> 8, 1u << 24, i * 0x9e3779b9u};
-      const CameraSamples c = camera_samples(SamplerKind::sobol, s);
-      put(c.pixel_jitter.x), put(c.pixel_jitter.y), put(c.lens.x), put(c.lens.y);
-      out.push_back(static_cast<std::uint32_t>(c.wavelength * 0x1p32));  // all 32 bits of the double
-      const BounceSamples b = bounce_samples(SamplerKind::sobol, s, static_cast<int>(i % 9));
-      put(b.light_select), put(b.light.x), put(b.light.y), put(b.lobe), put(b.direction.x), put(b.direction.y),
-          put(b.roulette);
-      put(sample_1d(SamplerKind::sobol, s, i % 70));
-      const Vec2f u = sample_2d(SamplerKind::sobol, s, i % 70);
-      put(u.x), put(u.y);
-    }
-    return out;
-  };
-  const std::vector<std::uint32_t> gfni = draw();
-  ASSERT_FALSE(set_sampler_gfni(false));
-  const std::vector<std::uint32_t> portable = draw();
-  ASSERT_EQ(gfni.size(), portable.size());
-  for (std::size_t k = 0; k < gfni.size(); ++k) ASSERT_EQ(gfni[k], portable[k]) << "number " << k;
 }
 
 TEST(PixelSampler, BounceBlocksDrawOnlyTheNumbersAskedFor) {

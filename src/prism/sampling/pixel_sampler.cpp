@@ -6,15 +6,6 @@
 #include "prism/sampling/sobol.h"
 #include "prism/sampling/zsobol_index.h"
 
-// The GFNI bit reversal needs x86-64 and GCC's or Clang's target attributes; elsewhere the
-// portable one is all there is.
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define PRISM_SAMPLER_HAS_GFNI_PATH 1
-#include <immintrin.h>
-#else
-#define PRISM_SAMPLER_HAS_GFNI_PATH 0
-#endif
-
 namespace prism {
 namespace {
 
@@ -36,29 +27,6 @@ struct IndependentDimensions {
   }
 };
 
-// The 32-bit bit reversal, the padded Sobol' sampler's most frequent operation (two or
-// three per number: Owen scrambling works on reversed bits). Portable: three mask-and-shift
-// stages and a byte swap (sobol.h). Where the CPU has the Galois-field instructions
-// (GFNI: Intel since Ice Lake, AMD since Zen 4), one GF2P8AFFINEQB with the anti-diagonal
-// bit matrix reverses the bits of every byte (Intel SDM, "GF2P8AFFINEQB": each result bit
-// is the parity of a matrix row ANDed with the byte; row i = bit 7 − i mirrors the byte),
-// and the byte swap finishes the job: the same bits in a fraction of the instructions.
-struct PortableBitReversal {
-  static std::uint32_t reverse(std::uint32_t x) { return reverse_bits_32(x); }
-};
-
-#if PRISM_SAMPLER_HAS_GFNI_PATH
-struct GfniBitReversal {
-  [[gnu::target("gfni")]] static std::uint32_t reverse(std::uint32_t x) {
-    // Row-major 8×8 bit matrix, the row for result bit 0 in the most significant byte.
-    constexpr long long kMirrorEachByte = 0x8040201008040201ll;
-    const __m128i mirrored =
-        _mm_gf2p8affine_epi64_epi8(_mm_cvtsi32_si128(static_cast<int>(x)), _mm_set1_epi64x(kMirrorEachByte), 0);
-    return __builtin_bswap32(static_cast<std::uint32_t>(_mm_cvtsi128_si32(mirrored)));
-  }
-};
-#endif
-
 // Padded Sobol' with Burley's (2020) shuffled, Owen-scrambled index, all seeds per
 // (seed, pixel, dimension): one 64-bit hash per request gives the index-shuffle seed and
 // the first axis' scramble seed, a second one the other axis'.
@@ -69,23 +37,22 @@ struct GfniBitReversal {
 // index is reversed once per block, and sobol_1 is taken already reversed. Three bit
 // reversals per 2D request instead of seven, the same bits (pixel_sampler_test checks the
 // definition).
-template <class Bits>
 struct PaddedSobolDimensions {
   std::uint64_t pixel_key;
   std::uint32_t reversed_sample_index;
   explicit PaddedSobolDimensions(const PixelSample& s)
       : pixel_key(mix64(mix64(s.seed ^ 0x736f626f6c5eedull) + s.pixel_index)),
-        reversed_sample_index(Bits::reverse(s.sample_index)) {}
+        reversed_sample_index(reverse_bits_32(s.sample_index)) {}
   std::uint64_t request_hash(std::uint32_t dimension) const {
     return mix64(pixel_key + 0x9e3779b97f4a7c15ull * (dimension + 1ull));
   }
   static std::uint32_t low(std::uint64_t h) { return static_cast<std::uint32_t>(h); }
   static std::uint32_t high(std::uint64_t h) { return static_cast<std::uint32_t>(h >> 32); }
   std::uint32_t shuffled_index(std::uint64_t h) const {
-    return Bits::reverse(laine_karras_permutation(reversed_sample_index, low(h)));
+    return reverse_bits_32(laine_karras_permutation(reversed_sample_index, low(h)));
   }
   static std::uint32_t x_bits(std::uint32_t index, std::uint64_t h) {
-    return Bits::reverse(laine_karras_permutation(index, high(h)));
+    return reverse_bits_32(laine_karras_permutation(index, high(h)));
   }
   float get1d(std::uint32_t dimension) const {
     const std::uint64_t h = request_hash(dimension);
@@ -98,7 +65,7 @@ struct PaddedSobolDimensions {
   Vec2f get2d(std::uint32_t dimension) const {
     const std::uint64_t h = request_hash(dimension);
     const std::uint32_t index = shuffled_index(h);
-    const std::uint32_t y = Bits::reverse(laine_karras_permutation(sobol_dimension1_reversed_bits(index), high(mix64(h))));
+    const std::uint32_t y = reverse_bits_32(laine_karras_permutation(sobol_dimension1_reversed_bits(index), high(mix64(h))));
     return {bits_to_unit_float(x_bits(index, h)), bits_to_unit_float(y)};
   }
 };
@@ -152,43 +119,7 @@ BounceSamples bounce_block(const Dimensions& d, int depth, unsigned needs) {
   return b;
 }
 
-bool cpu_has_gfni() {
-#if PRISM_SAMPLER_HAS_GFNI_PATH
-  __builtin_cpu_init();  // may run before libgcc's own initialiser has
-  return __builtin_cpu_supports("gfni");
-#else
-  return false;
-#endif
-}
-
-// Decided once at start-up. Zero-initialised until then, so a sampler called from another
-// file's static initialisation takes the portable path, which gives the same numbers.
-bool use_gfni_bit_reversal = cpu_has_gfni();
-
-#if PRISM_SAMPLER_HAS_GFNI_PATH
-// `flatten` inlines the whole call tree, the GFNI reversal included, into this one function
-// compiled for GFNI; the portable instantiations stay baseline x86-64.
-template <class Sobol>
-[[gnu::target("gfni"), gnu::flatten]] auto with_gfni_bits(const Sobol& sobol) {
-  return sobol(GfniBitReversal{});
-}
-#endif
-
-// sobol(bits) with the fastest bit reversal this CPU has.
-template <class Sobol>
-auto with_sobol_bits(const Sobol& sobol) {
-#if PRISM_SAMPLER_HAS_GFNI_PATH
-  if (use_gfni_bit_reversal) return with_gfni_bits(sobol);
-#endif
-  return sobol(PortableBitReversal{});
-}
-
 }  // namespace
-
-bool set_sampler_gfni(bool enable) {
-  use_gfni_bit_reversal = enable && cpu_has_gfni();
-  return use_gfni_bit_reversal;
-}
 
 std::string_view sampler_name(SamplerKind kind) {
   switch (kind) {
@@ -207,8 +138,7 @@ std::optional<SamplerKind> parse_sampler(std::string_view name) {
 
 CameraSamples camera_samples(SamplerKind kind, const PixelSample& s, bool lens) {
   switch (kind) {
-    case SamplerKind::sobol:
-      return with_sobol_bits([&](auto bits) { return camera_block(PaddedSobolDimensions<decltype(bits)>{s}, lens); });
+    case SamplerKind::sobol: return camera_block(PaddedSobolDimensions{s}, lens);
     case SamplerKind::zsobol: return camera_block(ZSobolDimensions{s}, lens);
     case SamplerKind::independent: break;
   }
@@ -217,9 +147,7 @@ CameraSamples camera_samples(SamplerKind kind, const PixelSample& s, bool lens) 
 
 BounceSamples bounce_samples(SamplerKind kind, const PixelSample& s, int depth, unsigned needs) {
   switch (kind) {
-    case SamplerKind::sobol:
-      return with_sobol_bits(
-          [&](auto bits) { return bounce_block(PaddedSobolDimensions<decltype(bits)>{s}, depth, needs); });
+    case SamplerKind::sobol: return bounce_block(PaddedSobolDimensions{s}, depth, needs);
     case SamplerKind::zsobol: return bounce_block(ZSobolDimensions{s}, depth, needs);
     case SamplerKind::independent: break;
   }
@@ -228,8 +156,7 @@ BounceSamples bounce_samples(SamplerKind kind, const PixelSample& s, int depth, 
 
 float sample_1d(SamplerKind kind, const PixelSample& s, std::uint32_t dimension) {
   switch (kind) {
-    case SamplerKind::sobol:
-      return with_sobol_bits([&](auto bits) { return PaddedSobolDimensions<decltype(bits)>{s}.get1d(dimension); });
+    case SamplerKind::sobol: return PaddedSobolDimensions{s}.get1d(dimension);
     case SamplerKind::zsobol: return ZSobolDimensions{s}.get1d(dimension);
     case SamplerKind::independent: break;
   }
@@ -238,8 +165,7 @@ float sample_1d(SamplerKind kind, const PixelSample& s, std::uint32_t dimension)
 
 Vec2f sample_2d(SamplerKind kind, const PixelSample& s, std::uint32_t dimension) {
   switch (kind) {
-    case SamplerKind::sobol:
-      return with_sobol_bits([&](auto bits) { return PaddedSobolDimensions<decltype(bits)>{s}.get2d(dimension); });
+    case SamplerKind::sobol: return PaddedSobolDimensions{s}.get2d(dimension);
     case SamplerKind::zsobol: return ZSobolDimensions{s}.get2d(dimension);
     case SamplerKind::independent: break;
   }

@@ -85,13 +85,6 @@ CameraSamples camera_samples(SamplerKind kind, const PixelSample& sample, bool l
 BounceSamples bounce_samples(SamplerKind kind, const PixelSample& sample, int depth,
                              unsigned needs = kNeedAllBounceSamples);
 
-// The padded Sobol' sampler reverses bits with the CPU's GFNI instructions where it has
-// them and with portable code elsewhere; both give the same numbers (pixel_sampler_test
-// compares them). enable = false switches to the portable code (tests, benchmarks), true
-// back to the fastest this CPU has. Returns whether GFNI is in use afterwards. Not
-// thread-safe: call it while nothing samples.
-bool set_sampler_gfni(bool enable);
-
 // Single requests, for tests and tools: dimension `dimension` (and `dimension + 1` for 2D)
 // of a sample, as laid out above for the low-discrepancy samplers.
 float sample_1d(SamplerKind kind, const PixelSample& sample, std::uint32_t dimension);

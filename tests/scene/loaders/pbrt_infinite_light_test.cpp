@@ -10,12 +10,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 
 #include "loader_test_files.h"
 #include "prism/core/error.h"
 #include "prism/io/exr.h"
 #include "prism/io/png.h"
 #include "prism/render/renderer.h"
+#include "prism/scene/environment_illuminance.h"
 #include "prism/scene/flatten_instances.h"
 #include "prism/scene/light_sampler.h"
 #include "prism/scene/loaders/pbrt_scene.h"
@@ -111,6 +113,59 @@ TEST(PbrtInfiniteLight, RendersTheLitOctantOnTheExpectedSideOfASphere) {
   EXPECT_GT(upper_right, 1.5 * lower_right);
   EXPECT_GT(upper_left, 1.5 * lower_left);
   EXPECT_GT(lower_right, 1.5 * lower_left);
+}
+
+// "illuminance" (lux) scales the sky so that a surface facing the light frame's +z receives
+// that much light from it, times "scale" (pbrt-v4's ImageInfiniteLight and uniform
+// infinite light). A uniform sky of luminance L gives π L lux (∫ cos θ dω over the
+// hemisphere), so a constant map of 1 scaled for E lux has luminance E / π.
+TEST(PbrtInfiniteLight, IlluminanceScalesTheSkyForASurfaceFacingPlusZ) {
+  test::ScratchFolder dir;
+  write_exr(dir / "constant.exr", ImageRgbF{kSize, kSize, std::vector<float>(kSize * kSize * 3, 1.0f)}, kRec709);
+  const Scene s = load_pbrt_scene(dir.write("sky.pbrt", R"(WorldBegin
+LightSource "infinite" "string filename" "constant.exr" "float scale" 2 "float illuminance" 1000
+Shape "sphere"
+)"));
+  ASSERT_EQ(s.lights.size(), 1u);
+  const TextureImage& map = s.textures[static_cast<std::size_t>(s.lights[0].environment_texture)];
+  const double map_lux = environment_illuminance_lux(map, EnvironmentMapping::equal_area_octahedral, Vec3f(0, 0, 1));
+  // The midpoint rule over N² equal-area texels falls short of π by 4/N² relative
+  // (environment_illuminance_test: −3.9e-3 at N = 32), so 5e-3; the whole sphere, or no
+  // cosine, would give 2π.
+  EXPECT_NEAR(map_lux, std::numbers::pi, 5e-3 * std::numbers::pi);
+  EXPECT_NEAR(s.lights[0].intensity, 2.0 * 1000.0 / map_lux, 1e-6 * s.lights[0].intensity);
+  for (const std::string& w : s.warnings) EXPECT_EQ(w.find("illuminance"), std::string::npos) << w;
+  // Light only below the horizon: no scale gives the asked illuminance.
+  ImageRgbF below{kSize, kSize, std::vector<float>(kSize * kSize * 3, 0.0f)};
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const float a = 2.0f * (x + 0.5f) / kSize - 1.0f, b = 2.0f * (y + 0.5f) / kSize - 1.0f;
+      if (std::abs(a) + std::abs(b) > 1.0f)  // the square's corners: z < 0
+        for (int c = 0; c < 3; ++c) below.rgb[(static_cast<std::size_t>(y) * kSize + x) * 3 + c] = 1.0f;
+    }
+  write_exr(dir / "below.exr", below, kRec709);
+  const std::string error = test::error_of<SceneError>([&] {
+    load_pbrt_scene(dir.write("below.pbrt", R"(WorldBegin
+LightSource "infinite" "string filename" "below.exr" "float illuminance" 1000
+Shape "sphere"
+)"));
+  });
+  EXPECT_NE(error.find("below.pbrt:2"), std::string::npos) << error;
+  EXPECT_NE(error.find("illuminance"), std::string::npos) << error;
+  // A uniform "L" sky: its luminance becomes scale · E / π, its colour the chromaticity.
+  const Scene u = load_pbrt_scene(dir.write("uniform.pbrt", R"(WorldBegin
+LightSource "infinite" "rgb L" [0.2 0.5 0.9] "float scale" 3 "float illuminance" 100
+Shape "sphere"
+)"));
+  ASSERT_EQ(u.lights.size(), 1u);
+  EXPECT_NEAR(u.lights[0].intensity, 3.0 * 100.0 / std::numbers::pi, 1e-4);
+  // Negative illuminance is an error at its parameter.
+  const std::string negative = test::error_of<SceneError>([&] {
+    load_pbrt_scene(dir.write("negative.pbrt", R"(WorldBegin
+LightSource "infinite" "rgb L" [1 1 1] "float illuminance" -5
+)"));
+  });
+  EXPECT_NE(negative.find("negative.pbrt:2"), std::string::npos) << negative;
 }
 
 TEST(PbrtInfiniteLight, NonSquareImagesAreRefused) {

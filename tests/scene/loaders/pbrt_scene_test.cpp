@@ -143,6 +143,16 @@ TEST(PbrtLoader, MaterialMappings) {
   EXPECT_NE(w5[0].find("blackbody"), std::string::npos);
 }
 
+// pbrt-v4 multiplies "scale" by a distant light's "illuminance" (the spectrum normalised to
+// unit luminance first), as it does for every photometric quantity.
+TEST(PbrtLoader, DistantIlluminanceIsTimesScale) {
+  const Scene s = parse(std::string(R"(WorldBegin
+LightSource "distant" "rgb L" [0.3 0.6 0.9] "float scale" 2 "float illuminance" 1000
+)") + std::string(kTriangle));
+  ASSERT_EQ(s.lights.size(), 1u);
+  EXPECT_FLOAT_EQ(s.lights[0].intensity, 2000.0f);
+}
+
 TEST(PbrtLoader, LightsInPhotometricUnits) {
   const Scene s = parse(std::string(R"(
 WorldBegin

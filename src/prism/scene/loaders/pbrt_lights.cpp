@@ -10,6 +10,7 @@
 
 #include "prism/core/error.h"
 #include "prism/scene/emission.h"
+#include "prism/scene/environment_illuminance.h"
 #include "prism/scene/loaders/pbrt_builder.h"
 
 namespace prism::loaders {
@@ -34,6 +35,13 @@ double optional_power(const PbrtParams& p) {
   const double power = p.get_float("power", -1.0);
   if (p.has("power") && !(power >= 0.0)) p.fail(*p.find("power"), "must not be negative");
   return power;
+}
+
+// "illuminance" in lux, when the light has one (callers check p.has first).
+double illuminance_lux(const PbrtParams& p) {
+  const double lux = p.get_float("illuminance", -1.0);
+  if (!(lux >= 0.0)) p.fail(*p.find("illuminance"), "must not be negative");
+  return lux;
 }
 
 }  // namespace
@@ -78,11 +86,8 @@ void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
     const Vec3f d = t.apply_vector(to - from);
     if (!(length(d) > 0.0f)) throw SceneError(fmt::format("{}:{}: distant light: \"from\" equals \"to\"", p.source, p.line));
     light.direction = normalize(d);
-    const double lux = p.get_float("illuminance", -1.0);
-    if (p.has("illuminance")) {
-      if (!(lux >= 0.0)) p.fail(*p.find("illuminance"), "must not be negative");
-      light.intensity = static_cast<float>(lux);
-    }
+    // pbrt-v4 normalises L to unit luminance and multiplies `scale` by the illuminance.
+    if (p.has("illuminance")) light.intensity = static_cast<float>(p.get_float("scale", 1.0) * illuminance_lux(p));
   } else if (type == "infinite") {
     light.type = LightType::environment;
     const std::string file = p.get_string("filename", "");
@@ -106,13 +111,26 @@ void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
         throw SceneError(fmt::format("{}:{}: infinite light: \"{}\" is {}×{}; pbrt-v4's equal-area environment "
                                      "images are square",
                                      p.source, p.line, file, image.width, image.height));
+      if (p.has("illuminance")) {
+        // The map scaled so that a surface facing the light frame's +z receives that many
+        // lux from the upper hemisphere, on top of `scale` (pbrt-v4's ImageInfiniteLight).
+        const double lux = illuminance_lux(p);
+        const double map_lux = environment_illuminance_lux(image, light.environment_mapping, Vec3f(0.0f, 0.0f, 1.0f));
+        if (!(map_lux > 0.0))
+          throw SceneError(fmt::format("{}:{}: infinite light: \"illuminance\" asks for {} lux on a surface facing +z, "
+                                       "but \"{}\" sends no light into that hemisphere",
+                                       p.source, p.line, lux, file));
+        light.intensity = static_cast<float>(light.intensity * (lux / map_lux));
+      }
     } else {
       const LightColor c = light_color(p, "L", approximations_);
       light.color = c.color;
       light.intensity = c.luminance;
+      // A uniform sky of luminance L gives π L lux on any surface.
+      if (p.has("illuminance"))
+        light.intensity = static_cast<float>(p.get_float("scale", 1.0) * illuminance_lux(p) / std::numbers::pi);
     }
     light.environment_to_world = t;
-    if (p.has("illuminance")) ignore("infinite light \"illuminance\"", p);
     p.find("portal");
     for (const Light& l : scene_.lights)
       if (l.type == LightType::environment) {

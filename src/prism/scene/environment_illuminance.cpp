@@ -1,0 +1,27 @@
+#include "prism/scene/environment_illuminance.h"
+
+#include <algorithm>
+
+#include "prism/color/color_space.h"
+#include "prism/scene/environment_mapping.h"
+
+namespace prism {
+
+double environment_illuminance_lux(const TextureImage& map, EnvironmentMapping mapping, const Vec3f& normal) {
+  if (map.width <= 0 || map.height <= 0 || map.channels <= 0) return 0.0;
+  const Vec3d y_row = color::color_space("srgb").rgb_to_xyz.row(1);  // Rec.709 luminance weights
+  const double texels = double(map.width) * double(map.height);
+  double lux = 0.0;
+  for (int y = 0; y < map.height; ++y)
+    for (int x = 0; x < map.width; ++x) {
+      const Vec2f uv((x + 0.5f) / map.width, (y + 0.5f) / map.height);
+      const double cosine = dot(environment_uv_to_direction(mapping, uv), normal);
+      if (!(cosine > 0.0)) continue;
+      const float* p = &map.texels[(static_cast<std::size_t>(y) * map.width + x) * map.channels];
+      const double luminance = map.channels >= 3 ? dot(y_row, Vec3d(p[0], p[1], p[2])) : double(p[0]);
+      lux += luminance * cosine * (environment_solid_angle_per_uv_area(mapping, uv) / texels);
+    }
+  return lux;
+}
+
+}  // namespace prism

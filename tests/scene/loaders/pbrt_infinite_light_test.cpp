@@ -168,6 +168,20 @@ LightSource "infinite" "rgb L" [1 1 1] "float illuminance" -5
   EXPECT_NE(negative.find("negative.pbrt:2"), std::string::npos) << negative;
 }
 
+TEST(PbrtInfiniteLight, NegativeScaleOfAnImageSkyIsAnError) {
+  // A negative scale would make the sky emit negative radiance.
+  test::ScratchFolder dir;
+  write_octant_map(dir / "octant.exr");
+  const std::string error = test::error_of<SceneError>([&] {
+    load_pbrt_scene(dir.write("sky.pbrt", R"(WorldBegin
+LightSource "infinite" "string filename" "octant.exr" "float scale" -2
+Shape "sphere"
+)"));
+  });
+  EXPECT_NE(error.find("sky.pbrt:2"), std::string::npos) << error;
+  EXPECT_NE(error.find("negative"), std::string::npos) << error;
+}
+
 TEST(PbrtInfiniteLight, NonSquareImagesAreRefused) {
   test::ScratchFolder dir;
   write_exr(dir / "octant.exr", ImageRgbF{8, 4, std::vector<float>(8 * 4 * 3, 1.0f)}, kRec709);

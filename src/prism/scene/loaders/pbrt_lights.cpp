@@ -21,11 +21,17 @@ struct LightColor {
   float luminance = 1.0f;
 };
 
+// "scale", which multiplies every light's emission: negative (or NaN) is an error at it.
+double light_scale(const PbrtParams& p) {
+  const double scale = p.get_float("scale", 1.0);
+  if (!(scale >= 0.0)) p.fail(*p.find("scale"), "must not be negative");
+  return scale;
+}
+
 LightColor light_color(const PbrtParams& p, std::string_view name, std::vector<std::string>& approximations) {
   LightColor c;
   const Vec3f rgb = p.get_color(name, PbrtSpectrumUse::illuminant, approximations).value_or(Vec3f(1.0f));
-  const double scale = p.get_float("scale", 1.0);
-  if (!(scale >= 0.0)) p.fail(*p.find("scale"), "must not be negative");
+  const double scale = light_scale(p);
   c.color = rgb;
   c.luminance = static_cast<float>(relative_luminance(rgb, ColorPickerSpace::srgb) * scale);
   return c;
@@ -87,7 +93,7 @@ void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
     if (!(length(d) > 0.0f)) throw SceneError(fmt::format("{}:{}: distant light: \"from\" equals \"to\"", p.source, p.line));
     light.direction = normalize(d);
     // pbrt-v4 normalises L to unit luminance and multiplies `scale` by the illuminance.
-    if (p.has("illuminance")) light.intensity = static_cast<float>(p.get_float("scale", 1.0) * illuminance_lux(p));
+    if (p.has("illuminance")) light.intensity = static_cast<float>(light_scale(p) * illuminance_lux(p));
   } else if (type == "infinite") {
     light.type = LightType::environment;
     const std::string file = p.get_string("filename", "");
@@ -100,7 +106,7 @@ void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
       } catch (const IoError& e) {
         throw IoError(fmt::format("{}:{}: infinite light: {}", p.source, p.line, e.what()));
       }
-      light.intensity = static_cast<float>(p.get_float("scale", 1.0));
+      light.intensity = static_cast<float>(light_scale(p));
       // pbrt-v4's ImageInfiniteLight looks the image up at EqualAreaSphereToSquare of the
       // direction in the light's frame (its Le(): renderFromLight⁻¹ applied to the ray
       // direction; pbrt-v4 book §12.5.2 and §3.8.3), nearest texel, pixel (0, 0) at the
@@ -128,7 +134,7 @@ void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
       light.intensity = c.luminance;
       // A uniform sky of luminance L gives π L lux on any surface.
       if (p.has("illuminance"))
-        light.intensity = static_cast<float>(p.get_float("scale", 1.0) * illuminance_lux(p) / std::numbers::pi);
+        light.intensity = static_cast<float>(light_scale(p) * illuminance_lux(p) / std::numbers::pi);
     }
     light.environment_to_world = t;
     p.find("portal");

@@ -193,15 +193,17 @@ void check_jpeg_huffman_tables(std::span<const unsigned char> bytes, std::string
 // empty first IDAT (UBSan nonnull-attribute, found by the fuzz_image_readers target).
 // Also refuses a chunk whose declared length runs past the end of the file: stb_image
 // grows its IDAT buffer to the declared length before reading (a 2 GB realloc for a few
-// bytes of input, found by the same fuzz target).
+// bytes of input, found by the same fuzz target). Every chunk whose 8-byte header (length,
+// type) is there is checked, also one that ends the file before its CRC: stb_image acts on
+// the header alone (the second such input from the fuzzer had 3 bytes after the header).
 std::optional<std::vector<unsigned char>> without_empty_idat_chunks(std::span<const unsigned char> bytes,
                                                                     std::string_view name) {
   constexpr std::size_t kSignature = 8;
   std::vector<std::pair<std::size_t, std::size_t>> empty;  // [begin, end) of each empty IDAT
-  for (std::size_t pos = kSignature; pos + 12 <= bytes.size();) {
+  for (std::size_t pos = kSignature; pos + 8 <= bytes.size();) {
     const std::size_t length = (std::size_t{bytes[pos]} << 24) | (std::size_t{bytes[pos + 1]} << 16) |
                                (std::size_t{bytes[pos + 2]} << 8) | bytes[pos + 3];
-    if (length > bytes.size() - pos - 12)
+    if (bytes.size() - pos < 12 || length > bytes.size() - pos - 12)
       throw IoError(fmt::format("cannot read image '{}': corrupt or truncated PNG (a chunk claims {} bytes, more "
                                 "than the file holds)",
                                 name, length));

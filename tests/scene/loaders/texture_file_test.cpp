@@ -236,6 +236,16 @@ TEST(TextureFile, PngWithAnEmptyIdatChunkIsReadWithoutIt) {
             read_texture_file(dir / "a.png", TextureEncoding::linear, 32768).texels);
 }
 
+TEST(TextureFile, PngChunkHeaderAtTheEndOfTheFileIsCheckedToo) {
+  // Regression (fuzz_image_readers, CI fuzz-smoke): a 76-byte PNG ending in an IDAT header
+  // that declares 0x52000000 bytes and then 3 more bytes. The chunk walk only looked at
+  // chunks with 12 bytes left (header and CRC), so this one reached stb_image, which
+  // reallocated 2 GB from the header alone (libFuzzer: out-of-memory).
+  EXPECT_NE(regression_input_error("fuzz_png_truncated_chunk_header.png", TextureEncoding::srgb)
+                .find("corrupt or truncated PNG (a chunk claims 1375731712 bytes"),
+            std::string::npos);
+}
+
 TEST(TextureFile, PngChunkClaimingMoreThanTheFileHoldsIsRefusedBeforeStbImage) {
   // Regression (fuzz_image_readers): an IDAT declaring ~2 GB made stb_image realloc 2 GB
   // before reading. Refused by our own chunk walk, before any allocation.

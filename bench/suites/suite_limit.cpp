@@ -70,6 +70,8 @@ SuiteReport run_limit_suite(const BenchOptions& o) {
         efficiency_mixed[k].push_back(m.rays_per_second * (r / closest + sh / shadow) / (r + sh));
       }
     }
+    const double closest = std::max(median(closest_one), median(closest_streams));
+    const double shadow = std::max(median(shadow_one), median(shadow_streams));
     for (std::size_t k = 0; k < std::size(kinds); ++k) {
       const RenderSettings settings = cornell_settings(size, spp, kinds[k], threads);
       const RenderMeasurement& m = renders[k].front();  // ray counts: the same in every round (fixed seed)
@@ -78,8 +80,6 @@ SuiteReport run_limit_suite(const BenchOptions& o) {
       const double r = static_cast<double>(m.rays), sh = static_cast<double>(m.shadow_rays);
       const double shadow_fraction = (r + sh) > 0 ? sh / (r + sh) : 0.0;
       const auto [lowest, highest] = std::minmax_element(efficiency[k].begin(), efficiency[k].end());
-      const double closest = std::max(median(closest_one), median(closest_streams));
-      const double shadow = std::max(median(shadow_one), median(shadow_streams));
       t.add_row({transport_label(settings), threads, median(closest_one) * 1e-6, median(closest_streams) * 1e-6,
                  median(shadow_one) * 1e-6, median(shadow_streams) * 1e-6, median(renderer_rates) * 1e-6,
                  m.rays_per_sample, shadow_fraction, median(efficiency[k]),

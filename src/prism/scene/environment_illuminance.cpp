@@ -1,7 +1,5 @@
 #include "prism/scene/environment_illuminance.h"
 
-#include <algorithm>
-
 #include "prism/color/color_space.h"
 #include "prism/scene/environment_mapping.h"
 
@@ -17,8 +15,7 @@ double environment_illuminance_lux(const TextureImage& map, EnvironmentMapping m
       const Vec2f uv((x + 0.5f) / map.width, (y + 0.5f) / map.height);
       const double cosine = dot(environment_uv_to_direction(mapping, uv), normal);
       if (!(cosine > 0.0)) continue;
-      const float* p = &map.texels[(static_cast<std::size_t>(y) * map.width + x) * map.channels];
-      const double luminance = map.channels >= 3 ? dot(y_row, Vec3d(p[0], p[1], p[2])) : double(p[0]);
+      const double luminance = dot(y_row, Vec3d(texel_rgb(map, x, y)));
       lux += luminance * cosine * (environment_solid_angle_per_uv_area(mapping, uv) / texels);
     }
   return lux;

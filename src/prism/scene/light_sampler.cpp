@@ -229,8 +229,7 @@ namespace {
 Vec3f texel_rgb(const TextureImage& t, Vec2f uv) {
   const int x = std::clamp(static_cast<int>(uv.x * t.width), 0, t.width - 1);
   const int y = std::clamp(static_cast<int>(uv.y * t.height), 0, t.height - 1);
-  const float* p = &t.texels[(static_cast<std::size_t>(y) * t.width + x) * t.channels];
-  return t.channels >= 3 ? Vec3f(p[0], p[1], p[2]) : Vec3f(p[0]);
+  return texel_rgb(t, x, y);
 }
 
 }  // namespace

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "prism/core/vec.h"
+
 namespace prism {
 
 enum class TextureWrap : std::uint8_t { repeat, clamp, mirror };
@@ -20,5 +22,12 @@ struct TextureImage {
 
   std::size_t memory_bytes() const { return texels.size() * sizeof(float); }
 };
+
+// Texel (x, y), row 0 at the top, as RGB: grey and grey+alpha images carry their value in
+// the first channel, which stands for all three (alpha is not colour).
+inline Vec3f texel_rgb(const TextureImage& t, int x, int y) {
+  const float* p = &t.texels[(static_cast<std::size_t>(y) * t.width + x) * t.channels];
+  return t.channels >= 3 ? Vec3f(p[0], p[1], p[2]) : Vec3f(p[0]);
+}
 
 }  // namespace prism

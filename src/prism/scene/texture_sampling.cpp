@@ -1,6 +1,8 @@
 #include "prism/scene/texture_sampling.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 namespace prism {
 
@@ -22,6 +24,9 @@ int wrap_texel_coordinate(int i, int size, TextureWrap wrap) {
 }
 
 Vec2f apply_uv_transform(const TextureImage& t, Vec2f uv) {
+  // Most textures are not rotated: no cos and sin per lookup then (the products with 1 and
+  // ±0 they would give change nothing but the sign of a zero uv, which no texel sees).
+  if (t.rotation_radians == 0.0f) return {t.offset_u + t.scale_u * uv.x, t.offset_v + t.scale_v * uv.y};
   const float c = std::cos(t.rotation_radians), s = std::sin(t.rotation_radians);
   // KHR_texture_transform: uv' = offset + scale ⊙ (R · uv) with R rotating by -rotation.
   const float ru = c * uv.x + s * uv.y, rv = -s * uv.x + c * uv.y;
@@ -30,9 +35,8 @@ Vec2f apply_uv_transform(const TextureImage& t, Vec2f uv) {
 
 namespace {
 
-TexelRgba fetch(const float* texels, int width, int height, int channels, int x, int y, TextureWrap wrap_u,
-                TextureWrap wrap_v) {
-  const int xi = wrap_texel_coordinate(x, width, wrap_u), yi = wrap_texel_coordinate(y, height, wrap_v);
+// The texel at wrapped coordinates (xi, yi) ∈ [0, width) × [0, height).
+TexelRgba texel_at_index(const float* texels, int width, int channels, int xi, int yi) {
   const float* p = texels + (static_cast<std::size_t>(yi) * width + xi) * channels;
   switch (channels) {
     case 1: return {p[0], p[0], p[0], 1.0f};
@@ -42,12 +46,41 @@ TexelRgba fetch(const float* texels, int width, int height, int channels, int x,
   }
 }
 
+TexelRgba fetch(const float* texels, int width, int height, int channels, int x, int y, TextureWrap wrap_u,
+                TextureWrap wrap_v) {
+  return texel_at_index(texels, width, channels, wrap_texel_coordinate(x, width, wrap_u),
+                        wrap_texel_coordinate(y, height, wrap_v));
+}
+
+// std::floor without its libm call (the baseline x86-64 build has no SSE4.1 round
+// instruction), exact for every double: a magnitude ≥ 2^52 is an integer already, and
+// truncation toward zero is one below the floor for negative non-integers.
+double floor_exact(double x) {
+  if (!(std::abs(x) < 0x1p52)) return x;  // integers, infinities and NaN as they are
+  const double truncated = static_cast<double>(static_cast<std::int64_t>(x));
+  return truncated > x ? truncated - 1.0 : truncated;
+}
+
 // Integer texel coordinate of a floor()ed continuous one, reduced so that it fits an int.
-// Clamp keeps one texel of margin; repeat and mirror are periodic with period 2·size.
+// Clamp keeps one texel of margin; repeat and mirror are periodic with period 2·size, so
+// the result lies in [0, 2·size) (the division is skipped where it would change nothing).
 int reduce_coordinate(double i, int size, TextureWrap wrap) {
   if (wrap == TextureWrap::clamp) return static_cast<int>(std::clamp(i, -1.0, static_cast<double>(size)));
   const double period = 2.0 * size;
-  return static_cast<int>(i - period * std::floor(i / period));
+  if (i >= 0.0 && i < period) return static_cast<int>(i);
+  return static_cast<int>(i - period * floor_exact(i / period));
+}
+
+// wrap_texel_coordinate for the coordinates bilinear() produces: reduce_coordinate's and
+// one more, i.e. [-1, size + 1] (clamp) or [0, 2·size] (repeat, mirror), without the
+// integer division of the general case (which stays for anything else, e.g. the result of
+// reducing an absurd coordinate in floating point).
+int wrap_reduced_coordinate(int i, int size, TextureWrap wrap) {
+  if (wrap == TextureWrap::clamp) return std::clamp(i, 0, size - 1);
+  if (i < 0 || i > 2 * size) return wrap_texel_coordinate(i, size, wrap);
+  if (i == 2 * size) return 0;  // both periodic modes start over at 2·size
+  if (wrap == TextureWrap::repeat) return i < size ? i : i - size;
+  return i < size ? i : 2 * size - 1 - i;  // mirror
 }
 
 TexelRgba bilinear(const float* texels, int width, int height, int channels, Vec2f uv, TextureWrap wrap_u,
@@ -55,13 +88,16 @@ TexelRgba bilinear(const float* texels, int width, int height, int channels, Vec
   if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = {0.0f, 0.0f};
   // Texel centres sit at half-integers: shift so that integer coordinates are centres.
   const double x = static_cast<double>(uv.x) * width - 0.5, y = static_cast<double>(uv.y) * height - 0.5;
-  const double x0 = std::floor(x), y0 = std::floor(y);
+  const double x0 = floor_exact(x), y0 = floor_exact(y);
   const float fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
   const int ix = reduce_coordinate(x0, width, wrap_u), iy = reduce_coordinate(y0, height, wrap_v);
-  const TexelRgba a = fetch(texels, width, height, channels, ix, iy, wrap_u, wrap_v);
-  const TexelRgba b = fetch(texels, width, height, channels, ix + 1, iy, wrap_u, wrap_v);
-  const TexelRgba c = fetch(texels, width, height, channels, ix, iy + 1, wrap_u, wrap_v);
-  const TexelRgba d = fetch(texels, width, height, channels, ix + 1, iy + 1, wrap_u, wrap_v);
+  // Each column and row wrapped once, not once per texel.
+  const int x_lo = wrap_reduced_coordinate(ix, width, wrap_u), x_hi = wrap_reduced_coordinate(ix + 1, width, wrap_u);
+  const int y_lo = wrap_reduced_coordinate(iy, height, wrap_v), y_hi = wrap_reduced_coordinate(iy + 1, height, wrap_v);
+  const TexelRgba a = texel_at_index(texels, width, channels, x_lo, y_lo);
+  const TexelRgba b = texel_at_index(texels, width, channels, x_hi, y_lo);
+  const TexelRgba c = texel_at_index(texels, width, channels, x_lo, y_hi);
+  const TexelRgba d = texel_at_index(texels, width, channels, x_hi, y_hi);
   TexelRgba r;
   for (int k = 0; k < 4; ++k) r[k] = (1 - fy) * ((1 - fx) * a[k] + fx * b[k]) + fy * ((1 - fx) * c[k] + fx * d[k]);
   return r;

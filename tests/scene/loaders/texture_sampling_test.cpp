@@ -1,5 +1,9 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+
 #include "prism/scene/texture_sampling.h"
 
 namespace prism {
@@ -51,6 +55,78 @@ TEST(TextureSampling, BilinearWrapModesAtTheEdge) {
   // Absurd uvs neither crash nor return NaN.
   EXPECT_TRUE(std::isfinite(sample_bilinear(tiny(TextureWrap::repeat), {1e30f, -1e30f})[0]));
   EXPECT_TRUE(std::isfinite(sample_bilinear(tiny(TextureWrap::mirror), {NAN, INFINITY})[0]));
+}
+
+// Bilinear filtering by its definition: the four texels around the continuous coordinate,
+// each wrapped on its own by wrap_texel_coordinate (std::floor, integer remainders).
+TexelRgba bilinear_by_definition(const MipLevel& level, int channels, Vec2f uv, TextureWrap wrap_u,
+                                 TextureWrap wrap_v) {
+  const double x = static_cast<double>(uv.x) * level.width - 0.5, y = static_cast<double>(uv.y) * level.height - 0.5;
+  const double x0 = std::floor(x), y0 = std::floor(y);
+  const float fx = static_cast<float>(x - x0), fy = static_cast<float>(y - y0);
+  const int ix = static_cast<int>(x0), iy = static_cast<int>(y0);
+  const TexelRgba a = texel_fetch(level, channels, ix, iy, wrap_u, wrap_v);
+  const TexelRgba b = texel_fetch(level, channels, ix + 1, iy, wrap_u, wrap_v);
+  const TexelRgba c = texel_fetch(level, channels, ix, iy + 1, wrap_u, wrap_v);
+  const TexelRgba d = texel_fetch(level, channels, ix + 1, iy + 1, wrap_u, wrap_v);
+  TexelRgba r;
+  for (int k = 0; k < 4; ++k) r[k] = (1 - fy) * ((1 - fx) * a[k] + fx * b[k]) + fy * ((1 - fx) * c[k] + fx * d[k]);
+  return r;
+}
+
+// sample_bilinear wraps each column and row once and reduces coordinates without divisions
+// where it can; it must pick the same texels with the same weights as the definition, bit
+// for bit, for every wrap mode, odd and one-texel sizes, any channel count, and uvs far
+// outside [0, 1] on either side (texel coordinates up to ±4e5, which the definition's int
+// conversion still holds).
+TEST(TextureSampling, BilinearMatchesItsDefinitionBitForBit) {
+  const TextureWrap modes[] = {TextureWrap::repeat, TextureWrap::clamp, TextureWrap::mirror};
+  const int sizes[][2] = {{1, 1}, {2, 3}, {5, 4}, {7, 1}, {16, 9}};
+  std::uint32_t state = 12345u;
+  const auto next_unit = [&] {  // xorshift32: reproducible uvs without the samplers under test
+    state ^= state << 13;
+    state ^= state >> 17;
+    state ^= state << 5;
+    return static_cast<float>(state >> 8) * 0x1p-24f;
+  };
+  int compared = 0;
+  for (const auto& size : sizes)
+    for (int channels = 1; channels <= 4; ++channels) {
+      MipLevel level{size[0], size[1], {}};
+      for (int i = 0; i < size[0] * size[1] * channels; ++i) level.texels.push_back(static_cast<float>(i * 7 % 13) + 0.25f);
+      for (TextureWrap wrap_u : modes)
+        for (TextureWrap wrap_v : modes)
+          for (int n = 0; n < 400; ++n) {
+            // Spans of 2, 20 and 2e4 around 0: near the image, a few periods off, far off.
+            const float span = n % 3 == 0 ? 2.0f : (n % 3 == 1 ? 20.0f : 2e4f);
+            Vec2f uv{(next_unit() - 0.5f) * span, (next_unit() - 0.5f) * span};
+            if (n % 7 == 0) uv.x = std::round(uv.x * size[0]) / size[0];  // exactly on texel edges, too
+            if (n % 11 == 0) uv.y = (std::round(uv.y * size[1] - 0.5f) + 0.5f) / size[1];  // and on centres
+            const TexelRgba expected = bilinear_by_definition(level, channels, uv, wrap_u, wrap_v);
+            const TexelRgba got = sample_bilinear(level, channels, uv, wrap_u, wrap_v);
+            ASSERT_EQ(got, expected) << "size " << size[0] << "x" << size[1] << ", " << channels << " channels, wrap "
+                                     << int(wrap_u) << "/" << int(wrap_v) << ", uv (" << uv.x << ", " << uv.y << ")";
+            ++compared;
+          }
+    }
+  EXPECT_EQ(compared, 5 * 4 * 9 * 400);
+}
+
+// A texture transform without rotation takes a shortcut (no cos/sin); both must agree.
+TEST(TextureSampling, UvTransformWithoutRotationIsScaleAndOffset) {
+  TextureImage t;
+  t.offset_u = 0.25f;
+  t.offset_v = -1.5f;
+  t.scale_u = 3.0f;
+  t.scale_v = 0.5f;
+  const Vec2f uv = apply_uv_transform(t, {0.2f, 0.7f});
+  EXPECT_FLOAT_EQ(uv.x, 0.25f + 3.0f * 0.2f);
+  EXPECT_FLOAT_EQ(uv.y, -1.5f + 0.5f * 0.7f);
+  // A quarter turn (KHR_texture_transform rotates uv by −rotation): (u, v) ↦ (v, −u), then scale and offset.
+  t.rotation_radians = std::numbers::pi_v<float> / 2;
+  const Vec2f turned = apply_uv_transform(t, {0.2f, 0.7f});
+  EXPECT_NEAR(turned.x, 0.25f + 3.0f * 0.7f, 1e-6f);
+  EXPECT_NEAR(turned.y, -1.5f + 0.5f * -0.2f, 1e-6f);
 }
 
 TEST(TextureSampling, MipPyramidIsABoxFilter) {

@@ -2,6 +2,7 @@
 #include <atomic>
 #include <csignal>
 #include <filesystem>
+#include <utility>
 #include <iostream>
 #include <optional>
 #include <string>
@@ -255,7 +256,8 @@ int run_render(const RenderOptions& o) {
   }
   validate_render_settings(settings);
   settings.memory_limit_bytes = memory_limit;
-  check_render_memory(scene, settings, settings.memory_limit_bytes);  // before any film is allocated
+  // Before any film is allocated. The render takes the loaded scene over (no second copy).
+  check_render_memory(scene, settings, settings.memory_limit_bytes, SceneHandover::moved);
   const std::uint64_t fingerprint = image_fingerprint(scene, settings);
 
   // Resuming: the checkpoint must come from the same scene and settings. It keeps being
@@ -287,18 +289,19 @@ int run_render(const RenderOptions& o) {
       write_checkpoint(checkpoint_path, Checkpoint{fingerprint, settings.first_sample, next_sample, film});
     };
   }
-  RenderResult result = render(scene, settings, hooks, resume ? &*resume : nullptr);
+  const std::string scene_name = scene.name;
+  RenderResult result = render(std::move(scene), settings, hooks, resume ? &*resume : nullptr);
   progress.finish();
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
 
-  write_outputs(outputs, result, scene.name, settings, fingerprint, o, display);
+  write_outputs(outputs, result, scene_name, settings, fingerprint, o, display);
 
   const double samples = static_cast<double>(result.passes_done) * result.film.pixel_count();
   std::vector<std::string> written;
   for (const auto& p : outputs) written.push_back(p.string());
   if (!checkpoint_path.empty()) written.push_back(checkpoint_path + " (checkpoint)");
-  fmt::print("prism: rendered {} {}x{}, {} spp in {:.2f} s ({:.2f} M samples/s) -> {}\n", scene.name, settings.width,
+  fmt::print("prism: rendered {} {}x{}, {} spp in {:.2f} s ({:.2f} M samples/s) -> {}\n", scene_name, settings.width,
              settings.height, result.passes_done, result.elapsed_seconds,
              result.elapsed_seconds > 0 ? samples / result.elapsed_seconds * 1e-6 : 0.0, fmt::join(written, ", "));
   if (result.invalid_samples > 0)

@@ -56,8 +56,11 @@ TEST(MemoryEstimate, CountsTexturesAndInstancedMeshes) {
   t.texels.assign(256u * 256 * 4, 0.5f);
   scene.textures.push_back(t);
   const MemoryEstimate textured = estimate_render_memory(scene, s);
-  EXPECT_GE(textured.textures, 2 * t.memory_bytes());  // loaded + the renderer's copies
-  (void)plain;
+  EXPECT_EQ(plain.textures, 0u);
+  // Copied into the prepared scene: loaded + copy + mip levels 1 and up (a third of the
+  // image; level 0 is the texels themselves). Handed over: no copy.
+  EXPECT_EQ(textured.textures, 2 * t.memory_bytes() + t.memory_bytes() / 3);
+  EXPECT_EQ(estimate_render_memory(scene, s, SceneHandover::moved).textures, t.memory_bytes() + t.memory_bytes() / 3);
   // Ten instances of a one-triangle mesh: the loaded mesh, ten flattened copies and a
   // BVH over ten triangles.
   Scene tri;
@@ -67,8 +70,11 @@ TEST(MemoryEstimate, CountsTexturesAndInstancedMeshes) {
   tri.meshes.push_back(m);
   const std::uint64_t mesh_bytes = 3 * sizeof(Vec3f) + 3 * sizeof(std::uint32_t);
   EXPECT_EQ(estimate_render_memory(tri, s).meshes, 2 * mesh_bytes + kBvhBytesPerTriangle);
+  EXPECT_EQ(estimate_render_memory(tri, s, SceneHandover::moved).meshes, mesh_bytes + kBvhBytesPerTriangle);
   for (int i = 0; i < 10; ++i) tri.instances.push_back(Instance{0, Transform{}});
   EXPECT_EQ(estimate_render_memory(tri, s).meshes, 11 * mesh_bytes + 10 * kBvhBytesPerTriangle);
+  // Flattening builds the instances' meshes while the loaded one still exists.
+  EXPECT_EQ(estimate_render_memory(tri, s, SceneHandover::moved).meshes, 11 * mesh_bytes + 10 * kBvhBytesPerTriangle);
 }
 
 TEST(MemoryEstimate, HugeRenderIsRefusedBeforeAllocation) {

@@ -33,7 +33,7 @@ std::uint64_t path_slots(const RenderSettings& s, std::uint64_t pixels) {
 
 }  // namespace
 
-MemoryEstimate estimate_render_memory(const Scene& scene, const RenderSettings& settings) {
+MemoryEstimate estimate_render_memory(const Scene& scene, const RenderSettings& settings, SceneHandover handover) {
   MemoryEstimate e;
   const std::uint64_t pixels = static_cast<std::uint64_t>(settings.width > 0 ? settings.width : 0) *
                                static_cast<std::uint64_t>(settings.height > 0 ? settings.height : 0);
@@ -46,18 +46,21 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderSettings& 
   e.path_pool = path_slots(settings, pixels) * (kPathPoolBytesPerSlot + (a.first_hit() ? kAovBytesPerSlot : 0));
   e.images = pixels * (kImageBytesPerPixel + aov_channels * kAovImageBytesPerChannel);
 
-  // The loaded texels, the flattened scene's copy and a mip pyramid (4/3 of the image).
+  // The loaded texels, the prepared scene's copy of them unless the scene is handed over,
+  // and the mip levels above level 0 (1/3 of the image; level 0 is the texels themselves).
+  const bool copied = handover == SceneHandover::copied;
   std::uint64_t texels = 0;
   for (const auto& t : scene.textures) texels += t.memory_bytes();
-  e.textures = texels * 2 + texels * 4 / 3;
+  e.textures = texels * (copied ? 2 : 1) + texels / 3;
 
-  // The loaded meshes, the flattened copy (one mesh per instance) and the BVH over it.
+  // The loaded meshes, the flattened copy (one mesh per instance; without instances a copy
+  // only when the scene is copied, not handed over) and the BVH over it.
   std::uint64_t loaded = 0, loaded_triangles = 0;
   for (const auto& m : scene.meshes) {
     loaded += mesh_bytes(m);
     loaded_triangles += m.triangle_count();
   }
-  std::uint64_t flat = loaded, flat_triangles = loaded_triangles;
+  std::uint64_t flat = copied ? loaded : 0, flat_triangles = loaded_triangles;
   if (!scene.instances.empty()) {
     flat = flat_triangles = 0;
     for (const auto& inst : scene.instances) {
@@ -105,10 +108,11 @@ std::uint64_t parse_memory_size(const std::string& text) {
   return static_cast<std::uint64_t>(bytes);
 }
 
-void check_render_memory(const Scene& scene, const RenderSettings& settings, std::uint64_t limit_bytes) {
+void check_render_memory(const Scene& scene, const RenderSettings& settings, std::uint64_t limit_bytes,
+                         SceneHandover handover) {
   const std::uint64_t limit = limit_bytes > 0 ? limit_bytes : default_memory_limit();
   if (limit == 0) return;  // physical memory unknown and no explicit limit
-  const MemoryEstimate e = estimate_render_memory(scene, settings);
+  const MemoryEstimate e = estimate_render_memory(scene, settings, handover);
   if (e.total() <= limit) return;
   throw Error(fmt::format(
       "render needs about {} (film {}, path pool {}, images {}, textures {}, meshes {}) for {}x{}, more than the "

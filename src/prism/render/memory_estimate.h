@@ -15,8 +15,8 @@ struct MemoryEstimate {
   std::uint64_t film = 0;       // sums, squared sums (2 × Vec3d) and counts (u32) per pixel, plus AOV sums
   std::uint64_t path_pool = 0;  // wavefront path state, about 250 B per slot: a tile per thread (or per pixel)
   std::uint64_t images = 0;     // output conversion buffers (float RGB per pixel, twice)
-  std::uint64_t textures = 0;   // loaded texels, the renderer's copy and mip pyramids
-  std::uint64_t meshes = 0;     // vertex and index arrays, loaded and flattened, plus the BVH
+  std::uint64_t textures = 0;   // loaded texels, the renderer's copy (if copied) and mip levels 1 and up
+  std::uint64_t meshes = 0;     // vertex and index arrays, loaded and (if copied or instanced) flattened, plus the BVH
   std::uint64_t total() const { return film + path_pool + images + textures + meshes; }
 };
 
@@ -35,7 +35,13 @@ inline constexpr std::uint64_t kImageBytesPerPixel = 2 * 3 * sizeof(float);
 inline constexpr std::uint64_t kAovImageBytesPerChannel = sizeof(float);
 inline constexpr std::uint64_t kBvhBytesPerTriangle = 96;  // Embree BVH4 with triangle data
 
-MemoryEstimate estimate_render_memory(const Scene& scene, const RenderSettings& settings);
+// How the render gets the scene: render(const Scene&) copies it into its prepared scene
+// (the viewer, the library's default), render(Scene&&) takes it over (`prism render`), so
+// the loaded meshes and texels are held once instead of twice.
+enum class SceneHandover { copied, moved };
+
+MemoryEstimate estimate_render_memory(const Scene& scene, const RenderSettings& settings,
+                                      SceneHandover handover = SceneHandover::copied);
 
 // 90 % of physical memory (sysconf), or 0 when the platform does not say.
 std::uint64_t default_memory_limit();
@@ -46,6 +52,7 @@ std::uint64_t parse_memory_size(const std::string& text);
 
 // Throws Error (exit 1 in the CLI) naming the estimate, its parts and the limit when the
 // estimate exceeds `limit_bytes` (0: default_memory_limit()).
-void check_render_memory(const Scene& scene, const RenderSettings& settings, std::uint64_t limit_bytes);
+void check_render_memory(const Scene& scene, const RenderSettings& settings, std::uint64_t limit_bytes,
+                         SceneHandover handover = SceneHandover::copied);
 
 }  // namespace prism

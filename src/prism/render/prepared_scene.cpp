@@ -13,6 +13,12 @@ PreparedScene::PreparedScene(const Scene& scene) {
   accel_ = std::make_unique<EmbreeAccel>(*scene_);
 }
 
+PreparedScene::PreparedScene(Scene&& scene) {
+  validate_scene(scene);
+  scene_ = std::make_unique<Scene>(flatten_instances(std::move(scene)));
+  accel_ = std::make_unique<EmbreeAccel>(*scene_);
+}
+
 PreparedScene::~PreparedScene() = default;
 
 void PreparedScene::set_camera(const Camera& camera) { scene_->camera = camera; }

@@ -12,8 +12,11 @@ namespace prism {
 
 class PreparedScene {
  public:
-  // Throws SceneError for invalid scenes (validate_scene).
+  // Throws SceneError for invalid scenes (validate_scene). The first copies the scene; the
+  // second takes it over (its meshes and texture texels are moved, not copied: a loaded
+  // scene need not be held twice).
   explicit PreparedScene(const Scene& scene);
+  explicit PreparedScene(Scene&& scene);
   ~PreparedScene();
   PreparedScene(const PreparedScene&) = delete;
   PreparedScene& operator=(const PreparedScene&) = delete;

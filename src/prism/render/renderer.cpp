@@ -187,6 +187,16 @@ RenderResult render(const Scene& input_scene, const RenderSettings& settings, co
   return render(prepared, settings, hooks, resume);
 }
 
+RenderResult render(Scene&& input_scene, const RenderSettings& settings, const RenderHooks& hooks,
+                    const ResumeState* resume) {
+  validate_render_settings(settings);
+  validate_transport(settings.transport);
+  validate_scene(input_scene);
+  check_render_memory(input_scene, settings, settings.memory_limit_bytes, SceneHandover::moved);
+  const PreparedScene prepared(std::move(input_scene));
+  return render(prepared, settings, hooks, resume);
+}
+
 RenderResult render(const PreparedScene& prepared, const RenderSettings& settings, const RenderHooks& hooks,
                     const ResumeState* resume) {
   validate_render_settings(settings);

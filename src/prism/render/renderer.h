@@ -103,6 +103,12 @@ struct ResumeState {
 RenderResult render(const Scene& scene, const RenderSettings& settings, const RenderHooks& hooks,
                     const ResumeState* resume = nullptr);
 
+// The same, taking the scene over: its meshes and texels move into the prepared scene
+// instead of being copied (`prism render`, which has no further use for them). The
+// moved-from scene is left valid but unspecified.
+RenderResult render(Scene&& scene, const RenderSettings& settings, const RenderHooks& hooks,
+                    const ResumeState* resume = nullptr);
+
 // The same for a scene prepared once (prepared_scene.h): no validation of its geometry,
 // flattening or BVH build per call, so interactive restarts cost only the film.
 class PreparedScene;

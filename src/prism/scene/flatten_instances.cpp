@@ -20,15 +20,16 @@ Vec3f transform_normal(const Transform& t, const Vec3f& n) {
 
 }  // namespace
 
-Scene flatten_instances(const Scene& scene) {
+Scene flatten_instances(Scene scene) {
   if (scene.instances.empty()) return scene;
-  Scene flat = scene;
-  flat.meshes.clear();
-  flat.instances.clear();
-  for (const Instance& inst : scene.instances) {
-    if (inst.mesh >= scene.meshes.size())
-      throw SceneError(fmt::format("instance refers to mesh {} of {}", inst.mesh, scene.meshes.size()));
-    TriangleMesh mesh = scene.meshes[inst.mesh];
+  const std::vector<TriangleMesh> meshes = std::move(scene.meshes);
+  const std::vector<Instance> instances = std::move(scene.instances);
+  scene.meshes.clear();
+  scene.instances.clear();
+  for (const Instance& inst : instances) {
+    if (inst.mesh >= meshes.size())
+      throw SceneError(fmt::format("instance refers to mesh {} of {}", inst.mesh, meshes.size()));
+    TriangleMesh mesh = meshes[inst.mesh];
     for (Vec3f& p : mesh.positions) p = inst.object_to_world.apply_point(p);
     for (Vec3f& n : mesh.normals) n = normalize(transform_normal(inst.object_to_world, n));
     for (Vec3f& t : mesh.tangents) t = normalize(inst.object_to_world.apply_vector(t));
@@ -44,9 +45,9 @@ Scene flatten_instances(const Scene& scene) {
       if (mesh.tangent_signs.empty()) mesh.tangent_signs.assign(mesh.tangents.size(), 1.0f);
       for (float& s : mesh.tangent_signs) s = -s;
     }
-    flat.meshes.push_back(std::move(mesh));
+    scene.meshes.push_back(std::move(mesh));
   }
-  return flat;
+  return scene;
 }
 
 Bounds3f scene_bounds(const Scene& scene) {

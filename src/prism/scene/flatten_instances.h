@@ -4,10 +4,11 @@
 
 namespace prism {
 
-// A copy of the scene in which every instance is a world-space mesh (positions and
-// normals transformed) and `instances` is empty. Scenes without instances are returned
-// unchanged. The integrator and light sampling then see plain triangles.
-Scene flatten_instances(const Scene& scene);
+// The scene with every instance made a world-space mesh (positions and normals
+// transformed) and `instances` empty. Scenes without instances are returned unchanged.
+// The integrator and light sampling then see plain triangles. Taken by value: pass an
+// rvalue to hand the scene's meshes and texels over instead of copying them.
+Scene flatten_instances(Scene scene);
 
 // Bounds of all mesh positions (after flattening).
 Bounds3f scene_bounds(const Scene& scene);

@@ -106,11 +106,11 @@ TexelRgba bilinear(const float* texels, int width, int height, int channels, Vec
 }  // namespace
 
 TexelRgba texel_fetch(const MipLevel& level, int channels, int x, int y, TextureWrap wrap_u, TextureWrap wrap_v) {
-  return fetch(level.texels.data(), level.width, level.height, channels, x, y, wrap_u, wrap_v);
+  return fetch(level.data(), level.width, level.height, channels, x, y, wrap_u, wrap_v);
 }
 
 TexelRgba sample_bilinear(const MipLevel& level, int channels, Vec2f uv, TextureWrap wrap_u, TextureWrap wrap_v) {
-  return bilinear(level.texels.data(), level.width, level.height, channels, uv, wrap_u, wrap_v);
+  return bilinear(level.data(), level.width, level.height, channels, uv, wrap_u, wrap_v);
 }
 
 TexelRgba sample_bilinear(const TextureImage& texture, Vec2f uv) {
@@ -123,7 +123,7 @@ MipPyramid build_mip_pyramid(const TextureImage& texture) {
   pyramid.channels = texture.channels;
   pyramid.wrap_u = texture.wrap_u;
   pyramid.wrap_v = texture.wrap_v;
-  pyramid.levels.push_back({texture.width, texture.height, texture.texels});
+  pyramid.levels.push_back({texture.width, texture.height, {}, texture.texels.data()});
   const int c = texture.channels;
   while (pyramid.levels.back().width > 1 || pyramid.levels.back().height > 1) {
     const MipLevel& fine = pyramid.levels.back();
@@ -141,7 +141,7 @@ MipPyramid build_mip_pyramid(const TextureImage& texture) {
         float* out = coarse.texels.data() + (static_cast<std::size_t>(y) * coarse.width + x) * c;
         for (int fy = y_begin; fy < y_end; ++fy)
           for (int fx = x_begin; fx < x_end; ++fx)
-            for (int k = 0; k < c; ++k) out[k] += fine.texels[(static_cast<std::size_t>(fy) * fine.width + fx) * c + k];
+            for (int k = 0; k < c; ++k) out[k] += fine.data()[(static_cast<std::size_t>(fy) * fine.width + fx) * c + k];
         const float n = static_cast<float>((y_end - y_begin) * (x_end - x_begin));
         for (int k = 0; k < c; ++k) out[k] /= n;
       }

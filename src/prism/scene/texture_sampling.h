@@ -20,7 +20,9 @@ using TexelRgba = std::array<float, 4>;
 
 struct MipLevel {
   int width = 0, height = 0;
-  std::vector<float> texels;  // channels per texel, as in TextureImage
+  std::vector<float> texels;        // channels per texel, as in TextureImage; empty where borrowed
+  const float* borrowed = nullptr;  // level 0 of a pyramid: its TextureImage's texels, not copied
+  const float* data() const { return borrowed != nullptr ? borrowed : texels.data(); }
 };
 
 struct MipPyramid {
@@ -40,8 +42,11 @@ TexelRgba sample_bilinear(const TextureImage& texture, Vec2f uv);
 
 // Each level halves the previous one's size (rounding down, at least 1) and averages the
 // 2×2 texels it covers (a box filter). With an odd size the last coarse texel averages the
-// three fine texels left over, so no texel is dropped.
+// three fine texels left over, so no texel is dropped. Level 0 is the texture's own
+// texels, borrowed rather than copied (a 2048² RGB texture is 48 MB), so the pyramid must
+// not outlive the texture; a temporary is refused at compile time.
 MipPyramid build_mip_pyramid(const TextureImage& texture);
+MipPyramid build_mip_pyramid(TextureImage&& texture) = delete;
 
 // Level of detail λ (0 = finest) from the screen-space uv derivatives of a ray
 // differential: log2 of the longer of the two texel-space footprint axes.

@@ -137,6 +137,10 @@ TEST(TextureSampling, MipPyramidIsABoxFilter) {
   for (int i = 0; i < 8; ++i) t.texels.insert(t.texels.end(), {static_cast<float>(i), 1.0f});
   const MipPyramid p = build_mip_pyramid(t);
   ASSERT_EQ(p.levels.size(), 3u);  // 4×2, 2×1, 1×1
+  // Level 0 is the texture's own texels, not a copy of them.
+  EXPECT_EQ(p.levels[0].data(), t.texels.data());
+  EXPECT_TRUE(p.levels[0].texels.empty());
+  EXPECT_EQ(texel_fetch(p.levels[0], 2, 3, 1, TextureWrap::clamp, TextureWrap::clamp)[0], 7.0f);
   EXPECT_EQ(p.levels[1].width, 2);
   EXPECT_EQ(p.levels[1].height, 1);
   // Level 1 texel 0 averages texels 0, 1, 4, 5; texel 1 averages 2, 3, 6, 7.

@@ -1,0 +1,77 @@
+// Handing a scene over to the renderer (PreparedScene(Scene&&), render(Scene&&)) moves its
+// meshes and texels instead of copying them, and renders exactly what a copy renders.
+#include <gtest/gtest.h>
+
+#include "prism/render/prepared_scene.h"
+#include "prism/render/renderer.h"
+#include "prism/scene/builtin_scenes.h"
+
+namespace prism {
+namespace {
+
+// The Cornell box with a 64×64 RGB texture on its first material, so that both the
+// geometry and the texels are big enough to be heap buffers worth tracking.
+Scene textured_cornell_box() {
+  Scene scene = make_cornell_box();
+  TextureImage t;
+  t.name = "checker";
+  t.width = t.height = 64;
+  t.channels = 3;
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) {
+      const float v = ((x / 8 + y / 8) % 2) != 0 ? 0.8f : 0.2f;
+      t.texels.insert(t.texels.end(), {v, 0.5f * v, 0.25f + 0.5f * v});
+    }
+  scene.textures.push_back(std::move(t));
+  scene.materials[0].base_color_texture = 0;
+  for (TriangleMesh& m : scene.meshes)
+    if (m.uvs.empty()) m.uvs.assign(m.positions.size(), Vec2f(0.3f, 0.6f));
+  return scene;
+}
+
+TEST(PreparedScene, TakingTheSceneOverMovesItsBuffers) {
+  Scene scene = textured_cornell_box();
+  const float* texels = scene.textures[0].texels.data();
+  const Vec3f* positions = scene.meshes[0].positions.data();
+  const PreparedScene prepared(std::move(scene));
+  EXPECT_EQ(prepared.scene().textures[0].texels.data(), texels);
+  EXPECT_EQ(prepared.scene().meshes[0].positions.data(), positions);
+}
+
+TEST(PreparedScene, CopyingTheSceneLeavesItIntact) {
+  const Scene scene = textured_cornell_box();
+  const PreparedScene prepared(scene);
+  EXPECT_NE(prepared.scene().textures[0].texels.data(), scene.textures[0].texels.data());
+  EXPECT_EQ(prepared.scene().textures[0].texels, scene.textures[0].texels);
+  EXPECT_EQ(prepared.scene().meshes.size(), scene.meshes.size());
+}
+
+TEST(PreparedScene, FlatteningInstancesStillMovesTheTexels) {
+  Scene scene = textured_cornell_box();
+  // Every mesh drawn twice: once in place, once shifted along x.
+  const std::size_t meshes = scene.meshes.size();
+  for (std::uint32_t i = 0; i < meshes; ++i) {
+    scene.instances.push_back(Instance{i, Transform{}});
+    scene.instances.push_back(Instance{i, Transform::translate(Vec3f(1000.0f, 0.0f, 0.0f))});
+  }
+  const float* texels = scene.textures[0].texels.data();
+  const PreparedScene prepared(std::move(scene));
+  EXPECT_EQ(prepared.scene().textures[0].texels.data(), texels);
+  EXPECT_EQ(prepared.scene().meshes.size(), 2 * meshes);
+  EXPECT_TRUE(prepared.scene().instances.empty());
+}
+
+TEST(PreparedScene, RenderingAHandedOverSceneGivesTheSameImage) {
+  RenderSettings settings;
+  settings.width = settings.height = 24;
+  settings.samples_per_pixel = 2;
+  settings.threads = 1;
+  const Scene scene = textured_cornell_box();
+  const RenderResult copied = render(scene, settings, RenderHooks{});
+  const RenderResult moved = render(textured_cornell_box(), settings, RenderHooks{});
+  EXPECT_EQ(copied.film.sums(), moved.film.sums());  // bit for bit: the same numbers either way
+  EXPECT_EQ(copied.film.counts(), moved.film.counts());
+}
+
+}  // namespace
+}  // namespace prism

@@ -38,6 +38,19 @@ TEST(PreparedScene, TakingTheSceneOverMovesItsBuffers) {
   EXPECT_EQ(prepared.scene().meshes[0].positions.data(), positions);
 }
 
+// The textures' mip pyramids are built once per prepared scene (not per render, so a
+// viewer restart does not rebuild them), level 0 being the prepared scene's own texels.
+TEST(PreparedScene, BuildsOneMipPyramidPerTextureOnce) {
+  const PreparedScene prepared(textured_cornell_box());
+  ASSERT_EQ(prepared.mip_pyramids().size(), 1u);
+  const MipPyramid& p = prepared.mip_pyramids()[0];
+  ASSERT_EQ(p.levels.size(), 7u);  // 64² … 1²
+  EXPECT_EQ(p.levels[0].data(), prepared.scene().textures[0].texels.data());
+  EXPECT_EQ(p.levels[6].width, 1);
+  // The 1×1 level is the checker's mean: half 0.8 and half 0.2 in the first channel.
+  EXPECT_NEAR(p.levels[6].texels[0], 0.5f, 1e-6f);
+}
+
 TEST(PreparedScene, CopyingTheSceneLeavesItIntact) {
   const Scene scene = textured_cornell_box();
   const PreparedScene prepared(scene);

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include "prism/core/error.h"
+#include "prism/core/parallel.h"
 #include "prism/scene/flatten_instances.h"
 
 namespace prism {
@@ -10,13 +11,23 @@ namespace prism {
 PreparedScene::PreparedScene(const Scene& scene) {
   validate_scene(scene);
   scene_ = std::make_unique<Scene>(flatten_instances(scene));
-  accel_ = std::make_unique<EmbreeAccel>(*scene_);
+  build();
 }
 
 PreparedScene::PreparedScene(Scene&& scene) {
   validate_scene(scene);
   scene_ = std::make_unique<Scene>(flatten_instances(std::move(scene)));
+  build();
+}
+
+void PreparedScene::build() {
   accel_ = std::make_unique<EmbreeAccel>(*scene_);
+  // Textures in parallel (a glTF model has a few of 2048² or more); each pyramid borrows its
+  // level 0 from scene_, whose address is stable.
+  mip_pyramids_.resize(scene_->textures.size());
+  parallel_for(scene_->textures.size(), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t) mip_pyramids_[t] = build_mip_pyramid(scene_->textures[t]);
+  });
 }
 
 PreparedScene::~PreparedScene() = default;

@@ -1,12 +1,15 @@
 #pragma once
 // A scene made ready for rendering once: validated, instances flattened into world-space
 // meshes and its BVH built. Interactive use (the viewer) renders many times with a new
-// camera, materials or lights but the same geometry; keeping the flattened copy and the
-// BVH across those renders turns a restart from O(triangles) into O(pixels).
+// camera, materials or lights but the same geometry; keeping the flattened copy, the BVH
+// and the textures' mip pyramids across those renders turns a restart from O(triangles +
+// texels) into O(pixels).
 #include <memory>
+#include <vector>
 
 #include "prism/accel/embree_accel.h"
 #include "prism/scene/scene.h"
+#include "prism/scene/texture_sampling.h"
 
 namespace prism {
 
@@ -23,6 +26,8 @@ class PreparedScene {
 
   const Scene& scene() const { return *scene_; }
   const EmbreeAccel& accel() const { return *accel_; }
+  // One per scene texture, level 0 borrowed from the prepared scene's own texels.
+  const std::vector<MipPyramid>& mip_pyramids() const { return mip_pyramids_; }
 
   // What may change between renders without rebuilding: the BVH only depends on meshes
   // and instances, which stay as prepared. Material indices must stay in range (the
@@ -34,6 +39,9 @@ class PreparedScene {
  private:
   std::unique_ptr<Scene> scene_;  // stable address: the BVH's alpha filters read its meshes and textures
   std::unique_ptr<EmbreeAccel> accel_;
+  std::vector<MipPyramid> mip_pyramids_;
+
+  void build();  // the BVH and the mip pyramids of scene_
 };
 
 }  // namespace prism

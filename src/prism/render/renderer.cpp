@@ -113,16 +113,17 @@ std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settin
 namespace {
 
 template <class Mode>
-void render_passes(const Scene& scene, const EmbreeAccel& accel, const RenderSettings& settings,
+void render_passes(const PreparedScene& prepared, const RenderSettings& settings,
                    const RenderHooks& hooks, RenderResult& result, int start_sample) {
   const auto start = std::chrono::steady_clock::now();
   const auto elapsed = [&] {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
+  const Scene& scene = prepared.scene();
   const LightSampler lights(scene, scene_bounds(scene), settings.path.light);
   const PinholeCamera camera(scene.camera, settings.width, settings.height);
   const ColorContext<Mode> colors(scene, settings.transport);
-  WavefrontIntegrator<Mode> integrator(scene, accel, lights, camera, colors, settings.path, settings.width,
+  WavefrontIntegrator<Mode> integrator(scene, prepared.accel(), prepared.mip_pyramids(), lights, camera, colors, settings.path, settings.width,
                                        settings.height, settings.seed, settings.regenerate_paths);
   const auto cancelled = [&hooks] { return hooks.cancel && hooks.cancel->load(std::memory_order_relaxed); };
 
@@ -203,7 +204,6 @@ RenderResult render(const PreparedScene& prepared, const RenderSettings& setting
   validate_transport(settings.transport);
   // The memory check belongs before preparing (render(const Scene&) above, or the caller):
   // by now the geometry and its BVH are allocated.
-  const Scene& scene = prepared.scene();
   const ThreadLimit thread_limit(settings.threads);
   const auto start = std::chrono::steady_clock::now();
 
@@ -228,13 +228,13 @@ RenderResult render(const PreparedScene& prepared, const RenderSettings& setting
 
   const TransportSettings& t = settings.transport;
   if (t.kind == TransportKind::rgb) {
-    render_passes<RgbMode>(scene, prepared.accel(), settings, hooks, result, next_sample);
+    render_passes<RgbMode>(prepared, settings, hooks, result, next_sample);
   } else if (t.wavelengths == 3) {
-    render_passes<SpectralMode<3>>(scene, prepared.accel(), settings, hooks, result, next_sample);
+    render_passes<SpectralMode<3>>(prepared, settings, hooks, result, next_sample);
   } else if (t.wavelengths == 8) {
-    render_passes<SpectralMode<8>>(scene, prepared.accel(), settings, hooks, result, next_sample);
+    render_passes<SpectralMode<8>>(prepared, settings, hooks, result, next_sample);
   } else {
-    render_passes<SpectralMode<4>>(scene, prepared.accel(), settings, hooks, result, next_sample);
+    render_passes<SpectralMode<4>>(prepared, settings, hooks, result, next_sample);
   }
   result.passes_done = result.next_sample - settings.first_sample;
   if (hooks.on_checkpoint) hooks.on_checkpoint(result.film, result.next_sample);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 
 #include "prism/core/frame.h"
 #include "prism/core/parallel.h"
@@ -50,13 +51,15 @@ struct WavefrontIntegrator<Mode>::Paths {
 };
 
 template <class Mode>
-WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeAccel& accel, const LightSampler& lights,
+WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeAccel& accel,
+                                               const std::vector<MipPyramid>& mip_pyramids, const LightSampler& lights,
                                                const PinholeCamera& camera, const ColorContext<Mode>& colors,
                                                const PathSettings& settings, int width, int height, std::uint64_t seed,
                                                bool regenerate)
-    : tables_(scene.materials), scene_(scene), accel_(accel), lights_(lights), camera_(camera), colors_(colors), settings_(settings),
+    : tables_(scene.materials), textures_(mip_pyramids), scene_(scene), accel_(accel), lights_(lights), camera_(camera), colors_(colors), settings_(settings),
       width_(width), height_(height), seed_(seed), regenerate_(regenerate) {
-  for (const TextureImage& texture : scene.textures) textures_.push_back(build_mip_pyramid(texture));
+  if (mip_pyramids.size() != scene.textures.size())
+    throw std::invalid_argument("WavefrontIntegrator: one mip pyramid per scene texture expected");
   for (const Material& m : scene.materials)
     textured_emission_.push_back(textured_emission_matrix(m.emission, color::color_space("srgb")));
 }

@@ -81,7 +81,10 @@ template <class Mode>
 class WavefrontIntegrator {
  public:
   ~WavefrontIntegrator();
-  WavefrontIntegrator(const Scene& scene, const EmbreeAccel& accel, const LightSampler& lights,
+  // `mip_pyramids`: one per Scene::textures entry (PreparedScene::mip_pyramids(), built once
+  // per prepared scene, not per render).
+  WavefrontIntegrator(const Scene& scene, const EmbreeAccel& accel, const std::vector<MipPyramid>& mip_pyramids,
+                      const LightSampler& lights,
                       const PinholeCamera& camera, const ColorContext<Mode>& colors, const PathSettings& settings,
                       int width, int height, std::uint64_t seed, bool regenerate = true);
 
@@ -141,7 +144,7 @@ class WavefrontIntegrator {
   std::vector<std::unique_ptr<Paths>> idle_tile_paths_;  // tile path states not in use
   std::unique_ptr<Paths> whole_image_paths_;             // lockstep queue's, made on first use
   MaterialTables tables_;
-  std::vector<MipPyramid> textures_;  // one per Scene::textures entry
+  const std::vector<MipPyramid>& textures_;  // one per Scene::textures entry
   std::vector<Mat3> textured_emission_;  // per material: texel → Rec.709 radiance (scene/emission.h)
   const Scene& scene_;
   const EmbreeAccel& accel_;

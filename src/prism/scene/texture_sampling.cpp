@@ -35,8 +35,10 @@ Vec2f apply_uv_transform(const TextureImage& t, Vec2f uv) {
 
 namespace {
 
-// The texel at wrapped coordinates (xi, yi) ∈ [0, width) × [0, height).
-TexelRgba texel_at_index(const float* texels, int width, int channels, int xi, int yi) {
+// The texel at wrapped coordinates (xi, yi) ∈ [0, width) × [0, height). Always inlined,
+// like wrap_reduced_coordinate: GCC otherwise calls both out of line from bilinear()'s
+// four sites, and the texel comes back through memory.
+[[gnu::always_inline]] inline TexelRgba texel_at_index(const float* texels, int width, int channels, int xi, int yi) {
   const float* p = texels + (static_cast<std::size_t>(yi) * width + xi) * channels;
   switch (channels) {
     case 1: return {p[0], p[0], p[0], 1.0f};
@@ -75,7 +77,7 @@ int reduce_coordinate(double i, int size, TextureWrap wrap) {
 // one more, i.e. [-1, size + 1] (clamp) or [0, 2·size] (repeat, mirror), without the
 // integer division of the general case (which stays for anything else, e.g. the result of
 // reducing an absurd coordinate in floating point).
-int wrap_reduced_coordinate(int i, int size, TextureWrap wrap) {
+[[gnu::always_inline]] inline int wrap_reduced_coordinate(int i, int size, TextureWrap wrap) {
   if (wrap == TextureWrap::clamp) return std::clamp(i, 0, size - 1);
   if (i < 0 || i > 2 * size) return wrap_texel_coordinate(i, size, wrap);
   if (i == 2 * size) return 0;  // both periodic modes start over at 2·size

@@ -74,6 +74,48 @@ TEST(PreparedScene, FlatteningInstancesStillMovesTheTexels) {
   EXPECT_TRUE(prepared.scene().instances.empty());
 }
 
+// The light sampler is kept across renders (a viewer restart after a camera move) and
+// rebuilt only when what it is built from changes: the options, a material's emission, a
+// light.
+TEST(PreparedScene, KeepsTheLightSamplerUntilTheEmittersChange) {
+  PreparedScene prepared(textured_cornell_box());
+  const LightSamplerOptions options;
+  const auto first = prepared.light_sampler(options);
+  EXPECT_EQ(prepared.light_sampler(options), first);
+  Camera camera = prepared.scene().camera;
+  camera.eye.x += 1.0f;
+  prepared.set_camera(camera);
+  EXPECT_EQ(prepared.light_sampler(options), first);
+  std::vector<Material> materials = prepared.scene().materials;
+  materials[0].base_color = Vec3f(0.1f);  // not an emitter's business
+  prepared.set_materials(materials);
+  EXPECT_EQ(prepared.light_sampler(options), first);
+  prepared.set_lights(prepared.scene().lights);  // the same lights again
+  EXPECT_EQ(prepared.light_sampler(options), first);
+
+  std::size_t light_material = materials.size();
+  for (std::size_t i = 0; i < materials.size(); ++i)
+    if (materials[i].is_emissive()) light_material = i;
+  ASSERT_LT(light_material, materials.size());
+  materials[light_material].emission.luminance_nits *= 2.0f;
+  prepared.set_materials(materials);
+  const auto brighter = prepared.light_sampler(options);
+  EXPECT_NE(brighter, first);
+  EXPECT_EQ(first->light_count(), brighter->light_count());  // the old one is still usable
+
+  Light sun;
+  sun.type = LightType::directional;
+  sun.intensity = 3.0f;
+  prepared.set_lights({sun});
+  const auto with_sun = prepared.light_sampler(options);
+  EXPECT_NE(with_sun, brighter);
+  EXPECT_EQ(with_sun->light_count(), brighter->light_count() + 1);
+
+  LightSamplerOptions other = options;
+  other.reuse_selection_sample = !other.reuse_selection_sample;
+  EXPECT_NE(prepared.light_sampler(other), with_sun);
+}
+
 TEST(PreparedScene, RenderingAHandedOverSceneGivesTheSameImage) {
   RenderSettings settings;
   settings.width = settings.height = 24;

@@ -9,6 +9,8 @@ struct Transform {
   float m[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   Vec3f translation{};
 
+  bool operator==(const Transform&) const = default;
+
   static Transform translate(const Vec3f& t) {
     Transform r;
     r.translation = t;

@@ -32,6 +32,15 @@ void PreparedScene::build() {
 
 PreparedScene::~PreparedScene() = default;
 
+std::shared_ptr<const LightSampler> PreparedScene::light_sampler(const LightSamplerOptions& options) const {
+  const std::lock_guard<std::mutex> lock(light_sampler_mutex_);
+  if (!light_sampler_ || !(light_sampler_options_ == options)) {
+    light_sampler_ = std::make_shared<const LightSampler>(*scene_, scene_bounds(*scene_), options);
+    light_sampler_options_ = options;
+  }
+  return light_sampler_;
+}
+
 void PreparedScene::set_camera(const Camera& camera) { scene_->camera = camera; }
 
 void PreparedScene::set_materials(std::vector<Material> materials) {
@@ -39,9 +48,21 @@ void PreparedScene::set_materials(std::vector<Material> materials) {
     throw SceneError(fmt::format("the scene has {} materials, not {}: meshes refer to materials by index",
                                  scene_->materials.size(), materials.size()));
   for (const Material& m : materials) validate_material(m);
+  bool same_emission = true;
+  for (std::size_t i = 0; i < materials.size(); ++i)
+    same_emission = same_emission && materials[i].emission == scene_->materials[i].emission;
   scene_->materials = std::move(materials);
+  if (!same_emission) {
+    const std::lock_guard<std::mutex> lock(light_sampler_mutex_);
+    light_sampler_.reset();
+  }
 }
 
-void PreparedScene::set_lights(std::vector<Light> lights) { scene_->lights = std::move(lights); }
+void PreparedScene::set_lights(std::vector<Light> lights) {
+  if (lights == scene_->lights) return;
+  scene_->lights = std::move(lights);
+  const std::lock_guard<std::mutex> lock(light_sampler_mutex_);
+  light_sampler_.reset();
+}
 
 }  // namespace prism

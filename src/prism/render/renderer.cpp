@@ -120,7 +120,8 @@ void render_passes(const PreparedScene& prepared, const RenderSettings& settings
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   };
   const Scene& scene = prepared.scene();
-  const LightSampler lights(scene, scene_bounds(scene), settings.path.light);
+  const std::shared_ptr<const LightSampler> light_sampler = prepared.light_sampler(settings.path.light);
+  const LightSampler& lights = *light_sampler;
   const PinholeCamera camera(scene.camera, settings.width, settings.height);
   const ColorContext<Mode> colors(scene, settings.transport);
   WavefrontIntegrator<Mode> integrator(scene, prepared.accel(), prepared.mip_pyramids(), lights, camera, colors, settings.path, settings.width,

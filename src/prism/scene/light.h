@@ -37,6 +37,8 @@ struct Light {
   int environment_texture = -1;           // environment: texture index (-1: constant)
   EnvironmentMapping environment_mapping = EnvironmentMapping::equirectangular;
   Transform environment_to_world;         // environment: orientation
+
+  bool operator==(const Light&) const = default;
 };
 
 }  // namespace prism

@@ -58,6 +58,8 @@ struct LightSamplerOptions {
   // kMinReusedSelectionPmf reuse it (the remainder keeps ≥ 16 of a float's 24 bits);
   // others take u_select as their u_point.x — equally uniform, only unstratified.
   bool reuse_selection_sample = true;
+
+  bool operator==(const LightSamplerOptions&) const = default;
 };
 
 class LightSampler {

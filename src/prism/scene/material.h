@@ -37,6 +37,7 @@ struct Emission {
   bool two_sided = false;
 
   bool is_emissive() const { return luminance_nits > 0.0f && max_component(color) > 0.0f; }
+  bool operator==(const Emission&) const = default;
 };
 
 struct Material {

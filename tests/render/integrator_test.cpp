@@ -107,6 +107,32 @@ TEST(Integrator, LosslessObjectsVanishInAUniformField) {
   }
 }
 
+// The same with geometry too big for the caches (over 512 KiB of indices and vertices), so
+// that shading prefetches each hit's vertices a few slots ahead (surface_interaction.h):
+// a mirror sphere of ≈ 29 000 triangles must still vanish, and the prefetches' loads of
+// index triples stay in bounds (checked under AddressSanitizer in CI).
+TEST(Integrator, LosslessGeometryBeyondTheCachesVanishesToo) {
+  constexpr float kAlbedo = 0.5f, kEmitted = 1.0f;
+  Scene scene = test::make_emitting_enclosure(kAlbedo, kEmitted);
+  Material mirror;
+  mirror.name = "mirror";
+  mirror.type = MaterialType::mirror;
+  mirror.base_color = Vec3f(1.0f);
+  scene.materials.push_back(mirror);
+  TriangleMesh sphere = loaders::make_uv_sphere(Vec3f(0.3f, 0.2f, 0.6f), 0.35f, 120);
+  sphere.normals.clear();
+  sphere.material = static_cast<std::uint32_t>(scene.materials.size() - 1);
+  const std::size_t bytes = sphere.indices.size() * sizeof(std::uint32_t) + sphere.positions.size() * sizeof(Vec3f) +
+                            sphere.uvs.size() * sizeof(Vec2f) + sphere.tangents.size() * sizeof(Vec3f);
+  ASSERT_GT(bytes, std::size_t{512} << 10);  // wavefront_integrator.cpp's threshold for prefetching
+  scene.meshes.push_back(std::move(sphere));
+  for (const ModeCase& m : {all_modes()[0], all_modes().back()}) {
+    RenderSettings s = settings_for(m.transport, 16, 32);
+    s.path.max_depth = 200;
+    expect_uniform(render(scene, s).film, kEmitted / (1.0 - kAlbedo), "large mirror " + describe(m.transport));
+  }
+}
+
 // A grey floor (ρ = 0.5, flat spectrum) seen from straight above through a narrow field
 // of view, lit by one delta light, direct light only: L = ρ/π · E_perp with E_perp the
 // illuminance on the floor. RGB transport has no sampling noise here (bound: float

@@ -155,6 +155,7 @@ class WavefrontIntegrator {
   int width_, height_;
   std::uint64_t seed_;
   bool regenerate_;
+  bool prefetch_geometry_ = false;  // the meshes outgrow the caches: shading prefetches hits' vertices
 };
 
 }  // namespace prism

@@ -18,7 +18,7 @@ namespace prism {
 namespace {
 
 constexpr double kAlphaTotal = 0.01;  // Šidák-corrected over this file's chi-square tests
-constexpr int kChiSquareTests = 4;
+constexpr int kChiSquareTests = 5;
 
 TEST(LightSampler, AreaLightPointsAreUniformWithSolidAngleDensity) {
   // Cornell light: a 130 × 105 mm rectangle at constant y, seen from the floor below it.
@@ -225,6 +225,46 @@ TEST(LightSampler, SelectionIsProportionalToPower) {
     observed[s->emitter == point_id ? 1 : 0] += 1.0;
   }
   const std::vector<double> expected = {kSamples * (1.0 - p_point), kSamples * p_point};
+  const auto r = test::chi_square_test(observed, expected);
+  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+}
+
+// A textured emitter's triangles are chosen in proportion to their power estimate: the
+// mean weight of their uv footprint plus 1 % of the texture's mean over its texels (the
+// floor that keeps dark triangles selectable). Two equal triangles, one mapped onto a
+// white texel and one onto a black one (clamped 2×1 texture, mean 0.5): weights
+// 1 + 0.005 and 0 + 0.005, so the dark one is chosen with probability 0.005 / 1.01.
+TEST(LightSampler, TexturedEmitterSelectionHasTheTextureMeanFloor) {
+  Scene scene;
+  Material emitter;
+  emitter.emission.color = Vec3f(1.0f);
+  emitter.emission.luminance_nits = 1.0f;
+  emitter.emission.texture = 0;
+  scene.materials.push_back(emitter);
+  TextureImage t;
+  t.width = 2;
+  t.height = 1;
+  t.channels = 3;
+  t.texels = {1, 1, 1, 0, 0, 0};
+  t.wrap_u = t.wrap_v = TextureWrap::clamp;
+  scene.textures.push_back(t);
+  TriangleMesh mesh;  // two unit right triangles in the plane y = 0, facing +y
+  mesh.positions = {{-2, 0, 0}, {-2, 0, 1}, {-1, 0, 0}, {1, 0, 0}, {1, 0, 1}, {2, 0, 0}};
+  mesh.indices = {0, 1, 2, 3, 4, 5};
+  // Bright triangle within u ≤ 0.2 (texel 0 alone), dark one within u ≥ 0.8 (texel 1).
+  mesh.uvs = {{0.0f, 0.5f}, {0.1f, 0.5f}, {0.2f, 0.5f}, {0.8f, 0.5f}, {0.9f, 0.5f}, {1.0f, 0.5f}};
+  scene.meshes.push_back(mesh);
+  const LightSampler lights(scene, scene_bounds(scene));
+  const double p_dark = 0.005 / 1.01;
+  constexpr long kSamples = 400'000;
+  std::vector<double> observed(2, 0.0);
+  Pcg32 rng(3, 7);
+  for (long i = 0; i < kSamples; ++i) {
+    const auto s = lights.sample(Vec3f(0, 5, 0.3f), rng.next_float(), Vec2f(rng.next_float(), rng.next_float()));
+    ASSERT_TRUE(s.has_value());
+    observed[s->position.x > 0.0f ? 1 : 0] += 1.0;
+  }
+  const std::vector<double> expected = {kSamples * (1.0 - p_dark), kSamples * p_dark};
   const auto r = test::chi_square_test(observed, expected);
   EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
 }

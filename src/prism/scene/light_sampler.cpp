@@ -1,14 +1,15 @@
 #include "prism/scene/light_sampler.h"
 
 #include <algorithm>
-#include <optional>
 #include <cmath>
+#include <optional>
 #include <limits>
 #include <numbers>
 
 #include "prism/core/branch_free.h"
 #include "prism/core/frame.h"
 #include "prism/core/mat3.h"
+#include "prism/core/parallel.h"
 #include "prism/color/color_space.h"
 #include "prism/sampling/warps.h"
 #include "prism/scene/emission.h"
@@ -63,9 +64,11 @@ struct TexelEmissionWeight {
   double operator()(Vec2f uv) const {
     if (!(y_colour > 0.0)) return 0.0;
     const TexelRgba t = sample_bilinear(texture, apply_uv_transform(texture, uv));
-    const Vec3f rgb = texture.channels >= 3 ? Vec3f(t[0], t[1], t[2]) : Vec3f(t[0]);
-    return std::max(0.0, dot(luminance_row, Vec3d(colour * rgb)) / y_colour);
+    return of_rgb(texture.channels >= 3 ? Vec3f(t[0], t[1], t[2]) : Vec3f(t[0]));
   }
+  // Of texel (x, y) itself.
+  double at_texel(int x, int y) const { return y_colour > 0.0 ? of_rgb(texel_rgb(texture, x, y)) : 0.0; }
+  double of_rgb(const Vec3f& rgb) const { return std::max(0.0, dot(luminance_row, Vec3d(colour * rgb)) / y_colour); }
 
   const TextureImage& texture;
   Vec3f colour;
@@ -73,13 +76,17 @@ struct TexelEmissionWeight {
   double y_colour;
 };
 
-// The texture's mean weight over its texel centres (once per emissive mesh).
+// The texture's mean weight over its texels (once per emissive mesh): rows summed in
+// parallel, then added in row order, so the result does not depend on the thread count.
 double texture_mean_weight(const TexelEmissionWeight& weight) {
   const TextureImage& texture = weight.texture;
+  std::vector<double> row_sums(static_cast<std::size_t>(std::max(0, texture.height)), 0.0);
+  parallel_for(row_sums.size(), 16, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t y = begin; y < end; ++y)
+      for (int x = 0; x < texture.width; ++x) row_sums[y] += weight.at_texel(x, static_cast<int>(y));
+  });
   double sum = 0.0;
-  for (int y = 0; y < texture.height; ++y)
-    for (int x = 0; x < texture.width; ++x)
-      sum += weight(Vec2f((x + 0.5f) / texture.width, (y + 0.5f) / texture.height));
+  for (const double s : row_sums) sum += s;
   return sum / std::max(1, texture.width * texture.height);
 }
 
@@ -114,6 +121,21 @@ LightSampler::LightSampler(const Scene& scene, const Bounds3f& world, const Ligh
     std::optional<TexelEmissionWeight> texel_weight;
     if (textured) texel_weight.emplace(scene.textures[static_cast<std::size_t>(tex)], material.emission);
     const double texture_mean = textured ? texture_mean_weight(*texel_weight) : 0.0;
+    // Each textured triangle's quadrature is its own: computed in parallel up front.
+    std::vector<double> texture_weights;
+    if (textured) {
+      texture_weights.resize(mesh.triangle_count());
+      parallel_for(mesh.triangle_count(), 256, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t t = begin; t < end; ++t) {
+          const Vec2f& uv0 = mesh.uvs[mesh.indices[3 * t + 0]];
+          const Vec2f& uv1 = mesh.uvs[mesh.indices[3 * t + 1]];
+          const Vec2f& uv2 = mesh.uvs[mesh.indices[3 * t + 2]];
+          texture_weights[t] = textured_triangle_weight(*texel_weight, texture_mean, uv0,
+                                                        Vec2f(uv1.x - uv0.x, uv1.y - uv0.y),
+                                                        Vec2f(uv2.x - uv0.x, uv2.y - uv0.y));
+        }
+      });
+    }
     for (std::size_t t = 0; t < mesh.triangle_count(); ++t) {
       const Vec3f& p0 = mesh.positions[mesh.indices[3 * t + 0]];
       const Vec3f& p1 = mesh.positions[mesh.indices[3 * t + 1]];
@@ -137,7 +159,7 @@ LightSampler::LightSampler(const Scene& scene, const Bounds3f& world, const Ligh
         const Vec2f& uv2 = mesh.uvs[mesh.indices[3 * t + 2]];
         e.duv1 = Vec2f(uv1.x - e.uv0.x, uv1.y - e.uv0.y);
         e.duv2 = Vec2f(uv2.x - e.uv0.x, uv2.y - e.uv0.y);
-        texture_weight = textured_triangle_weight(*texel_weight, texture_mean, e.uv0, e.duv1, e.duv2);
+        texture_weight = texture_weights[t];
       }
       emitters_.push_back(e);
       // Lambertian emitter: Φ = π · L · A per emitting side. Zero-area triangles get

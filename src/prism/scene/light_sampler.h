@@ -5,7 +5,7 @@
 //
 // Textured emitters (Emission::texture): a triangle's power is π L A times the mean of
 // Y(colour ⊙ texel)/Y(colour) at 16 stratified points of its uv footprint, plus 1% of the
-// texture's mean. The estimate only steers the selection: any selection probability
+// texture's mean over its texels. The estimate only steers the selection: any selection probability
 // that is positive wherever the emitted radiance can be is unbiased, and the floor keeps
 // it positive on triangles whose quadrature points all miss a small bright feature. The
 // point on the triangle is chosen by the triangle strategy (scene/triangle_light_sampling.h:

@@ -124,8 +124,9 @@ void render_passes(const PreparedScene& prepared, const RenderSettings& settings
   const LightSampler& lights = *light_sampler;
   const PinholeCamera camera(scene.camera, settings.width, settings.height);
   const ColorContext<Mode> colors(scene, settings.transport);
-  WavefrontIntegrator<Mode> integrator(scene, prepared.accel(), prepared.mip_pyramids(), lights, camera, colors, settings.path, settings.width,
-                                       settings.height, settings.seed, settings.regenerate_paths);
+  WavefrontIntegrator<Mode> integrator(scene, prepared.accel(), prepared.mip_pyramids(), lights, camera, colors,
+                                       settings.path, settings.width, settings.height, settings.seed,
+                                       settings.regenerate_paths);
   const auto cancelled = [&hooks] { return hooks.cancel && hooks.cancel->load(std::memory_order_relaxed); };
 
   int next_sample = start_sample;

@@ -56,13 +56,15 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
                                                const PinholeCamera& camera, const ColorContext<Mode>& colors,
                                                const PathSettings& settings, int width, int height, std::uint64_t seed,
                                                bool regenerate)
-    : tables_(scene.materials), textures_(mip_pyramids), scene_(scene), accel_(accel), lights_(lights), camera_(camera), colors_(colors), settings_(settings),
-      width_(width), height_(height), seed_(seed), regenerate_(regenerate) {
+    : tables_(scene.materials), textures_(mip_pyramids), scene_(scene), accel_(accel), lights_(lights),
+      camera_(camera), colors_(colors), settings_(settings), width_(width), height_(height), seed_(seed),
+      regenerate_(regenerate) {
   // Geometry that fits a core's L2 cache (≥ 512 KiB on current x86) is left to the hardware.
   std::size_t geometry_bytes = 0;
   for (const TriangleMesh& m : scene.meshes)
     geometry_bytes += m.indices.size() * sizeof(std::uint32_t) +
-                      (m.positions.size() + m.normals.size() + m.tangents.size()) * sizeof(Vec3f) + m.uvs.size() * sizeof(Vec2f);
+                      (m.positions.size() + m.normals.size() + m.tangents.size()) * sizeof(Vec3f) +
+                      m.uvs.size() * sizeof(Vec2f);
   prefetch_geometry_ = geometry_bytes > (std::size_t{512} << 10);
   if (mip_pyramids.size() != scene.textures.size())
     throw std::invalid_argument("WavefrontIntegrator: one mip pyramid per scene texture expected");

@@ -93,7 +93,8 @@ TEST(TextureSampling, BilinearMatchesItsDefinitionBitForBit) {
   for (const auto& size : sizes)
     for (int channels = 1; channels <= 4; ++channels) {
       MipLevel level{size[0], size[1], {}};
-      for (int i = 0; i < size[0] * size[1] * channels; ++i) level.texels.push_back(static_cast<float>(i * 7 % 13) + 0.25f);
+      for (int i = 0; i < size[0] * size[1] * channels; ++i)
+        level.texels.push_back(static_cast<float>(i * 7 % 13) + 0.25f);
       for (TextureWrap wrap_u : modes)
         for (TextureWrap wrap_v : modes)
           for (int n = 0; n < 400; ++n) {

@@ -20,6 +20,7 @@
 #include "prism/color/color_space.h"
 #include "prism/color/wavelength_sampling.h"
 #include "prism/core/error.h"
+#include "prism/core/parallel.h"
 #include "prism/core/version.h"
 #include "prism/io/atomic_file.h"
 #include "prism/io/exr.h"
@@ -199,6 +200,9 @@ int run_render(const RenderOptions& o) {
   settings.time_limit_seconds = o.time_limit_seconds;
   if (o.threads_given && o.threads < 1)
     throw UsageError(fmt::format("--threads must be at least 1 (got {}; omit it to use all cores)", o.threads));
+  // The whole command keeps to --threads: loading (texture decoding), the BVH build and
+  // the display outputs as well as the render.
+  const ThreadLimit thread_limit(o.threads);
   if (o.width < 0 || o.height < 0) throw UsageError("--width and --height must be positive");
   if (!o.aovs.empty()) settings.aovs = parse_aov_list(o.aovs);
   // A display output's normal view shows the normal AOV: keep it when that view is asked for.

@@ -31,7 +31,7 @@ void add_view_command(CLI::App& root, Action& action) {
                   "seed's #Bounce/Frame; 0: off). Never changes the converged image")
       ->capture_default_str();
   cmd->add_option("--max-depth", o->max_depth, "Maximum number of bounces")->capture_default_str();
-  cmd->add_option("--threads", o->threads, "Render threads (default: all cores)");
+  cmd->add_option("--threads", o->threads, "Worker threads for loading, preparing and rendering (default: all cores)");
   cmd->add_option("--resolution-scale", o->resolution_scale, "Film size as a fraction of the window, 0.125..1")
       ->capture_default_str();
   cmd->add_option("--width", o->window_width, "Window width (screen coordinates)")->capture_default_str();

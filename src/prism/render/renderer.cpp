@@ -186,6 +186,8 @@ RenderResult render(const Scene& input_scene, const RenderSettings& settings, co
   validate_scene(input_scene);
   // Reliability (--memory-limit): refuse a render that cannot fit before allocating it.
   check_render_memory(input_scene, settings, settings.memory_limit_bytes);
+  // --threads holds for the preparation too (BVH build, mip pyramids, light sampler).
+  const ThreadLimit thread_limit(settings.threads);
   const PreparedScene prepared(input_scene);
   return render(prepared, settings, hooks, resume);
 }
@@ -196,6 +198,7 @@ RenderResult render(Scene&& input_scene, const RenderSettings& settings, const R
   validate_transport(settings.transport);
   validate_scene(input_scene);
   check_render_memory(input_scene, settings, settings.memory_limit_bytes, SceneHandover::moved);
+  const ThreadLimit thread_limit(settings.threads);  // as above
   const PreparedScene prepared(std::move(input_scene));
   return render(prepared, settings, hooks, resume);
 }

@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "prism/core/bounds.h"
+#include "prism/core/parallel.h"
 #include "prism/display/exposure.h"
 #include "prism/sampling/pixel_sampler.h"
 #include "prism/scene/camera_json.h"
@@ -331,8 +332,12 @@ int run_viewer(const ViewerOptions& options) {
   if (options.bounces_per_pass < 0) throw UsageError("--bounces-per-pass must be 0 (off) or more");
   if (!options.sampler.empty() && !parse_sampler(options.sampler))
     throw UsageError(fmt::format("unknown --sampler '{}' (independent, sobol, zsobol)", options.sampler));
+  if (options.threads < 0) throw UsageError("--threads must be at least 1 (omit it to use all cores)");
   display::parse_odt(options.odt);
   if (!options.view.empty()) display::parse_debug_view(options.view);
+  // Loading, preparing the scene (BVH, mip pyramids) and the display's work keep to
+  // --threads as well as the render.
+  const ThreadLimit thread_limit(options.threads);
   // The display check comes first: without one there is nothing to show the scene in.
   ViewerWindow window(options.window_width, options.window_height, "Prism - " + options.scene);
   Scene scene = load_scene(options.scene, LoadOptions{.allow_external_paths = options.allow_external_paths});

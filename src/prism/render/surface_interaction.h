@@ -16,6 +16,11 @@ struct SurfaceInteraction {
   Vec2f uv;
   std::uint32_t material = 0;
   std::uint32_t mesh = 0;
+  std::uint32_t triangle = 0;
+  // shading.s is the mesh's interpolated tangent (not an arbitrary one), and the sign of
+  // its bitangent (glTF's TANGENT.w: the map's +Y is bitangent_sign · n × s).
+  bool tangent_from_mesh = false;
+  float bitangent_sign = 1.0f;
   float uv_area = 0.0f, world_area = 0.0f;  // of the hit triangle (texture LOD)
   bool front_face = true;        // the ray hit the counter-clockwise (front) side
   float cos_wo_geometric = 0.0f; // cos between the unflipped front normal and -ray.direction
@@ -32,6 +37,7 @@ inline SurfaceInteraction surface_interaction(const Scene& scene, const Hit& hit
   SurfaceInteraction si;
   si.material = mesh.material;
   si.mesh = hit.mesh;
+  si.triangle = hit.triangle;
   // Position from barycentrics rather than origin + t·direction: it lies on the plane to
   // float precision, which keeps the self-intersection offset small.
   si.position = p0 * b0 + p1 * hit.u + p2 * hit.v;
@@ -61,7 +67,14 @@ inline SurfaceInteraction surface_interaction(const Scene& scene, const Hit& hit
     const Vec3f t = mesh.tangents[i0] * b0 + mesh.tangents[i1] * hit.u + mesh.tangents[i2] * hit.v;
     const Vec3f s = t - ns * dot(ns, t);
     const float len = length(s);
-    if (len > 1e-4f * length(t)) si.shading = Frame{s / len, cross(ns, s / len), ns};
+    if (len > 1e-4f * length(t)) {
+      si.shading = Frame{s / len, cross(ns, s / len), ns};
+      si.tangent_from_mesh = true;
+      if (!mesh.tangent_signs.empty()) {
+        const std::vector<float>& w = mesh.tangent_signs;  // ±1 per vertex, equal across a triangle but at seams
+        si.bitangent_sign = w[i0] * b0 + w[i1] * hit.u + w[i2] * hit.v < 0.0f ? -1.0f : 1.0f;
+      }
+    }
   }
   if (!mesh.uvs.empty()) {
     const Vec2f& t0 = mesh.uvs[i0];

@@ -10,6 +10,7 @@
 #include "prism/core/frame.h"
 #include "prism/core/parallel.h"
 #include "prism/render/material_bsdf.h"
+#include "prism/render/normal_mapping.h"
 #include "prism/render/surface_interaction.h"
 #include "prism/scene/emission.h"
 #include "prism/sampling/warps.h"
@@ -116,6 +117,26 @@ std::optional<Vec3f> WavefrontIntegrator<Mode>::textured_base_color(const Materi
 }
 
 template <class Mode>
+void WavefrontIntegrator<Mode>::apply_normal_map(const Material& m, SurfaceInteraction& si, float cone_width,
+                                                 const Ray& ray) const {
+  const auto texel = texel_at_hit(m.normal_texture, si, cone_width, ray);
+  if (!texel) return;
+  Frame frame = si.shading;
+  float sign = si.bitangent_sign;
+  if (!si.tangent_from_mesh) {
+    // No per-vertex tangents: the triangle's dP/du, made perpendicular to the normal.
+    Vec3f dpdu;
+    if (!triangle_tangent(scene_.meshes[si.mesh], si.triangle, dpdu, sign)) return;
+    const Vec3f s = dpdu - frame.n * dot(frame.n, dpdu);
+    const float len = length(s);
+    if (!(len > 1e-4f * length(dpdu))) return;
+    frame = Frame{s / len, cross(frame.n, s / len), frame.n};
+  }
+  si.shading = normal_mapped_frame(frame, sign, Vec3f((*texel)[0], (*texel)[1], (*texel)[2]), m.normal_scale,
+                                   si.geometric_normal);
+}
+
+template <class Mode>
 MaterialPoint WavefrontIntegrator<Mode>::material_point(const Material& m, const SurfaceInteraction& si,
                                                         float cone_width, const Ray& ray) const {
   MaterialPoint point = untextured_point(m);
@@ -191,9 +212,10 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     return;
   }
 
-  const SurfaceInteraction si = surface_interaction(scene_, p.hit[slot], ray);
+  SurfaceInteraction si = surface_interaction(scene_, p.hit[slot], ray);
   const Material& material = scene_.materials[si.material];
   p.cone_width[slot] += p.cone_spread[slot] * p.hit[slot].t;  // the ray cone's width at this hit
+  if (material.normal_texture >= 0) apply_normal_map(material, si, p.cone_width[slot], ray);
   if (material.is_emissive() && (si.front_face || material.emission.two_sided)) {
     float w = 1.0f;
     if (!p.prev_specular[slot] && use_nee) {

@@ -11,8 +11,11 @@ void WavefrontIntegrator<Mode>::record_first_hit_aovs(AovSample& a, const Ray& r
                                                       float cone_spread) const {
   a = AovSample{};
   if (hit == nullptr) return;  // escaped: zero albedo and normal, no depth
-  const SurfaceInteraction si = surface_interaction(scene_, *hit, ray);
+  SurfaceInteraction si = surface_interaction(scene_, *hit, ray);
   const Material& m = scene_.materials[si.material];
+  // The camera ray's cone width at the hit, as shade() computes it for the texture LOD.
+  const float cone_width = cone_spread * hit->t;
+  if (m.normal_texture >= 0) apply_normal_map(m, si, cone_width, ray);  // the normal AOV shows the mapped normal
   // Open Image Denoise's documentation asks for albedo 1 (or the surface's tint) on perfect
   // specular surfaces rather than the albedo of what they reflect or transmit; following
   // the path to its next non-delta hit would tie the AOV to the transport's random numbers.
@@ -22,8 +25,6 @@ void WavefrontIntegrator<Mode>::record_first_hit_aovs(AovSample& a, const Ray& r
   const bool untinted =
       m.type == MaterialType::dielectric || (m.type == MaterialType::conductor && tables_.conductor(si.material));
   if (!untinted) {
-    // The camera ray's cone width at the hit, as shade() computes it for the texture LOD.
-    const float cone_width = cone_spread * hit->t;
     albedo_srgb = textured_base_color(m, si, cone_width, ray).value_or(m.base_color);
   }
   a.albedo = Vec3f(colors_.reflectance_to_film(albedo_srgb));

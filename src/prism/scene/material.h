@@ -49,6 +49,11 @@ struct Material {
   float anisotropy = 0.0f;       // reserved for anisotropic roughness (0 = isotropic)
   float metallic = 0.0f;
   int metallic_roughness_texture = -1;  // glTF layout: G = roughness, B = metallic
+  // Tangent-space normal map (glTF normalTexture; linear RGB = normal · ½ + ½ in the frame
+  // tangent +u, bitangent up the image, vertex normal); its x and y are scaled by
+  // normal_scale. Needs uvs; render/normal_mapping.h.
+  int normal_texture = -1;
+  float normal_scale = 1.0f;
   MicrofacetModel microfacet = MicrofacetModel::ggx;
 
   // Conductors: Schlick with F0 = base_color, or spectral η, k of a named metal

@@ -183,6 +183,35 @@ TEST(GltfLoader, MaterialsExtensionsAndLights) {
   EXPECT_EQ(extension_warnings, 1);
 }
 
+// normalTexture (glTF 2.0 §3.9.3): the image read as linear data, even where the same
+// image is also a base colour (sRGB) texture, and its scale kept; a grey image cannot hold
+// a tangent-space normal and is dropped with a warning.
+TEST(GltfLoader, NormalTextureIsLinearDataWithItsScale) {
+  test::ScratchFolder dir;
+  write_png(dir / "normal.png", EncodedImage{1, 1, 3, 8, {128, 64, 255}});
+  write_png(dir / "grey.png", EncodedImage{1, 1, 1, 8, {128}});
+  dir.write("quad.bin", quad_buffer());
+  const std::string materials = R"([
+    {"normalTexture": {"index": 0, "scale": 0.5}, "pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}},
+    {"normalTexture": {"index": 1}}])";
+  const std::string top =
+      R"("textures": [{"source": 0}, {"source": 1}], "images": [{"uri": "normal.png"}, {"uri": "grey.png"}],)";
+  const Scene s = parse(quad_document("quad.bin", top, materials), dir.path());
+  const Material& mapped = s.materials[0];
+  ASSERT_GE(mapped.normal_texture, 0);
+  EXPECT_NE(mapped.normal_texture, mapped.base_color_texture);
+  EXPECT_FLOAT_EQ(mapped.normal_scale, 0.5f);
+  const TextureImage& normal = s.textures[static_cast<std::size_t>(mapped.normal_texture)];
+  EXPECT_FLOAT_EQ(normal.texels[0], 128.0f / 255.0f);  // linear: no sRGB decoding
+  EXPECT_FLOAT_EQ(normal.texels[1], 64.0f / 255.0f);
+  EXPECT_LT(s.textures[static_cast<std::size_t>(mapped.base_color_texture)].texels[0], 0.25f);  // sRGB 128 ≈ 0.216
+  EXPECT_EQ(s.materials[1].normal_texture, -1);
+  EXPECT_FLOAT_EQ(s.materials[1].normal_scale, 1.0f);
+  bool warned = false;
+  for (const std::string& w : s.warnings) warned |= w.find("materials[1].normalTexture") != std::string::npos;
+  EXPECT_TRUE(warned);
+}
+
 TEST(GltfLoader, BadInputIsAOneLineError) {
   const std::string good_uri = kDataUri + base64(quad_buffer());
   const std::string doc = quad_document(good_uri);

@@ -218,6 +218,21 @@ TEST(JsonScene, LoadsAFileWithASharedTextureOnce) {
   EXPECT_FLOAT_EQ(scene.textures[0].texels[3], 0.0f);
 }
 
+TEST(JsonScene, NormalTextureIsLinearRgbWithAScale) {
+  test::ScratchFolder dir;
+  write_png(dir / "normal.png", EncodedImage{1, 1, 3, 8, {128, 128, 255}});
+  write_png(dir / "grey.png", EncodedImage{1, 1, 1, 8, {128}});
+  dir.write("scene.json", quad_scene(R"(, "normal_texture": "normal.png", "normal_scale": 0.25)"));
+  const Scene scene = load_scene((dir / "scene.json").string());
+  ASSERT_EQ(scene.materials[0].normal_texture, 0);
+  EXPECT_FLOAT_EQ(scene.materials[0].normal_scale, 0.25f);
+  EXPECT_FLOAT_EQ(scene.textures[0].texels[0], 128.0f / 255.0f);  // linear
+  dir.write("grey.json", quad_scene(R"(, "normal_texture": "grey.png")"));
+  const std::string message = error_of<SceneError>([&] { load_scene((dir / "grey.json").string()); });
+  EXPECT_NE(message.find("materials[0].normal_texture"), std::string::npos) << message;
+  EXPECT_NE(message.find("RGB"), std::string::npos) << message;
+}
+
 TEST(JsonScene, FileReferencesMayNotLeaveTheScenesFolder) {
   test::ScratchFolder dir;
   dir.write("outside.png", "not an image");

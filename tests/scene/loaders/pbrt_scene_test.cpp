@@ -6,6 +6,7 @@
 
 #include "loader_test_files.h"
 #include "prism/core/error.h"
+#include "prism/io/png.h"
 #include "prism/scene/builtin_scenes.h"
 #include "prism/scene/emission.h"
 #include "prism/scene/load_scene.h"
@@ -141,6 +142,25 @@ TEST(PbrtLoader, MaterialMappings) {
   auto [bb, w5] = material_of(R"(Material "diffuse" "blackbody reflectance" 6500)");
   EXPECT_GT(bb.base_color.x, 0.0f);
   EXPECT_NE(w5[0].find("blackbody"), std::string::npos);
+}
+
+// pbrt-v4's "string normalmap" on any material: an RGB image read as linear.
+TEST(PbrtLoader, NormalMapIsALinearRgbImage) {
+  test::ScratchFolder dir;
+  write_png(dir / "normal.png", EncodedImage{1, 1, 3, 8, {128, 64, 255}});
+  write_png(dir / "grey.png", EncodedImage{1, 1, 1, 8, {128}});
+  const std::string conductor = "WorldBegin\nMaterial \"conductor\" \"string normalmap\" \"normal.png\"\n";
+  const auto scene = dir.write("scene.pbrt", conductor + std::string(kTriangle));
+  const Scene s = load_pbrt_scene(scene);
+  const Material& m = s.materials[s.meshes[0].material];
+  ASSERT_GE(m.normal_texture, 0);
+  EXPECT_FLOAT_EQ(s.textures[static_cast<std::size_t>(m.normal_texture)].texels[1], 64.0f / 255.0f);
+  for (const std::string& w : s.warnings) EXPECT_EQ(w.find("normalmap"), std::string::npos) << w;
+  const auto grey = dir.write(
+      "grey.pbrt", "WorldBegin\n\nMaterial \"diffuse\" \"string normalmap\" \"grey.png\"\n" + std::string(kTriangle));
+  const std::string message = test::error_of<SceneError>([&] { load_pbrt_scene(grey); });
+  EXPECT_NE(message.find("grey.pbrt:3"), std::string::npos) << message;
+  EXPECT_NE(message.find("RGB"), std::string::npos) << message;
 }
 
 // pbrt-v4 multiplies "scale" by a distant light's "illuminance" (the spectrum normalised to

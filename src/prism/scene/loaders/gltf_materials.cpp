@@ -159,8 +159,21 @@ Material GltfBuilder::make_material(const tinygltf::Material& src, int index) {
         warnings_.push_back(fmt::format("glTF: {}: partial transmission/metallic mixed into a dielectric", where));
     }
   }
-  if (src.normalTexture.index >= 0 || src.occlusionTexture.index >= 0) {
-    // Occlusion is meaningless for a path tracer; normal maps are not applied yet.
+  // Occlusion is meaningless for a path tracer (the transport computes it) and is ignored.
+  if (src.normalTexture.index >= 0) {
+    const std::string normal_where = where + ".normalTexture";
+    if (src.normalTexture.texCoord != 0)
+      warnings_.push_back(
+          fmt::format("glTF: {}: texCoord {} used as TEXCOORD_0", normal_where, src.normalTexture.texCoord));
+    m.normal_texture =
+        texture(src.normalTexture.index, src.normalTexture.extensions, TextureEncoding::linear, normal_where);
+    m.normal_scale = static_cast<float>(src.normalTexture.scale);
+    if (!std::isfinite(m.normal_scale)) fail(fmt::format("{}: scale is not finite", normal_where));
+    if (scene_.textures[static_cast<std::size_t>(m.normal_texture)].channels < 3) {
+      warnings_.push_back(
+          fmt::format("glTF: {}: a normal map needs RGB (the image has fewer channels); ignored", normal_where));
+      m.normal_texture = -1;
+    }
   }
   return m;
 }

@@ -104,6 +104,10 @@ json material_json(const Scene& scene, const Material& m) {
   if (m.base_color_texture >= 0) pbr["baseColorTexture"] = texture_info(scene, m.base_color_texture);
   if (m.metallic_roughness_texture >= 0) pbr["metallicRoughnessTexture"] = texture_info(scene, m.metallic_roughness_texture);
   j["pbrMetallicRoughness"] = pbr;
+  if (m.normal_texture >= 0) {
+    j["normalTexture"] = texture_info(scene, m.normal_texture);
+    j["normalTexture"]["scale"] = m.normal_scale;
+  }
   if (m.alpha_mode == AlphaMode::mask) j["alphaMode"] = "MASK", j["alphaCutoff"] = m.alpha_cutoff;
   if (m.alpha_mode == AlphaMode::blend) j["alphaMode"] = "BLEND";
   if (m.alpha_mode != AlphaMode::opaque) j["doubleSided"] = true;  // cards are seen from both sides

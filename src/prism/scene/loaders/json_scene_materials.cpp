@@ -105,8 +105,8 @@ std::uint32_t JsonSceneReader::material_index(const JsonValue& name) const {
 
 void JsonSceneReader::read_material(const JsonValue& value) {
   value.expect_keys({"name", "type", "base_color", "base_color_texture", "roughness", "anisotropy", "metallic",
-                     "metallic_roughness_texture", "microfacet", "conductor", "ior", "dispersion", "thin_walled",
-                     "transmission", "alpha_mode", "alpha_cutoff", "opacity", "emission"});
+                     "metallic_roughness_texture", "normal_texture", "normal_scale", "microfacet", "conductor", "ior",
+                     "dispersion", "thin_walled", "transmission", "alpha_mode", "alpha_cutoff", "opacity", "emission"});
   Material m;
   m.name = value["name"].as_string();
   if (material_indices.contains(m.name)) value["name"].fail(fmt::format("material '{}' is defined twice", m.name));
@@ -123,6 +123,12 @@ void JsonSceneReader::read_material(const JsonValue& value) {
   m.metallic = value.get_float("metallic", m.metallic, 0.0f, 1.0f);
   if (auto t = value.find("metallic_roughness_texture"))
     m.metallic_roughness_texture = read_texture(*t, TextureEncoding::linear);
+  if (auto t = value.find("normal_texture")) {
+    m.normal_texture = read_texture(*t, TextureEncoding::linear);
+    if (scene.textures[static_cast<std::size_t>(m.normal_texture)].channels < 3)
+      t->fail("a normal map needs an RGB image (tangent-space x, y, z)");
+  }
+  m.normal_scale = value.get_float("normal_scale", m.normal_scale, -100.0f, 100.0f);
   if (auto mf = value.find("microfacet"))
     m.microfacet = mf->as_enum<MicrofacetModel>(
         {{"ggx", MicrofacetModel::ggx}, {"beckmann", MicrofacetModel::beckmann}, {"blinn_phong", MicrofacetModel::blinn_phong}});

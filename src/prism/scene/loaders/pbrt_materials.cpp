@@ -123,6 +123,18 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
     m.base_color = Vec3f(0.5f);
     for (const auto& param : p.params) param.used = true;
   }
+  // pbrt-v4's "normalmap": an RGB image read as linear, repeated, in the frame (dP/du,
+  // n × dP/du, n), whose y runs up the image as glTF's does (normal_mapping.h).
+  if (const std::string normal_map = p.get_string("normalmap", ""); !normal_map.empty()) {
+    try {
+      m.normal_texture = textures_->load(resolve(p, "normalmap", normal_map), TextureEncoding::linear,
+                                         TextureWrap::repeat, TextureWrap::repeat);
+    } catch (const IoError& e) {
+      throw IoError(fmt::format("{}:{}: Material normalmap: {}", p.source, p.line, e.what()));
+    }
+    if (scene_.textures[static_cast<std::size_t>(m.normal_texture)].channels < 3)
+      p.fail(*p.find("normalmap"), "a normal map needs an RGB image");
+  }
   note_unused(fmt::format("Material \"{}\"", type), p);
   scene_.materials.push_back(std::move(m));
   const int index = static_cast<int>(scene_.materials.size() - 1);

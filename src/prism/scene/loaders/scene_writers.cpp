@@ -122,6 +122,8 @@ void write_scene_json(const Scene& scene, const std::filesystem::path& path) {
     if (m.base_color_texture >= 0) w(", \"base_color_texture\": {}", json_texture(scene, files, m.base_color_texture));
     if (m.metallic_roughness_texture >= 0)
       w(", \"metallic_roughness_texture\": {}", json_texture(scene, files, m.metallic_roughness_texture));
+    if (m.normal_texture >= 0)
+      w(", \"normal_texture\": {}, \"normal_scale\": {}", json_texture(scene, files, m.normal_texture), m.normal_scale);
     if (m.alpha_mode != AlphaMode::opaque) w(", \"alpha_mode\": \"{}\", \"alpha_cutoff\": {}", alpha_mode_name(m.alpha_mode), m.alpha_cutoff);
     if (m.opacity != 1.0f) w(", \"opacity\": {}", m.opacity);
     if (m.is_emissive()) {
@@ -250,6 +252,17 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
     // Prism's perceptual roughness r has α = r²; written with remaproughness false.
     const float alpha = m.roughness * m.roughness;
     w("MakeNamedMaterial \"{}\"", m.name);
+    if (m.normal_texture >= 0) {
+      // pbrt-v4's normalmap is a plain repeated image: no scale, no uv transform.
+      const TextureImage& t = scene.textures[static_cast<std::size_t>(m.normal_texture)];
+      const bool plain = m.normal_scale == 1.0f && t.wrap_u == TextureWrap::repeat && t.wrap_v == TextureWrap::repeat &&
+                         t.offset_u == 0.0f && t.offset_v == 0.0f && t.scale_u == 1.0f && t.scale_v == 1.0f &&
+                         t.rotation_radians == 0.0f;
+      if (!plain)
+        throw UsageError(
+            fmt::format("pbrt writer: material '{}': a normal map with a scale, wrap or uv transform", m.name));
+      w(" \"string normalmap\" \"{}\"", files[static_cast<std::size_t>(m.normal_texture)]);
+    }
     switch (m.type) {
       case MaterialType::conductor:
       case MaterialType::mirror:

@@ -205,6 +205,10 @@ TEST(Fingerprint, CoversWhatChangesPixelsOnly) {
   Scene rescaled = mapped;
   rescaled.materials[0].normal_scale = 0.5f;
   EXPECT_NE(image_fingerprint(mapped, base), image_fingerprint(rescaled, base));
+  Scene bumped = scene;
+  bumped.textures.push_back(TextureImage{"heights", 1, 1, 1, {0.5f}});
+  bumped.materials[0].bump_texture = 0;
+  EXPECT_NE(image_fingerprint(scene, base), image_fingerprint(bumped, base));
 }
 
 PartialRender partial(const Scene& scene, int begin, int end) {

@@ -13,7 +13,7 @@
 
 #include "prism/render/renderer.h"
 #include "prism/scene/loaders/mesh_tangents.h"
-#include "support/film_statistics.h"
+#include "support/test_scenes.h"
 
 namespace prism {
 namespace {
@@ -132,16 +132,12 @@ TEST(NormalMapping, TriangleTangentAgreesWithGeneratedTangents) {
   EXPECT_FALSE(triangle_tangent(degenerate, 0, tangent, sign));
 }
 
-// A Lambertian floor (ρ = 0.5) seen straight down through a 10° field of view, lit by a
-// delta directional light from `toward_light`, optionally with a 1×1 normal map holding
-// `map_normal` (tangent-space). The mean of the image's red channel.
+// The sunlit floor (test_scenes.h), optionally with a 1×1 normal map holding `map_normal`
+// (tangent-space), through the floor's triangles' tangents or per-vertex ones (the glTF
+// path). The mean of the image's red channel.
 double floor_red(const Vec3f& toward_light, const Vec3f* map_normal, bool mirrored_u = false,
                  bool per_vertex_tangents = false) {
-  Scene scene;
-  scene.name = "normal-mapped-floor";
-  Material m;
-  m.type = MaterialType::diffuse;
-  m.base_color = Vec3f(0.5f);
+  Scene scene = test::make_sunlit_uv_floor(toward_light, mirrored_u);
   if (map_normal) {
     TextureImage t;
     t.name = "normal-map";
@@ -150,29 +146,10 @@ double floor_red(const Vec3f& toward_light, const Vec3f* map_normal, bool mirror
     const Vec3f rgb = encode(*map_normal / length(*map_normal));
     t.texels = {rgb.x, rgb.y, rgb.z};
     scene.textures.push_back(t);
-    m.normal_texture = 0;
+    scene.materials[0].normal_texture = 0;
   }
-  scene.materials = {m};
-  TriangleMesh floor = floor_mesh(mirrored_u);
-  if (per_vertex_tangents) loaders::generate_tangents(floor);
-  scene.meshes.push_back(floor);
-  Light sun;
-  sun.type = LightType::directional;
-  sun.direction = -toward_light / length(toward_light);
-  sun.intensity = 1.0f;
-  scene.lights.push_back(sun);
-  scene.camera.eye = Vec3f(0, 90, 0);
-  scene.camera.target = Vec3f(0, 0, 0);
-  scene.camera.up = Vec3f(0, 0, 1);
-  scene.camera.fov_degrees = 10.0f;  // view directions within 5° of the normal
-  RenderSettings settings;
-  settings.width = settings.height = 8;
-  settings.samples_per_pixel = 2;
-  settings.path.max_depth = 1;  // direct light only
-  settings.transport.kind = TransportKind::rgb;
-  settings.threads = 1;
-  const RenderResult r = render(scene, settings, RenderHooks{});
-  return test::block_estimate(r.film, 0, 0, 8, 8).mean.x;
+  if (per_vertex_tangents) loaders::generate_tangents(scene.meshes[0]);
+  return test::direct_light_mean_red(scene);
 }
 
 Vec3f tilted(float degrees, const Vec3f& towards) {  // the floor's normal +y tilted towards a direction in the floor
@@ -218,21 +195,14 @@ TEST(NormalMapping, MirroredUvsMirrorTheMapsXOnly) {
 }
 
 TEST(NormalMapping, TheNormalAovShowsTheMappedNormal) {
-  Scene scene;
-  Material m;
-  m.normal_texture = 0;
+  Scene scene = test::make_sunlit_uv_floor(Vec3f(0, 1, 0));
   TextureImage t;
   t.width = t.height = 1;
   t.channels = 3;
   const Vec3f rgb = encode(Vec3f(0.6f, 0.0f, 0.8f));
   t.texels = {rgb.x, rgb.y, rgb.z};
   scene.textures.push_back(t);
-  scene.materials = {m};
-  scene.meshes.push_back(floor_mesh(false));
-  scene.camera.eye = Vec3f(0, 90, 0);
-  scene.camera.target = Vec3f(0, 0, 0);
-  scene.camera.up = Vec3f(0, 0, 1);
-  scene.camera.fov_degrees = 10.0f;
+  scene.materials[0].normal_texture = 0;
   RenderSettings settings;
   settings.width = settings.height = 4;
   settings.samples_per_pixel = 1;

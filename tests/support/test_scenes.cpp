@@ -1,5 +1,8 @@
 #include "support/test_scenes.h"
 
+#include "prism/render/renderer.h"
+#include "support/film_statistics.h"
+
 namespace prism::test {
 
 Scene make_emitting_enclosure(float albedo, float emitted) {
@@ -45,6 +48,32 @@ Scene make_grey_floor_seen_from_above(float eye_height, float fov_degrees) {
   scene.camera.up = Vec3f(0, 0, 1);
   scene.camera.fov_degrees = fov_degrees;
   return scene;
+}
+
+Scene make_sunlit_uv_floor(const Vec3f& toward_light, bool mirrored_u) {
+  Scene scene = make_grey_floor_seen_from_above(90.0f, 10.0f);
+  scene.materials[0].type = MaterialType::diffuse;
+  TriangleMesh& floor = scene.meshes[0];
+  floor.normals.assign(4, Vec3f(0, 1, 0));
+  floor.uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  if (mirrored_u)
+    for (Vec2f& uv : floor.uvs) uv.x = 1.0f - uv.x;
+  Light sun;
+  sun.type = LightType::directional;
+  sun.direction = -toward_light / length(toward_light);
+  sun.intensity = 1.0f;
+  scene.lights.push_back(sun);
+  return scene;
+}
+
+double direct_light_mean_red(const Scene& scene) {
+  RenderSettings settings;
+  settings.width = settings.height = 8;
+  settings.samples_per_pixel = 2;
+  settings.path.max_depth = 1;
+  settings.transport.kind = TransportKind::rgb;
+  settings.threads = 1;
+  return block_estimate(render(scene, settings, RenderHooks{}).film, 0, 0, 8, 8).mean.x;
 }
 
 }  // namespace prism::test

@@ -14,4 +14,16 @@ Scene make_emitting_enclosure(float albedo, float emitted);
 // +z) with the given field of view. No lights: tests add theirs.
 Scene make_grey_floor_seen_from_above(float eye_height, float fov_degrees);
 
+// The same floor with per-vertex normals (+y) and uvs (u along +x, or along −x when
+// `mirrored_u`; v along +z, i.e. down the image), lit by a delta directional light from
+// `toward_light` (illuminance 1 lux), the camera 90 above with a 10° field of view (view
+// directions within 5° of the normal; u, v ∈ [0.46, 0.54]): what normal- and bump-map
+// tests shade. The material is diffuse, ρ = 0.5; tests add its maps.
+Scene make_sunlit_uv_floor(const Vec3f& toward_light, bool mirrored_u = false);
+
+// The mean red of an 8×8 RGB render with direct light only (max depth 1), 2 spp, one
+// thread. Under delta lights a Lambertian surface's pixels are then exact: no random
+// number reaches a delta light's estimate.
+double direct_light_mean_red(const Scene& scene);
+
 }  // namespace prism::test

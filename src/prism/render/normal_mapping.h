@@ -13,22 +13,14 @@
 
 namespace prism {
 
-// The perturbed shading frame. `frame` is the unperturbed one (frame.s the tangent,
-// frame.n the interpolated vertex normal), `bitangent_sign` ±1 (glTF's TANGENT.w), `rgb`
-// the filtered texel in [0, 1] and `geometric_normal` the triangle's normal on frame.n's
-// side. A map normal at or below the geometric surface is lifted to just above it: such a
-// normal (a map authored for another mesh, or a filtered texel at a sharp crease) would
-// otherwise send every reflected direction through the surface. A texel that decodes to no
-// direction (all x, y, z zero, or not finite) leaves the frame as it was.
-inline Frame normal_mapped_frame(const Frame& frame, float bitangent_sign, const Vec3f& rgb, float normal_scale,
-                                 const Vec3f& geometric_normal) {
-  const Vec3f m((2.0f * rgb.x - 1.0f) * normal_scale, (2.0f * rgb.y - 1.0f) * normal_scale, 2.0f * rgb.z - 1.0f);
-  Vec3f n = frame.s * m.x + frame.t * (bitangent_sign * m.y) + frame.n * m.z;
-  // Lifted to cos 0.01 (0.57°) above the surface at least.
+// The shading frame around a new shading normal `n` (unit), made from `frame`: its
+// tangent kept as close to frame.s as Gram–Schmidt allows, so that anisotropic lobes still
+// follow the uv layout. A normal at or below the geometric surface is first lifted to just
+// above it (cos 0.01, 0.57°): such a normal (a map authored for another mesh, a filtered
+// texel at a sharp crease, a steep bump) would otherwise send every reflected direction
+// through the surface.
+inline Frame frame_around_normal(const Frame& frame, Vec3f n, const Vec3f& geometric_normal) {
   constexpr float kMinCosAboveSurface = 0.01f;
-  const float length_n = length(n);
-  if (!(length_n > 0.0f) || !std::isfinite(length_n)) return frame;
-  n = n / length_n;
   const float above = dot(n, geometric_normal);
   if (above < kMinCosAboveSurface) {
     n = n + geometric_normal * (kMinCosAboveSurface - above);
@@ -44,25 +36,49 @@ inline Frame normal_mapped_frame(const Frame& frame, float bitangent_sign, const
   return Frame{cross(bitangent, n), bitangent, n};
 }
 
-// A triangle's tangent along +u and its handedness, for meshes without per-vertex
-// tangents (the JSON, OBJ and pbrt-v4 loaders do not generate them): dP/du from the
-// corners' positions and uvs, and the sign that makes sign · n × dP/du point up the image
-// (towards −v), as glTF's TANGENT.w does, for n the front (counter-clockwise) normal.
-// False when the triangle's uv mapping is degenerate.
-inline bool triangle_tangent(const TriangleMesh& mesh, std::uint32_t triangle, Vec3f& tangent, float& sign) {
+// The normal-mapped shading frame. `frame` is the unperturbed one (frame.s the tangent,
+// frame.n the interpolated vertex normal), `bitangent_sign` ±1 (glTF's TANGENT.w), `rgb`
+// the filtered texel in [0, 1] and `geometric_normal` the triangle's normal on frame.n's
+// side. A texel that decodes to no direction (x, y, z all zero, or not finite) leaves the
+// frame as it was.
+inline Frame normal_mapped_frame(const Frame& frame, float bitangent_sign, const Vec3f& rgb, float normal_scale,
+                                 const Vec3f& geometric_normal) {
+  const Vec3f m((2.0f * rgb.x - 1.0f) * normal_scale, (2.0f * rgb.y - 1.0f) * normal_scale, 2.0f * rgb.z - 1.0f);
+  const Vec3f n = frame.s * m.x + frame.t * (bitangent_sign * m.y) + frame.n * m.z;
+  const float length_n = length(n);
+  if (!(length_n > 0.0f) || !std::isfinite(length_n)) return frame;
+  return frame_around_normal(frame, n / length_n, geometric_normal);
+}
+
+// A triangle's position derivatives dP/du and dP/dv, from its corners' positions and uvs
+// (e₁ = dP/du Δu₁ + dP/dv Δv₁, e₂ likewise). False when its uv mapping is degenerate.
+// `det` is Δu₁Δv₂ − Δu₂Δv₁: e₁ × e₂ = det · (dP/du × dP/dv).
+inline bool triangle_position_derivatives(const TriangleMesh& mesh, std::uint32_t triangle, Vec3f& dpdu, Vec3f& dpdv,
+                                          float& det) {
   const std::uint32_t* i = mesh.indices.data() + 3 * static_cast<std::size_t>(triangle);
   const Vec3f e1 = mesh.positions[i[1]] - mesh.positions[i[0]], e2 = mesh.positions[i[2]] - mesh.positions[i[0]];
   const Vec2f& uv0 = mesh.uvs[i[0]];
   const Vec2f d1(mesh.uvs[i[1]].x - uv0.x, mesh.uvs[i[1]].y - uv0.y);
   const Vec2f d2(mesh.uvs[i[2]].x - uv0.x, mesh.uvs[i[2]].y - uv0.y);
-  const float det = d1.x * d2.y - d2.x * d1.y;
+  det = d1.x * d2.y - d2.x * d1.y;
   if (!(std::abs(det) > 0.0f)) return false;
-  const Vec3f dpdu = (e1 * d2.y - e2 * d1.y) / det;
-  if (!(length_squared(dpdu) > 0.0f) || !std::isfinite(length_squared(dpdu))) return false;
-  tangent = dpdu;
-  // e1 × e2 = det · (dP/du × dP/dv), so (n × dP/du) · dP/dv = n · (dP/du × dP/dv) has the
-  // sign of det for the front normal n: n × dP/du runs up the image (against +v) where
-  // det < 0, which is the unmirrored case, as v points down the image.
+  dpdu = (e1 * d2.y - e2 * d1.y) / det;
+  dpdv = (e2 * d1.x - e1 * d2.x) / det;
+  const float size = length_squared(dpdu) * length_squared(dpdv);
+  return size > 0.0f && std::isfinite(size);
+}
+
+// A triangle's tangent along +u and its handedness, for meshes without per-vertex
+// tangents (the JSON, OBJ and pbrt-v4 loaders do not generate them): dP/du, and the sign
+// that makes sign · n × dP/du point up the image (towards −v), as glTF's TANGENT.w does,
+// for n the front (counter-clockwise) normal. False when the uv mapping is degenerate.
+inline bool triangle_tangent(const TriangleMesh& mesh, std::uint32_t triangle, Vec3f& tangent, float& sign) {
+  Vec3f dpdv;
+  float det = 0.0f;
+  if (!triangle_position_derivatives(mesh, triangle, tangent, dpdv, det)) return false;
+  // (n × dP/du) · dP/dv = n · (dP/du × dP/dv) has the sign of det for the front normal n:
+  // n × dP/du runs up the image (against +v) where det < 0, which is the unmirrored case,
+  // as v points down the image.
   sign = det < 0.0f ? 1.0f : -1.0f;
   return true;
 }

@@ -72,11 +72,15 @@ std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settin
     h.value(m.emission.color);
     h.value(m.emission.color_space);
     h.value(m.emission.luminance_nits);
-    // Only with a normal map, so other scenes keep their fingerprints; checkpoints of
-    // normal-mapped scenes from before normal maps were applied no longer match.
+    // Only with a normal or bump map, so other scenes keep their fingerprints; checkpoints
+    // of such scenes from before these maps were applied no longer match.
     if (m.normal_texture >= 0) {
       h.value(m.normal_texture);
       h.value(m.normal_scale);
+    }
+    if (m.bump_texture >= 0) {
+      h.value(m.bump_texture);
+      h.value(m.bump_scale);
     }
   }
   const Camera& c = scene.camera;

@@ -9,6 +9,7 @@
 
 #include "prism/core/frame.h"
 #include "prism/core/parallel.h"
+#include "prism/render/bump_mapping.h"
 #include "prism/render/material_bsdf.h"
 #include "prism/render/normal_mapping.h"
 #include "prism/render/surface_interaction.h"
@@ -137,6 +138,31 @@ void WavefrontIntegrator<Mode>::apply_normal_map(const Material& m, SurfaceInter
 }
 
 template <class Mode>
+void WavefrontIntegrator<Mode>::apply_bump_map(const Material& m, SurfaceInteraction& si, float cone_width,
+                                               const Ray& ray) const {
+  if (!has_texture(m.bump_texture, si.mesh)) return;
+  Vec3f dpdu, dpdv;
+  float det = 0.0f;
+  if (!triangle_position_derivatives(scene_.meshes[si.mesh], si.triangle, dpdu, dpdv, det)) return;
+  const auto t = static_cast<std::size_t>(m.bump_texture);
+  const float lod = mip_level_from_ray_cone(textures_[t], cone_width, std::abs(dot(ray.direction, si.geometric_normal)),
+                                            si.uv_area, si.world_area);
+  // Finite differences over half the ray footprint in uv (pbrt-v4: ½(|∂u/∂x| + |∂u/∂y|)),
+  // the footprint being the cone's width times the triangle's uv per scene unit, and at
+  // least half a texel of the finest level.
+  const float uv_per_unit = si.world_area > 0.0f ? std::sqrt(si.uv_area / si.world_area) : 0.0f;
+  const float half_footprint = 0.5f * cone_width * uv_per_unit;
+  const TextureImage& image = scene_.textures[t];
+  const float du = std::max(half_footprint, 0.5f / static_cast<float>(image.width));
+  const float dv = std::max(half_footprint, 0.5f / static_cast<float>(image.height));
+  const float h = texel_at(m.bump_texture, si.uv, lod)[0];
+  const float h_u = texel_at(m.bump_texture, Vec2f(si.uv.x + du, si.uv.y), lod)[0];
+  const float h_v = texel_at(m.bump_texture, Vec2f(si.uv.x, si.uv.y + dv), lod)[0];
+  const Vec3f n = bumped_normal(si.shading.n, dpdu, dpdv, m.bump_scale * (h_u - h) / du, m.bump_scale * (h_v - h) / dv);
+  si.shading = frame_around_normal(si.shading, n, si.geometric_normal);
+}
+
+template <class Mode>
 MaterialPoint WavefrontIntegrator<Mode>::material_point(const Material& m, const SurfaceInteraction& si,
                                                         float cone_width, const Ray& ray) const {
   MaterialPoint point = untextured_point(m);
@@ -216,6 +242,7 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   const Material& material = scene_.materials[si.material];
   p.cone_width[slot] += p.cone_spread[slot] * p.hit[slot].t;  // the ray cone's width at this hit
   if (material.normal_texture >= 0) apply_normal_map(material, si, p.cone_width[slot], ray);
+  if (material.bump_texture >= 0) apply_bump_map(material, si, p.cone_width[slot], ray);
   if (material.is_emissive() && (si.front_face || material.emission.two_sided)) {
     float w = 1.0f;
     if (!p.prev_specular[slot] && use_nee) {

@@ -117,6 +117,8 @@ class WavefrontIntegrator {
   // Roughness and metallic after the metallic-roughness texture (G, B; linear).
   // Replaces si.shading by the material's normal-mapped frame, where it has a normal map.
   void apply_normal_map(const Material& material, SurfaceInteraction& si, float cone_width, const Ray& ray) const;
+  // Replaces si.shading by the material's bump-mapped frame, where it has a bump map.
+  void apply_bump_map(const Material& material, SurfaceInteraction& si, float cone_width, const Ray& ray) const;
   MaterialPoint material_point(const Material& material, const SurfaceInteraction& si, float cone_width,
                                const Ray& ray) const;
   // Emitted radiance of an emissive material; with an emission texture (and uvs) the

@@ -15,7 +15,9 @@ void WavefrontIntegrator<Mode>::record_first_hit_aovs(AovSample& a, const Ray& r
   const Material& m = scene_.materials[si.material];
   // The camera ray's cone width at the hit, as shade() computes it for the texture LOD.
   const float cone_width = cone_spread * hit->t;
-  if (m.normal_texture >= 0) apply_normal_map(m, si, cone_width, ray);  // the normal AOV shows the mapped normal
+  // The normal AOV shows the normal- or bump-mapped normal.
+  if (m.normal_texture >= 0) apply_normal_map(m, si, cone_width, ray);
+  if (m.bump_texture >= 0) apply_bump_map(m, si, cone_width, ray);
   // Open Image Denoise's documentation asks for albedo 1 (or the surface's tint) on perfect
   // specular surfaces rather than the albedo of what they reflect or transmit; following
   // the path to its next non-delta hit would tie the AOV to the transport's random numbers.

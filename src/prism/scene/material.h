@@ -54,6 +54,10 @@ struct Material {
   // normal_scale. Needs uvs; render/normal_mapping.h.
   int normal_texture = -1;
   float normal_scale = 1.0f;
+  // Bump map: a height field over the surface, in scene units = bump_scale × the texel's
+  // first channel (linear). Needs uvs; render/bump_mapping.h.
+  int bump_texture = -1;
+  float bump_scale = 1.0f;
   MicrofacetModel microfacet = MicrofacetModel::ggx;
 
   // Conductors: Schlick with F0 = base_color, or spectral η, k of a named metal

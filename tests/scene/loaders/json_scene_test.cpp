@@ -218,15 +218,20 @@ TEST(JsonScene, LoadsAFileWithASharedTextureOnce) {
   EXPECT_FLOAT_EQ(scene.textures[0].texels[3], 0.0f);
 }
 
-TEST(JsonScene, NormalTextureIsLinearRgbWithAScale) {
+TEST(JsonScene, NormalAndBumpTexturesAreLinearWithScales) {
   test::ScratchFolder dir;
   write_png(dir / "normal.png", EncodedImage{1, 1, 3, 8, {128, 128, 255}});
   write_png(dir / "grey.png", EncodedImage{1, 1, 1, 8, {128}});
-  dir.write("scene.json", quad_scene(R"(, "normal_texture": "normal.png", "normal_scale": 0.25)"));
+  dir.write("scene.json", quad_scene(R"(, "normal_texture": "normal.png", "normal_scale": 0.25,
+     "bump_texture": "grey.png", "bump_scale": 0.02)"));
   const Scene scene = load_scene((dir / "scene.json").string());
-  ASSERT_EQ(scene.materials[0].normal_texture, 0);
-  EXPECT_FLOAT_EQ(scene.materials[0].normal_scale, 0.25f);
-  EXPECT_FLOAT_EQ(scene.textures[0].texels[0], 128.0f / 255.0f);  // linear
+  const Material& m = scene.materials[0];
+  ASSERT_GE(m.normal_texture, 0);
+  ASSERT_GE(m.bump_texture, 0);
+  EXPECT_FLOAT_EQ(m.normal_scale, 0.25f);
+  EXPECT_FLOAT_EQ(m.bump_scale, 0.02f);
+  EXPECT_FLOAT_EQ(scene.textures[static_cast<std::size_t>(m.normal_texture)].texels[0], 128.0f / 255.0f);  // linear
+  EXPECT_FLOAT_EQ(scene.textures[static_cast<std::size_t>(m.bump_texture)].texels[0], 128.0f / 255.0f);
   dir.write("grey.json", quad_scene(R"(, "normal_texture": "grey.png")"));
   const std::string message = error_of<SceneError>([&] { load_scene((dir / "grey.json").string()); });
   EXPECT_NE(message.find("materials[0].normal_texture"), std::string::npos) << message;

@@ -1,6 +1,7 @@
-// Normal maps survive Prism's scene writers: written as GLB, JSON and pbrt-v4 and loaded
-// back, a material keeps its normal map (the same 8-bit texels, read as linear data, not
-// sRGB) and its scale; what pbrt-v4 cannot say (a scale other than 1) is refused.
+// Normal and bump maps survive Prism's scene writers: written as GLB, JSON and pbrt-v4 and
+// loaded back, a material keeps its normal map (the same 8-bit texels, read as linear data,
+// not sRGB) and its scale, and its bump map (JSON, pbrt-v4); what a format cannot say is
+// refused: pbrt-v4 a normal scale other than 1, glTF any bump map.
 #include <gtest/gtest.h>
 
 #include "loader_test_files.h"
@@ -42,6 +43,38 @@ Scene normal_mapped_floor(float normal_scale) {
   scene.lights.push_back(sky);
   scene.camera.eye = Vec3f(0, 3, 0.1f);
   return scene;
+}
+
+// The same floor with a grey 2×2 bump map instead.
+Scene bump_mapped_floor() {
+  Scene scene = normal_mapped_floor(1.0f);
+  scene.materials[0].normal_texture = -1;
+  TextureImage heights;
+  heights.name = "heights";
+  heights.width = heights.height = 2;
+  heights.channels = 1;
+  for (const int v : {0, 64, 128, 255}) heights.texels.push_back(v / 255.0f);
+  scene.textures[0] = heights;
+  scene.materials[0].bump_texture = 0;
+  scene.materials[0].bump_scale = 0.125f;
+  return scene;
+}
+
+TEST(NormalMapWriters, JsonAndPbrtKeepBumpMapsAndGlbRefusesThem) {
+  test::ScratchFolder dir;
+  const Scene original = bump_mapped_floor();
+  for (const char* name : {"bumps.json", "bumps.pbrt"}) {
+    const std::filesystem::path path = dir / name;
+    if (path.extension() == ".json") write_scene_json(original, path);
+    else write_scene_pbrt(original, path);
+    const Scene loaded = load_scene(path.string());
+    const Material& m = loaded.materials[loaded.meshes[0].material];
+    ASSERT_GE(m.bump_texture, 0) << name;
+    EXPECT_EQ(m.bump_scale, 0.125f) << name;
+    EXPECT_EQ(loaded.textures[static_cast<std::size_t>(m.bump_texture)].texels, original.textures[0].texels) << name;
+  }
+  EXPECT_NE(test::error_of<UsageError>([&] { write_scene_glb(original, dir / "bumps.glb"); }).find("bump map"),
+            std::string::npos);
 }
 
 TEST(NormalMapWriters, EveryFormatKeepsTheMapAndItsScale) {

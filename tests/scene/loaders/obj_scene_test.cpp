@@ -94,6 +94,33 @@ TEST(ObjLoader, MapsMtlParametersToMaterials) {
   EXPECT_NEAR(scene.textures[0].texels[1], 0.2158605f, 1e-6f);  // sRGB 128 decoded
 }
 
+// bump / map_Bump is a height map (linear) times its -bm multiplier; norm a tangent-space
+// normal map (linear RGB); neither is in the ignored-parameters warning any more.
+TEST(ObjLoader, BumpAndNormalMapsFromMtl) {
+  test::ScratchFolder dir;
+  dir.write("quad.mtl", "newmtl bumpy\nKd 0.5 0.5 0.5\nmap_Bump -bm 0.25 height.png\nnorm normal.png\n"
+                        "newmtl plain\nKd 0.5 0.5 0.5\nbump height.png\n");
+  write_png(dir / "height.png", EncodedImage{1, 1, 1, 8, {128}});
+  write_png(dir / "normal.png", EncodedImage{1, 1, 3, 8, {128, 128, 255}});
+  const std::string obj(kQuadObj);
+  const Scene scene = load_scene(dir.write("quad.obj", obj).string());
+  const Material& bumpy = scene.materials[0];
+  ASSERT_GE(bumpy.bump_texture, 0);
+  EXPECT_FLOAT_EQ(bumpy.bump_scale, 0.25f);
+  EXPECT_FLOAT_EQ(scene.textures[static_cast<std::size_t>(bumpy.bump_texture)].texels[0], 128.0f / 255.0f);  // linear
+  ASSERT_GE(bumpy.normal_texture, 0);
+  EXPECT_FLOAT_EQ(scene.textures[static_cast<std::size_t>(bumpy.normal_texture)].texels[2], 1.0f);
+  EXPECT_EQ(scene.materials[1].bump_texture, bumpy.bump_texture);  // one file, one texture
+  EXPECT_FLOAT_EQ(scene.materials[1].bump_scale, 1.0f);
+  for (const std::string& w : scene.warnings) {
+    EXPECT_EQ(w.find("bump"), std::string::npos) << w;
+    EXPECT_EQ(w.find("norm"), std::string::npos) << w;
+  }
+  dir.write("quad.mtl", "newmtl bumpy\nnorm height.png\n");
+  const std::string message = error_of<SceneError>([&] { load_scene(dir.write("grey.obj", obj).string()); });
+  EXPECT_NE(message.find("material 'bumpy' norm"), std::string::npos) << message;
+}
+
 TEST(ObjLoader, PhongExponentToRoughness) {
   // α = sqrt(2 / (Ns + 2)): Ns = 0 is α = 1; Ns = 198 is α = 0.1, r = sqrt(0.1).
   EXPECT_FLOAT_EQ(loaders::roughness_from_phong_exponent(0.0f), 1.0f);

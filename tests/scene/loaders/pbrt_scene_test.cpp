@@ -163,6 +163,29 @@ TEST(PbrtLoader, NormalMapIsALinearRgbImage) {
   EXPECT_NE(message.find("RGB"), std::string::npos) << message;
 }
 
+// A material's "texture displacement" (a float texture) is a bump map: the image, with the
+// texture's "scale" as the bump scale; a constant "float displacement" bends nothing.
+TEST(PbrtLoader, DisplacementIsABumpMap) {
+  test::ScratchFolder dir;
+  write_png(dir / "height.png", EncodedImage{1, 1, 1, 8, {128}});
+  const std::string text = "WorldBegin\n"
+                           "Texture \"h\" \"float\" \"imagemap\" \"string filename\" \"height.png\" "
+                           "\"string encoding\" \"linear\" \"float scale\" 0.05\n"
+                           "Material \"diffuse\" \"texture displacement\" \"h\"\n";
+  const Scene s = load_pbrt_scene(dir.write("scene.pbrt", text + std::string(kTriangle)));
+  const Material& m = s.materials[s.meshes[0].material];
+  ASSERT_GE(m.bump_texture, 0);
+  EXPECT_FLOAT_EQ(m.bump_scale, 0.05f);
+  EXPECT_FLOAT_EQ(s.textures[static_cast<std::size_t>(m.bump_texture)].texels[0], 128.0f / 255.0f);
+  for (const std::string& w : s.warnings) EXPECT_EQ(w.find("displacement"), std::string::npos) << w;
+  const std::string flat = "WorldBegin\nMaterial \"diffuse\" \"float displacement\" 0.1\n";
+  const Scene constant = parse(flat + std::string(kTriangle));
+  EXPECT_EQ(constant.materials[constant.meshes[0].material].bump_texture, -1);
+  for (const std::string& w : constant.warnings) EXPECT_EQ(w.find("displacement"), std::string::npos) << w;
+  EXPECT_NE(parse_error("WorldBegin\n\nMaterial \"diffuse\" \"texture displacement\" \"nope\"\n").find(":3:"),
+            std::string::npos);
+}
+
 // pbrt-v4 multiplies "scale" by a distant light's "illuminance" (the spectrum normalised to
 // unit luminance first), as it does for every photometric quantity.
 TEST(PbrtLoader, DistantIlluminanceIsTimesScale) {

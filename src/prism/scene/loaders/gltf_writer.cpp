@@ -104,6 +104,8 @@ json material_json(const Scene& scene, const Material& m) {
   if (m.base_color_texture >= 0) pbr["baseColorTexture"] = texture_info(scene, m.base_color_texture);
   if (m.metallic_roughness_texture >= 0) pbr["metallicRoughnessTexture"] = texture_info(scene, m.metallic_roughness_texture);
   j["pbrMetallicRoughness"] = pbr;
+  if (m.bump_texture >= 0)
+    throw UsageError(fmt::format("GLB writer: material '{}' has a bump map, which glTF 2.0 cannot hold", m.name));
   if (m.normal_texture >= 0) {
     j["normalTexture"] = texture_info(scene, m.normal_texture);
     j["normalTexture"]["scale"] = m.normal_scale;

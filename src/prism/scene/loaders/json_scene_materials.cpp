@@ -105,8 +105,9 @@ std::uint32_t JsonSceneReader::material_index(const JsonValue& name) const {
 
 void JsonSceneReader::read_material(const JsonValue& value) {
   value.expect_keys({"name", "type", "base_color", "base_color_texture", "roughness", "anisotropy", "metallic",
-                     "metallic_roughness_texture", "normal_texture", "normal_scale", "microfacet", "conductor", "ior",
-                     "dispersion", "thin_walled", "transmission", "alpha_mode", "alpha_cutoff", "opacity", "emission"});
+                     "metallic_roughness_texture", "normal_texture", "normal_scale", "bump_texture", "bump_scale",
+                     "microfacet", "conductor", "ior", "dispersion", "thin_walled", "transmission", "alpha_mode",
+                     "alpha_cutoff", "opacity", "emission"});
   Material m;
   m.name = value["name"].as_string();
   if (material_indices.contains(m.name)) value["name"].fail(fmt::format("material '{}' is defined twice", m.name));
@@ -129,6 +130,8 @@ void JsonSceneReader::read_material(const JsonValue& value) {
       t->fail("a normal map needs an RGB image (tangent-space x, y, z)");
   }
   m.normal_scale = value.get_float("normal_scale", m.normal_scale, -100.0f, 100.0f);
+  if (auto t = value.find("bump_texture")) m.bump_texture = read_texture(*t, TextureEncoding::linear);
+  m.bump_scale = value.get_float("bump_scale", m.bump_scale, -1e6f, 1e6f);
   if (auto mf = value.find("microfacet"))
     m.microfacet = mf->as_enum<MicrofacetModel>(
         {{"ggx", MicrofacetModel::ggx}, {"beckmann", MicrofacetModel::beckmann}, {"blinn_phong", MicrofacetModel::blinn_phong}});

@@ -70,8 +70,6 @@ Material material_from_mtl(const tinyobj::material_t& mtl, std::vector<std::stri
     m.emission.color = Vec3f(1.0f);
     m.emission.luminance_nits = 1.0f;
   }
-  if (!mtl.bump_texname.empty()) ignored.push_back("bump");
-  if (!mtl.normal_texname.empty()) ignored.push_back("norm");
   if (!mtl.displacement_texname.empty()) ignored.push_back("disp");
   if (!mtl.specular_texname.empty()) ignored.push_back("map_Ks");
   if (!mtl.alpha_texname.empty()) ignored.push_back("map_d");

@@ -1,5 +1,6 @@
 #include "prism/scene/loaders/obj_scene.h"
 
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -148,9 +149,10 @@ std::vector<std::uint32_t> add_materials(Scene& scene, const std::vector<tinyobj
   for (const auto& mtl : materials) {
     Material m = material_from_mtl(mtl, ignored);
     const std::string where = fmt::format("{}: material '{}'", source, mtl.name);
-    if (!mtl.diffuse_texname.empty() || !mtl.emissive_texname.empty()) {
+    if (!mtl.diffuse_texname.empty() || !mtl.emissive_texname.empty() || !mtl.bump_texname.empty() ||
+        !mtl.normal_texname.empty()) {
       if (!context.textures) {
-        ignored.push_back("map_Kd/map_Ke (no texture support here)");
+        ignored.push_back("map_Kd/map_Ke/bump/norm (no texture support here)");
       } else {
         if (!mtl.diffuse_texname.empty())
           m.base_color_texture = load_material_texture(context, mtl.diffuse_texname, TextureEncoding::srgb,
@@ -158,6 +160,20 @@ std::vector<std::uint32_t> add_materials(Scene& scene, const std::vector<tinyobj
         if (!mtl.emissive_texname.empty())
           m.emission.texture = load_material_texture(context, mtl.emissive_texname, TextureEncoding::srgb,
                                                      mtl.emissive_texopt, where + " map_Ke");
+        // bump / map_Bump: heights (linear data) times its -bm multiplier, in scene units.
+        if (!mtl.bump_texname.empty()) {
+          m.bump_texture = load_material_texture(context, mtl.bump_texname, TextureEncoding::linear, mtl.bump_texopt,
+                                                 where + " bump");
+          const float multiplier = mtl.bump_texopt.bump_multiplier;
+          m.bump_scale = std::isfinite(multiplier) ? multiplier : 1.0f;
+        }
+        // norm: a tangent-space normal map, +y up the image (glTF's convention).
+        if (!mtl.normal_texname.empty()) {
+          m.normal_texture = load_material_texture(context, mtl.normal_texname, TextureEncoding::linear,
+                                                   mtl.normal_texopt, where + " norm");
+          if (scene.textures[static_cast<std::size_t>(m.normal_texture)].channels < 3)
+            throw SceneError(fmt::format("{} norm: a normal map needs an RGB image", where));
+        }
       }
     }
     indices.push_back(static_cast<std::uint32_t>(scene.materials.size()));

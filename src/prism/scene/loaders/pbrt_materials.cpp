@@ -135,6 +135,17 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
     if (scene_.textures[static_cast<std::size_t>(m.normal_texture)].channels < 3)
       p.fail(*p.find("normalmap"), "a normal map needs an RGB image");
   }
+  // "texture displacement": a float texture as a bump map (pbrt-v4's BumpMap), its image's
+  // values times the texture's "scale" in scene units. A constant displacement moves the
+  // surface without bending it: nothing to do.
+  if (const PbrtParam* displacement = p.find("displacement"); displacement && displacement->type != "float") {
+    if (displacement->type != "texture") p.fail(*displacement, "expected a float texture or a float");
+    const std::string tex = p.get_string("displacement", "");
+    const auto it = float_textures_.find(tex);
+    if (it == float_textures_.end()) p.fail(*displacement, fmt::format("unknown float texture '{}'", tex));
+    m.bump_texture = it->second.image;
+    m.bump_scale = it->second.value.x;
+  }
   note_unused(fmt::format("Material \"{}\"", type), p);
   scene_.materials.push_back(std::move(m));
   const int index = static_cast<int>(scene_.materials.size() - 1);

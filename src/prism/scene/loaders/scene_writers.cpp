@@ -124,6 +124,8 @@ void write_scene_json(const Scene& scene, const std::filesystem::path& path) {
       w(", \"metallic_roughness_texture\": {}", json_texture(scene, files, m.metallic_roughness_texture));
     if (m.normal_texture >= 0)
       w(", \"normal_texture\": {}, \"normal_scale\": {}", json_texture(scene, files, m.normal_texture), m.normal_scale);
+    if (m.bump_texture >= 0)
+      w(", \"bump_texture\": {}, \"bump_scale\": {}", json_texture(scene, files, m.bump_texture), m.bump_scale);
     if (m.alpha_mode != AlphaMode::opaque) w(", \"alpha_mode\": \"{}\", \"alpha_cutoff\": {}", alpha_mode_name(m.alpha_mode), m.alpha_cutoff);
     if (m.opacity != 1.0f) w(", \"opacity\": {}", m.opacity);
     if (m.is_emissive()) {
@@ -167,6 +169,7 @@ namespace {
 struct PbrtMaterialTextures {
   std::string reflectance;  // empty: none
   std::string alpha;        // empty: none
+  std::string displacement;  // the bump map's float texture; empty: none
   std::optional<float> constant_alpha;
 };
 
@@ -198,6 +201,13 @@ PbrtMaterialTextures write_pbrt_textures(Writer& w, const Scene& scene, std::siz
     out.reflectance = fmt::format("{}-reflectance", m.name);
     w("Texture \"{}\" \"spectrum\" \"imagemap\"{} \"float scale\" [ {} ]\n", out.reflectance,
       pbrt_image_params(scene.textures[t], files[t], "sRGB"), m.base_color.x);
+  }
+  if (m.bump_texture >= 0) {
+    // pbrt-v4's "displacement" float texture: the image's first channel times "scale".
+    const auto t = static_cast<std::size_t>(m.bump_texture);
+    out.displacement = fmt::format("{}-bump", m.name);
+    w("Texture \"{}\" \"float\" \"imagemap\"{} \"float scale\" [ {} ]\n", out.displacement,
+      pbrt_image_params(scene.textures[t], files[t], "linear"), m.bump_scale);
   }
   if (!has_alpha_coverage(m)) return out;
   const int t = m.base_color_texture;
@@ -263,6 +273,7 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
             fmt::format("pbrt writer: material '{}': a normal map with a scale, wrap or uv transform", m.name));
       w(" \"string normalmap\" \"{}\"", files[static_cast<std::size_t>(m.normal_texture)]);
     }
+    if (!textures.back().displacement.empty()) w(" \"texture displacement\" \"{}\"", textures.back().displacement);
     switch (m.type) {
       case MaterialType::conductor:
       case MaterialType::mirror:

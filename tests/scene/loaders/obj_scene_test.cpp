@@ -117,8 +117,12 @@ TEST(ObjLoader, BumpAndNormalMapsFromMtl) {
     EXPECT_EQ(w.find("norm"), std::string::npos) << w;
   }
   dir.write("quad.mtl", "newmtl bumpy\nnorm height.png\n");
-  const std::string message = error_of<SceneError>([&] { load_scene(dir.write("grey.obj", obj).string()); });
+  std::string message = error_of<SceneError>([&] { load_scene(dir.write("grey.obj", obj).string()); });
   EXPECT_NE(message.find("material 'bumpy' norm"), std::string::npos) << message;
+  // A missing map names the material and the map that asked for it.
+  dir.write("quad.mtl", "newmtl bumpy\nmap_Bump missing.png\n");
+  message = error_of<IoError>([&] { load_scene(dir.write("missing.obj", obj).string()); });
+  EXPECT_NE(message.find("material 'bumpy' bump: cannot read image"), std::string::npos) << message;
 }
 
 TEST(ObjLoader, PhongExponentToRoughness) {

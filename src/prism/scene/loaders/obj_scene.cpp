@@ -139,7 +139,11 @@ int load_material_texture(const ObjContext& context, const std::string& name, Te
   const std::filesystem::path path =
       resolve_scene_reference(context.dir, name, context.options.allow_external_paths, where);
   const TextureWrap wrap = option.clamp ? TextureWrap::clamp : TextureWrap::repeat;
-  return context.textures->load(path, encoding, wrap, wrap);
+  try {
+    return context.textures->load(path, encoding, wrap, wrap);
+  } catch (const IoError& e) {
+    throw IoError(fmt::format("{}: {}", where, e.what()));  // which material and map asked for it
+  }
 }
 
 std::vector<std::uint32_t> add_materials(Scene& scene, const std::vector<tinyobj::material_t>& materials,

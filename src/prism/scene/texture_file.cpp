@@ -42,12 +42,17 @@ void check_dimensions(long width, long height, int max_dimension, std::string_vi
 
 // The float texels stay; the decoder's own buffer of `decoded_bytes_per_sample` codes per
 // sample lives only while decoding.
+TextureMemoryNeed texel_memory(long width, long height, int channels, int decoded_bytes_per_sample) {
+  const std::uint64_t samples = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) *
+                                static_cast<std::uint64_t>(channels);
+  return {samples * sizeof(float), samples * static_cast<std::uint64_t>(decoded_bytes_per_sample)};
+}
+
 void reserve_texels(const TextureLimits& limits, long width, long height, int channels, int decoded_bytes_per_sample,
                     std::string_view name) {
   if (!limits.budget) return;
-  const std::uint64_t samples = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) *
-                                static_cast<std::uint64_t>(channels);
-  limits.budget->reserve(samples * sizeof(float), samples * static_cast<std::uint64_t>(decoded_bytes_per_sample),
+  const TextureMemoryNeed need = texel_memory(width, height, channels, decoded_bytes_per_sample);
+  limits.budget->reserve(need.texel_bytes, need.transient_bytes,
                          fmt::format("texture '{}' ({}x{}, {} channels)", name, width, height, channels));
 }
 
@@ -410,6 +415,19 @@ TextureImage decode_texture_memory(std::span<const unsigned char> bytes, std::st
       break;
   }
   throw IoError(fmt::format("cannot read image '{}': not a PNG, JPEG, Radiance HDR or OpenEXR file (wrong magic)", name));
+}
+
+std::optional<TextureMemoryNeed> texture_memory_need(std::span<const unsigned char> bytes) {
+  // The numbers decode_with_stb reserves, from the same header queries.
+  const ImageFileFormat format = detect_image_format(bytes);
+  if (format != ImageFileFormat::png && format != ImageFileFormat::jpeg && format != ImageFileFormat::radiance_hdr)
+    return std::nullopt;
+  if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) return std::nullopt;
+  const int size = static_cast<int>(bytes.size());
+  int width = 0, height = 0, channels = 0;
+  if (!stbi_info_from_memory(bytes.data(), size, &width, &height, &channels)) return std::nullopt;
+  const bool hdr = stbi_is_hdr_from_memory(bytes.data(), size) != 0;
+  return texel_memory(width, height, channels, hdr ? 4 : stbi_is_16_bit_from_memory(bytes.data(), size) ? 2 : 1);
 }
 
 TextureImage read_texture_file(const std::filesystem::path& path, TextureEncoding encoding,

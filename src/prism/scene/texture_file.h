@@ -4,6 +4,7 @@
 // Radiance .hdr (stb_image's RGBE reader) and OpenEXR (prism::read_exr).
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -39,5 +40,13 @@ TextureImage read_texture_file(const std::filesystem::path& path, TextureEncodin
 // used in messages and as the texture's name.
 TextureImage decode_texture_memory(std::span<const unsigned char> bytes, std::string_view name,
                                    TextureEncoding encoding, const TextureLimits& limits);
+
+// What decode_texture_memory reserves from a budget for `bytes`, read from the header: the
+// float texels, and the decoder's codes, held only while it decodes. Nothing when the
+// header cannot be read (the decode then reports why).
+struct TextureMemoryNeed {
+  std::uint64_t texel_bytes = 0, transient_bytes = 0;
+};
+std::optional<TextureMemoryNeed> texture_memory_need(std::span<const unsigned char> bytes);
 
 }  // namespace prism

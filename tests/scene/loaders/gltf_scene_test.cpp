@@ -9,6 +9,7 @@
 
 #include "loader_test_files.h"
 #include "prism/core/error.h"
+#include "prism/core/memory_budget.h"
 #include "prism/io/png.h"
 #include "prism/scene/emission.h"
 #include "prism/scene/load_scene.h"
@@ -210,6 +211,73 @@ TEST(GltfLoader, NormalTextureIsLinearDataWithItsScale) {
   bool warned = false;
   for (const std::string& w : s.warnings) warned |= w.find("materials[1].normalTexture") != std::string::npos;
   EXPECT_TRUE(warned);
+}
+
+// Three materials with an image each (a 64×64 RGB PNG of its own pattern), the first
+// image also used as the third material's normal map (so it is decoded twice, sRGB and
+// linear).
+std::string three_textured_materials(test::ScratchFolder& dir) {
+  for (int i = 0; i < 3; ++i) {
+    EncodedImage png{64, 64, 3, 8, {}};
+    for (int p = 0; p < 64 * 64 * 3; ++p) png.samples.push_back(static_cast<std::uint16_t>((p * (i + 3)) % 256));
+    write_png(dir / ("t" + std::to_string(i) + ".png"), png);
+  }
+  dir.write("quad.bin", quad_buffer());
+  const std::string materials = R"([
+    {"pbrMetallicRoughness": {"baseColorTexture": {"index": 0}}},
+    {"pbrMetallicRoughness": {"baseColorTexture": {"index": 1}, "metallicRoughnessTexture": {"index": 2}}},
+    {"normalTexture": {"index": 0}, "emissiveTexture": {"index": 2}, "emissiveFactor": [1, 1, 1]}])";
+  const std::string top = R"("textures": [{"source": 0}, {"source": 1}, {"source": 2}],
+    "images": [{"uri": "t0.png"}, {"uri": "t1.png"}, {"uri": "t2.png"}],)";
+  return quad_document("quad.bin", top, materials);
+}
+
+// The materials' images are decoded together, ahead of the materials, when their texels
+// and decoder buffers all fit in the memory budget at once; otherwise one at a time, as
+// they are met. Either way the scene is the same: the same textures in the same order.
+TEST(GltfLoader, ImagesDecodedTogetherOrOneAtATimeGiveTheSameScene) {
+  test::ScratchFolder dir;
+  const std::string doc = three_textured_materials(dir);
+  // Five decodes of 64 × 64 × 3 samples: 48 KiB of floats and 12 KiB of codes each.
+  constexpr std::uint64_t kTexels = 64 * 64 * 3 * 4, kCodes = 64 * 64 * 3;
+  MemoryBudget roomy(5 * (kTexels + kCodes));  // all at once fits: decoded together
+  MemoryBudget tight(5 * kTexels + kCodes);    // only one buffer at a time fits: one by one
+  const Scene together = parse(doc, dir.path(), LoadOptions{.memory_budget = &roomy});
+  const Scene one_by_one = parse(doc, dir.path(), LoadOptions{.memory_budget = &tight});
+  EXPECT_EQ(roomy.used_bytes(), 5 * kTexels);
+  EXPECT_EQ(tight.used_bytes(), 5 * kTexels);
+  ASSERT_EQ(together.textures.size(), 5u);
+  ASSERT_EQ(one_by_one.textures.size(), 5u);
+  for (std::size_t t = 0; t < 5; ++t) {
+    EXPECT_EQ(together.textures[t].name, one_by_one.textures[t].name) << t;
+    EXPECT_EQ(together.textures[t].texels, one_by_one.textures[t].texels) << t;
+  }
+  for (std::size_t m = 0; m < 3; ++m) {
+    EXPECT_EQ(together.materials[m].base_color_texture, one_by_one.materials[m].base_color_texture);
+    EXPECT_EQ(together.materials[m].normal_texture, one_by_one.materials[m].normal_texture);
+    EXPECT_EQ(together.materials[m].emission.texture, one_by_one.materials[m].emission.texture);
+  }
+  // Image 0 as colour (sRGB) and as the normal map (linear): two textures.
+  EXPECT_NE(together.textures[static_cast<std::size_t>(together.materials[0].base_color_texture)].texels,
+            together.textures[static_cast<std::size_t>(together.materials[2].normal_texture)].texels);
+  // Too small for one at a time as well: the error names the first image that does not fit.
+  MemoryBudget too_small(3 * kTexels + kCodes);
+  const std::string message =
+      test::error_of<Error>([&] { parse(doc, dir.path(), LoadOptions{.memory_budget = &too_small}); });
+  EXPECT_NE(message.find("t2.png"), std::string::npos) << message;  // the 4th decode: t2 as metal-roughness
+}
+
+// Decoded together, errors are still those of decoding one image after another: the first
+// bad image in the materials' order, every time.
+TEST(GltfLoader, ImageErrorsComeInTheMaterialsOrder) {
+  test::ScratchFolder dir;
+  const std::string doc = three_textured_materials(dir);
+  dir.write("t1.png", "\x89PNG\r\n\x1a\n truncated");
+  dir.write("t2.png", "not an image at all");
+  for (int run = 0; run < 8; ++run) {
+    const std::string message = test::error_of<IoError>([&] { parse(doc, dir.path()); });
+    EXPECT_NE(message.find("t1.png"), std::string::npos) << message;
+  }
 }
 
 TEST(GltfLoader, BadInputIsAOneLineError) {

@@ -1,7 +1,9 @@
 #pragma once
 // Internal to the glTF loader: turning a parsed tinygltf::Model into a Scene.
+#include <exception>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,7 @@ class GltfBuilder {
 
  private:
   void check_extensions();
+  void decode_images_in_parallel();
   void build_materials();
   Material make_material(const tinygltf::Material& m, int index);
   int texture(const tinygltf::TextureInfo& info, TextureEncoding encoding, const std::string& where);
@@ -30,6 +33,7 @@ class GltfBuilder {
   const std::vector<std::uint32_t>& mesh_primitives(int mesh);
   void add_camera(const tinygltf::Camera& camera, const Transform& to_world, const std::string& name);
   void add_light(int light, const Transform& to_world);
+  std::string image_name(int source) const;  // the image's file name, or "<scene>#image<index>"
   [[noreturn]] void fail(const std::string& message) const;
 
   const tinygltf::Model& model_;
@@ -39,6 +43,13 @@ class GltfBuilder {
   Scene scene_;
   TextureCache cache_;
   std::map<std::pair<int, TextureEncoding>, int> image_textures_;
+  // Images decoded ahead by decode_images_in_parallel, by (image, encoding): the texture,
+  // or what decoding it threw, for texture() to take in its own order.
+  struct DecodedImage {
+    std::optional<TextureImage> image;
+    std::exception_ptr error;
+  };
+  std::map<std::pair<int, TextureEncoding>, DecodedImage> decoded_images_;
   std::map<int, std::vector<std::uint32_t>> meshes_;  // glTF mesh → Prism mesh per primitive
   int default_material_ = -1;
   std::vector<bool> visited_;  // nodes already placed

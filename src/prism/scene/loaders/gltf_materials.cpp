@@ -1,11 +1,13 @@
 // glTF 2.0 materials → Prism materials: PBR metallic-roughness with textures, emission
 // (KHR_materials_emissive_strength), transmission + ior (→ dielectric), texture
 // transforms and alpha modes. Mapping in docs/scene-formats.md.
+#include <algorithm>
 #include <cmath>
 
 #include <fmt/format.h>
 
 #include "prism/core/error.h"
+#include "prism/core/parallel.h"
 #include "prism/scene/emission.h"
 #include "prism/scene/loaders/gltf_builder.h"
 #include "prism/scene/loaders/path_safety.h"
@@ -59,11 +61,16 @@ int GltfBuilder::texture(int index, const tinygltf::ExtensionMap& extensions, Te
     result = it->second;
   } else {
     const tinygltf::Image& image = model_.images[t.source];
-    const std::string name = !image.uri.empty() && image.uri.rfind("data:", 0) != 0
-                                 ? image.uri
-                                 : fmt::format("{}#image{}", source_, t.source);
     if (image.image.empty()) fail(fmt::format("{}: image {} has no data", where, t.source));
-    TextureImage decoded = decode_texture_memory(image.image, name, encoding, {options_.max_texture_dimension, options_.memory_budget});
+    TextureImage decoded;
+    if (auto ahead = decoded_images_.find(key); ahead != decoded_images_.end()) {
+      if (ahead->second.error) std::rethrow_exception(ahead->second.error);
+      decoded = std::move(*ahead->second.image);
+      decoded_images_.erase(ahead);
+    } else {
+      decoded = decode_texture_memory(image.image, image_name(t.source), encoding,
+                                      {options_.max_texture_dimension, options_.memory_budget});
+    }
     scene_.textures.push_back(std::move(decoded));
     result = static_cast<int>(scene_.textures.size() - 1);
     image_textures_[key] = result;
@@ -94,6 +101,63 @@ int GltfBuilder::texture(int index, const tinygltf::ExtensionMap& extensions, Te
     fail(fmt::format("{}: KHR_texture_transform values are not finite", where));
   scene_.textures.push_back(std::move(copy));
   return static_cast<int>(scene_.textures.size() - 1);
+}
+
+std::string GltfBuilder::image_name(int source) const {
+  const tinygltf::Image& image = model_.images[static_cast<std::size_t>(source)];
+  if (!image.uri.empty() && image.uri.rfind("data:", 0) != 0) return image.uri;
+  return fmt::format("{}#image{}", source_, source);
+}
+
+// The materials' images, decoded before the materials are built, on all threads: JPEG and
+// PNG decoding is most of a textured glTF's load. Each (image, encoding) is decoded once,
+// in the order the materials first use it; what a decode throws is kept and thrown when
+// texture() comes to that image, so errors are the ones, and in the order, of decoding
+// one image after another. The memory budget: decoding one at a time needs each image's
+// decoder buffer only next to the texels decoded before it; decoding them together needs
+// every buffer at once. So images are decoded ahead only when all their texels and all
+// their buffers fit in the budget together (then every reservation succeeds, in any
+// order); otherwise texture() decodes them one at a time as before.
+void GltfBuilder::decode_images_in_parallel() {
+  std::vector<std::pair<int, TextureEncoding>> keys;
+  const auto use = [&](int texture_index, TextureEncoding encoding) {
+    if (texture_index < 0 || texture_index >= static_cast<int>(model_.textures.size())) return;
+    const int source = model_.textures[static_cast<std::size_t>(texture_index)].source;
+    if (source < 0 || source >= static_cast<int>(model_.images.size())) return;
+    if (model_.images[static_cast<std::size_t>(source)].image.empty()) return;
+    const auto key = std::make_pair(source, encoding);
+    if (std::find(keys.begin(), keys.end(), key) == keys.end()) keys.push_back(key);
+  };
+  for (const tinygltf::Material& m : model_.materials) {  // make_material's order
+    use(m.pbrMetallicRoughness.baseColorTexture.index, TextureEncoding::srgb);
+    use(m.pbrMetallicRoughness.metallicRoughnessTexture.index, TextureEncoding::linear);
+    use(m.emissiveTexture.index, TextureEncoding::srgb);
+    use(m.normalTexture.index, TextureEncoding::linear);
+  }
+  if (keys.size() < 2) return;
+  if (MemoryBudget* budget = options_.memory_budget; budget && budget->limit_bytes() > 0) {
+    std::uint64_t together = 0;
+    for (const auto& [source, encoding] : keys) {
+      const auto need = texture_memory_need(model_.images[static_cast<std::size_t>(source)].image);
+      if (!need) return;  // a header that does not read: one at a time, as before
+      together += need->texel_bytes + need->transient_bytes;
+    }
+    if (budget->used_bytes() + together > budget->limit_bytes()) return;
+  }
+  std::vector<DecodedImage> decoded(keys.size());
+  parallel_for(keys.size(), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const auto [source, encoding] = keys[k];
+      try {
+        decoded[k].image = decode_texture_memory(model_.images[static_cast<std::size_t>(source)].image,
+                                                 image_name(source), encoding,
+                                                 {options_.max_texture_dimension, options_.memory_budget});
+      } catch (...) {
+        decoded[k].error = std::current_exception();
+      }
+    }
+  });
+  for (std::size_t k = 0; k < keys.size(); ++k) decoded_images_[keys[k]] = std::move(decoded[k]);
 }
 
 Material GltfBuilder::make_material(const tinygltf::Material& src, int index) {

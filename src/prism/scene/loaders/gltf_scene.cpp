@@ -274,6 +274,7 @@ void GltfBuilder::add_light(int index, const Transform& to_world) {
 
 Scene GltfBuilder::build() {
   check_extensions();
+  decode_images_in_parallel();
   build_materials();
   if (!model_.scenes.empty()) {
     const int s = model_.defaultScene >= 0 ? model_.defaultScene : 0;

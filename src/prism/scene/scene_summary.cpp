@@ -45,6 +45,8 @@ SceneSummary summarize_scene(const Scene& scene) {
     ++s.materials_by_type[std::string(material_type_name(m.type))];
     if (m.is_emissive()) ++s.emissive_materials;
     if (has_alpha_coverage(m)) ++s.alpha_tested_materials;
+    if (m.normal_texture >= 0) ++s.normal_mapped_materials;
+    if (m.bump_texture >= 0) ++s.bump_mapped_materials;
   }
   for (const auto& l : scene.lights) ++s.lights_by_type[std::string(light_type_name(l.type))];
   return s;
@@ -68,9 +70,12 @@ std::string format_scene_summary(const Scene& scene) {
   out += fmt::format("triangles {} ({} placed)\n", s.triangles, s.placed_triangles);
   out += fmt::format("meshes {}\n", s.meshes);
   out += fmt::format("instances {}\n", s.instances);
+  std::string extras;  // what only some scenes have
+  if (s.alpha_tested_materials) extras += fmt::format(", {} alpha-tested", s.alpha_tested_materials);
+  if (s.normal_mapped_materials) extras += fmt::format(", {} normal-mapped", s.normal_mapped_materials);
+  if (s.bump_mapped_materials) extras += fmt::format(", {} bump-mapped", s.bump_mapped_materials);
   out += fmt::format("materials {} ({}; {} emissive{})\n", scene.materials.size(), counts(s.materials_by_type),
-                     s.emissive_materials,
-                     s.alpha_tested_materials ? fmt::format(", {} alpha-tested", s.alpha_tested_materials) : std::string());
+                     s.emissive_materials, extras);
   out += fmt::format("lights {} ({})\n", scene.lights.size(), counts(s.lights_by_type));
   out += fmt::format("textures {} ({})\n", s.textures, mebibytes(s.texture_bytes));
   for (const auto& t : scene.textures)

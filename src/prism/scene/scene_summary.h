@@ -15,6 +15,7 @@ struct SceneSummary {
   std::size_t texture_bytes = 0;
   std::size_t emissive_materials = 0;
   std::size_t alpha_tested_materials = 0;  // alpha mask/blend that can let rays through (surface_alpha.h)
+  std::size_t normal_mapped_materials = 0, bump_mapped_materials = 0;
   std::map<std::string, std::size_t> materials_by_type;  // "diffuse" → count
   std::map<std::string, std::size_t> lights_by_type;     // "point" → count
 };

@@ -7,6 +7,7 @@
 #include "loader_test_files.h"
 #include "prism/core/error.h"
 #include "prism/scene/load_scene.h"
+#include "prism/scene/scene_summary.h"
 #include "prism/scene/loaders/gltf_writer.h"
 #include "prism/scene/loaders/scene_writers.h"
 
@@ -75,6 +76,14 @@ TEST(NormalMapWriters, JsonAndPbrtKeepBumpMapsAndGlbRefusesThem) {
   }
   EXPECT_NE(test::error_of<UsageError>([&] { write_scene_glb(original, dir / "bumps.glb"); }).find("bump map"),
             std::string::npos);
+}
+
+// `prism info` says which materials carry the maps, so a user sees that they were read.
+TEST(NormalMapWriters, TheSceneSummaryCountsMappedMaterials) {
+  const std::string normal = format_scene_summary(normal_mapped_floor(1.0f));
+  EXPECT_NE(normal.find("materials 1 (1 diffuse; 0 emissive, 1 normal-mapped)"), std::string::npos) << normal;
+  const std::string bump = format_scene_summary(bump_mapped_floor());
+  EXPECT_NE(bump.find("materials 1 (1 diffuse; 0 emissive, 1 bump-mapped)"), std::string::npos) << bump;
 }
 
 TEST(NormalMapWriters, EveryFormatKeepsTheMapAndItsScale) {

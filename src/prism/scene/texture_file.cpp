@@ -42,6 +42,22 @@ void check_dimensions(long width, long height, int max_dimension, std::string_vi
 
 // The float texels stay; the decoder's own buffer of `decoded_bytes_per_sample` codes per
 // sample lives only while decoding.
+// What stb reports of an image from its header: the size, channels and the bytes of each
+// decoded sample (4: Radiance HDR floats, 2: 16-bit PNG, 1: 8-bit). Nothing when the
+// header does not read (stbi_failure_reason says why) or the data is over 2 GiB.
+struct StbHeader {
+  int width = 0, height = 0, channels = 0, decoded_bytes_per_sample = 1;
+};
+std::optional<StbHeader> stb_header(std::span<const unsigned char> bytes) {
+  if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) return std::nullopt;
+  const int size = static_cast<int>(bytes.size());
+  StbHeader h;
+  if (!stbi_info_from_memory(bytes.data(), size, &h.width, &h.height, &h.channels)) return std::nullopt;
+  h.decoded_bytes_per_sample =
+      stbi_is_hdr_from_memory(bytes.data(), size) ? 4 : stbi_is_16_bit_from_memory(bytes.data(), size) ? 2 : 1;
+  return h;
+}
+
 TextureMemoryNeed texel_memory(long width, long height, int channels, int decoded_bytes_per_sample) {
   const std::uint64_t samples = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) *
                                 static_cast<std::uint64_t>(channels);
@@ -236,14 +252,11 @@ TextureImage decode_with_stb(std::span<const unsigned char> bytes, std::string_v
   }
   if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     throw IoError(fmt::format("cannot read image '{}': file too large", name));
-  const auto* data = bytes.data();
-  const int size = static_cast<int>(bytes.size());
-  int width = 0, height = 0, channels = 0;
-  if (!stbi_info_from_memory(data, size, &width, &height, &channels))
-    throw IoError(fmt::format("cannot read image '{}': {}", name, stbi_failure_reason()));
+  const auto header = stb_header(bytes);
+  if (!header) throw IoError(fmt::format("cannot read image '{}': {}", name, stbi_failure_reason()));
+  auto [width, height, channels, decoded_bytes_per_sample] = *header;  // decode() writes them back
   check_dimensions(width, height, limits.max_dimension, name);
-  const bool hdr = stbi_is_hdr_from_memory(data, size) != 0;
-  reserve_texels(limits, width, height, channels, hdr ? 4 : stbi_is_16_bit_from_memory(data, size) ? 2 : 1, name);
+  reserve_texels(limits, width, height, channels, decoded_bytes_per_sample, name);
   TextureImage image;
   image.name = std::string(name);
   StbInput input(bytes);
@@ -252,11 +265,11 @@ TextureImage decode_with_stb(std::span<const unsigned char> bytes, std::string_v
     if (input.ran_past_end()) throw IoError(fmt::format("cannot read image '{}': the file is truncated", name));
     image.width = width, image.height = height, image.channels = channels;
   };
-  if (hdr) {
+  if (decoded_bytes_per_sample == 4) {  // Radiance HDR: floats
     const auto pixels = input.decode(&stbi_loadf_from_callbacks, width, height, channels);
     check(pixels.get());
     image.texels.assign(pixels.get(), pixels.get() + static_cast<std::size_t>(width) * height * channels);
-  } else if (stbi_is_16_bit_from_memory(data, size)) {
+  } else if (decoded_bytes_per_sample == 2) {
     const auto pixels = input.decode(&stbi_load_16_from_callbacks, width, height, channels);
     check(pixels.get());
     decode_codes(pixels.get(), image, encoding);
@@ -418,16 +431,13 @@ TextureImage decode_texture_memory(std::span<const unsigned char> bytes, std::st
 }
 
 std::optional<TextureMemoryNeed> texture_memory_need(std::span<const unsigned char> bytes) {
-  // The numbers decode_with_stb reserves, from the same header queries.
+  // The numbers decode_with_stb reserves, from the same header.
   const ImageFileFormat format = detect_image_format(bytes);
   if (format != ImageFileFormat::png && format != ImageFileFormat::jpeg && format != ImageFileFormat::radiance_hdr)
     return std::nullopt;
-  if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) return std::nullopt;
-  const int size = static_cast<int>(bytes.size());
-  int width = 0, height = 0, channels = 0;
-  if (!stbi_info_from_memory(bytes.data(), size, &width, &height, &channels)) return std::nullopt;
-  const bool hdr = stbi_is_hdr_from_memory(bytes.data(), size) != 0;
-  return texel_memory(width, height, channels, hdr ? 4 : stbi_is_16_bit_from_memory(bytes.data(), size) ? 2 : 1);
+  const auto header = stb_header(bytes);
+  if (!header) return std::nullopt;
+  return texel_memory(header->width, header->height, header->channels, header->decoded_bytes_per_sample);
 }
 
 TextureImage read_texture_file(const std::filesystem::path& path, TextureEncoding encoding,

@@ -101,9 +101,14 @@ template <class Mode>
 std::optional<TexelRgba> WavefrontIntegrator<Mode>::texel_at_hit(int texture, const SurfaceInteraction& si,
                                                                  float cone_width, const Ray& ray) const {
   if (!has_texture(texture, si.mesh)) return std::nullopt;
-  const float lod = mip_level_from_ray_cone(textures_[static_cast<std::size_t>(texture)], cone_width,
-                                            std::abs(dot(ray.direction, si.geometric_normal)), si.uv_area, si.world_area);
-  return texel_at(texture, si.uv, lod);
+  return texel_at(texture, si.uv, level_of_detail_at_hit(texture, si, cone_width, ray));
+}
+
+template <class Mode>
+float WavefrontIntegrator<Mode>::level_of_detail_at_hit(int texture, const SurfaceInteraction& si, float cone_width,
+                                                        const Ray& ray) const {
+  return mip_level_from_ray_cone(textures_[static_cast<std::size_t>(texture)], cone_width,
+                                 std::abs(dot(ray.direction, si.geometric_normal)), si.uv_area, si.world_area);
 }
 
 template <class Mode>
@@ -144,15 +149,13 @@ void WavefrontIntegrator<Mode>::apply_bump_map(const Material& m, SurfaceInterac
   Vec3f dpdu, dpdv;
   float det = 0.0f;
   if (!triangle_position_derivatives(scene_.meshes[si.mesh], si.triangle, dpdu, dpdv, det)) return;
-  const auto t = static_cast<std::size_t>(m.bump_texture);
-  const float lod = mip_level_from_ray_cone(textures_[t], cone_width, std::abs(dot(ray.direction, si.geometric_normal)),
-                                            si.uv_area, si.world_area);
+  const float lod = level_of_detail_at_hit(m.bump_texture, si, cone_width, ray);
   // Finite differences over half the ray footprint in uv (pbrt-v4: ½(|∂u/∂x| + |∂u/∂y|)),
   // the footprint being the cone's width times the triangle's uv per scene unit, and at
   // least half a texel of the finest level.
   const float uv_per_unit = si.world_area > 0.0f ? std::sqrt(si.uv_area / si.world_area) : 0.0f;
   const float half_footprint = 0.5f * cone_width * uv_per_unit;
-  const TextureImage& image = scene_.textures[t];
+  const TextureImage& image = scene_.textures[static_cast<std::size_t>(m.bump_texture)];
   const float du = std::max(half_footprint, 0.5f / static_cast<float>(image.width));
   const float dv = std::max(half_footprint, 0.5f / static_cast<float>(image.height));
   const float h = texel_at(m.bump_texture, si.uv, lod)[0];

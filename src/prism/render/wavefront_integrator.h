@@ -113,12 +113,14 @@ class WavefrontIntegrator {
   std::optional<TexelRgba> texel_at_hit(int texture, const SurfaceInteraction& si, float cone_width,
                                         const Ray& ray) const;
   TexelRgba texel_at(int texture, Vec2f uv, float level_of_detail) const;
+  // The mip level a hit's ray cone covers in `texture` (which the mesh must have uvs for).
+  float level_of_detail_at_hit(int texture, const SurfaceInteraction& si, float cone_width, const Ray& ray) const;
   bool has_texture(int texture, std::uint32_t mesh) const;
-  // Roughness and metallic after the metallic-roughness texture (G, B; linear).
   // Replaces si.shading by the material's normal-mapped frame, where it has a normal map.
   void apply_normal_map(const Material& material, SurfaceInteraction& si, float cone_width, const Ray& ray) const;
   // Replaces si.shading by the material's bump-mapped frame, where it has a bump map.
   void apply_bump_map(const Material& material, SurfaceInteraction& si, float cone_width, const Ray& ray) const;
+  // Roughness and metallic after the metallic-roughness texture (G, B; linear).
   MaterialPoint material_point(const Material& material, const SurfaceInteraction& si, float cone_width,
                                const Ray& ray) const;
   // Emitted radiance of an emissive material; with an emission texture (and uvs) the

@@ -3,6 +3,7 @@
 // "Building an Orthonormal Basis, Revisited" (JCGT 6(1)): branchless and continuous
 // except on the sign change of n.z.
 #include <cmath>
+#include <optional>
 
 #include "prism/core/vec.h"
 
@@ -17,6 +18,15 @@ struct Frame {
     const float b = n.x * n.y * a;
     return {Vec3f(1.0f + sign * n.x * n.x * a, sign * b, -sign * n.x),
             Vec3f(b, sign + n.y * n.y * a, -n.y), n};
+  }
+
+  // The frame around the unit normal n whose tangent is t made perpendicular to n
+  // (Gram–Schmidt); nothing where t lies along n (|t − n (n·t)| ≤ 10⁻⁴ |t|).
+  static std::optional<Frame> from_normal_and_tangent(const Vec3f& n, const Vec3f& t) {
+    const Vec3f s = t - n * dot(n, t);
+    const float len = length(s);
+    if (!(len > 1e-4f * length(t))) return std::nullopt;
+    return Frame{s / len, cross(n, s / len), n};
   }
 
   Vec3f to_local(const Vec3f& v) const { return {dot(v, s), dot(v, t), dot(v, n)}; }

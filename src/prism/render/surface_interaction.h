@@ -65,10 +65,8 @@ inline SurfaceInteraction surface_interaction(const Scene& scene, const Hit& hit
     // normal's direction (what anisotropic lobes need); Gram–Schmidt against ns. The
     // frame stays right-handed: the BSDFs are symmetric under a flip of the bitangent.
     const Vec3f t = mesh.tangents[i0] * b0 + mesh.tangents[i1] * hit.u + mesh.tangents[i2] * hit.v;
-    const Vec3f s = t - ns * dot(ns, t);
-    const float len = length(s);
-    if (len > 1e-4f * length(t)) {
-      si.shading = Frame{s / len, cross(ns, s / len), ns};
+    if (const auto frame = Frame::from_normal_and_tangent(ns, t)) {
+      si.shading = *frame;
       si.tangent_from_mesh = true;
       if (!mesh.tangent_signs.empty()) {
         const std::vector<float>& w = mesh.tangent_signs;  // ±1 per vertex, equal across a triangle but at seams

@@ -133,10 +133,9 @@ void WavefrontIntegrator<Mode>::apply_normal_map(const Material& m, SurfaceInter
     // No per-vertex tangents: the triangle's dP/du, made perpendicular to the normal.
     Vec3f dpdu;
     if (!triangle_tangent(scene_.meshes[si.mesh], si.triangle, dpdu, sign)) return;
-    const Vec3f s = dpdu - frame.n * dot(frame.n, dpdu);
-    const float len = length(s);
-    if (!(len > 1e-4f * length(dpdu))) return;
-    frame = Frame{s / len, cross(frame.n, s / len), frame.n};
+    const auto with_tangent = Frame::from_normal_and_tangent(frame.n, dpdu);
+    if (!with_tangent) return;
+    frame = *with_tangent;
   }
   si.shading = normal_mapped_frame(frame, sign, Vec3f((*texel)[0], (*texel)[1], (*texel)[2]), m.normal_scale,
                                    si.geometric_normal);

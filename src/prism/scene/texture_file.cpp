@@ -254,7 +254,10 @@ TextureImage decode_with_stb(std::span<const unsigned char> bytes, std::string_v
     throw IoError(fmt::format("cannot read image '{}': file too large", name));
   const auto header = stb_header(bytes);
   if (!header) throw IoError(fmt::format("cannot read image '{}': {}", name, stbi_failure_reason()));
-  auto [width, height, channels, decoded_bytes_per_sample] = *header;  // decode() writes them back
+  // Plain variables, not a structured binding: the lambda below captures them (clang 14
+  // cannot capture bindings), and decode() writes them back.
+  int width = header->width, height = header->height, channels = header->channels;
+  const int decoded_bytes_per_sample = header->decoded_bytes_per_sample;
   check_dimensions(width, height, limits.max_dimension, name);
   reserve_texels(limits, width, height, channels, decoded_bytes_per_sample, name);
   TextureImage image;

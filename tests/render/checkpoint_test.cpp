@@ -199,14 +199,14 @@ TEST(Fingerprint, CoversWhatChangesPixelsOnly) {
   EXPECT_NE(image_fingerprint(scene, base), image_fingerprint(moved, base));
   // A normal map changes the image, and so does its scale.
   Scene mapped = scene;
-  mapped.textures.push_back(TextureImage{"bumps", 1, 1, 3, {0.6f, 0.5f, 0.9f}});
+  mapped.textures.push_back(TextureImage{"bumps", 1, 1, 3, {0.6f, 0.5f, 0.9f}, {}});
   mapped.materials[0].normal_texture = 0;
   EXPECT_NE(image_fingerprint(scene, base), image_fingerprint(mapped, base));
   Scene rescaled = mapped;
   rescaled.materials[0].normal_scale = 0.5f;
   EXPECT_NE(image_fingerprint(mapped, base), image_fingerprint(rescaled, base));
   Scene bumped = scene;
-  bumped.textures.push_back(TextureImage{"heights", 1, 1, 1, {0.5f}});
+  bumped.textures.push_back(TextureImage{"heights", 1, 1, 1, {0.5f}, {}});
   bumped.materials[0].bump_texture = 0;
   EXPECT_NE(image_fingerprint(scene, base), image_fingerprint(bumped, base));
 }

@@ -1,6 +1,10 @@
 #pragma once
-// Texture images as loaded: linear floating-point texels (sRGB-encoded colour textures are
-// decoded at load time), with the addressing the material asked for.
+// Texture images as loaded, with the addressing the material asked for. Texels are linear
+// values: floats (HDR and EXR files, 16-bit PNGs, images made in code), or the 8-bit codes
+// of a PNG or JPEG kept as they are and decoded at each lookup through a 256-entry table
+// (the sRGB EOTF for colour textures, code/255 for data textures and alpha), the values
+// decoding them to floats at load time gave, in a quarter of the memory.
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -11,23 +15,58 @@ namespace prism {
 
 enum class TextureWrap : std::uint8_t { repeat, clamp, mirror };
 
+// How 8/16-bit codes map to linear values. Colour textures (base colour, emission) are
+// sRGB-encoded by convention and decoded with the IEC 61966-2-1 EOTF; data textures
+// (roughness/metallic, normals) are linear codes / (2^bits - 1). Float formats (EXR, .hdr)
+// are linear whatever is asked. Alpha is always linear.
+enum class TextureEncoding : std::uint8_t { srgb, linear };
+
+// The linear value of each 8-bit code under `encoding`, rounded to float once.
+const std::array<float, 256>& code_values(TextureEncoding encoding);
+
+// Whether channel `channel` of a `channels`-channel image is alpha (the 2nd of grey+alpha,
+// the 4th of RGBA), which is linear whatever the colour channels' encoding.
+constexpr bool is_alpha_channel(int channel, int channels) {
+  return (channels == 2 || channels == 4) && channel == channels - 1;
+}
+
 struct TextureImage {
   std::string name;  // file name or generated name, for messages and `prism info`
   int width = 0, height = 0;
-  int channels = 0;            // 1 to 4, interleaved
-  std::vector<float> texels;   // linear, width × height × channels, row 0 at the top
+  int channels = 0;  // 1 to 4, interleaved
+  // The texels, width × height × channels, row 0 at the top: `texels` for float images,
+  // `codes` (with `encoding`) for 8-bit ones. One of the two is empty.
+  std::vector<float> texels;
+  std::vector<std::uint8_t> codes;
+  TextureEncoding encoding = TextureEncoding::linear;  // of `codes`
   TextureWrap wrap_u = TextureWrap::repeat, wrap_v = TextureWrap::repeat;
   // KHR_texture_transform / pbrt uv mapping: uv' = offset + scale ⊙ rotate(uv)
   float offset_u = 0.0f, offset_v = 0.0f, scale_u = 1.0f, scale_v = 1.0f, rotation_radians = 0.0f;
 
-  std::size_t memory_bytes() const { return texels.size() * sizeof(float); }
+  bool has_codes() const { return !codes.empty(); }
+  std::size_t sample_count() const { return has_codes() ? codes.size() : texels.size(); }
+  // Sample i (texel i / channels, channel i % channels) as a linear value.
+  float value(std::size_t i) const {
+    if (!has_codes()) return texels[i];
+    const bool alpha = is_alpha_channel(static_cast<int>(i % static_cast<std::size_t>(channels)), channels);
+    return code_values(alpha ? TextureEncoding::linear : encoding)[codes[i]];
+  }
+  // Every sample's linear value, in order (the float texels, or the codes decoded).
+  std::vector<float> linear_values() const;
+  std::size_t memory_bytes() const { return texels.size() * sizeof(float) + codes.size(); }
 };
 
 // Texel (x, y), row 0 at the top, as RGB: grey and grey+alpha images carry their value in
 // the first channel, which stands for all three (alpha is not colour).
 inline Vec3f texel_rgb(const TextureImage& t, int x, int y) {
-  const float* p = &t.texels[(static_cast<std::size_t>(y) * t.width + x) * t.channels];
-  return t.channels >= 3 ? Vec3f(p[0], p[1], p[2]) : Vec3f(p[0]);
+  const std::size_t i = (static_cast<std::size_t>(y) * t.width + x) * t.channels;
+  if (!t.has_codes()) {
+    const float* p = &t.texels[i];
+    return t.channels >= 3 ? Vec3f(p[0], p[1], p[2]) : Vec3f(p[0]);
+  }
+  const std::uint8_t* p = &t.codes[i];
+  const std::array<float, 256>& colour = code_values(t.encoding);  // the first three channels are never alpha
+  return t.channels >= 3 ? Vec3f(colour[p[0]], colour[p[1]], colour[p[2]]) : Vec3f(colour[p[0]]);
 }
 
 }  // namespace prism

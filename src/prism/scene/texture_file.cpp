@@ -40,8 +40,6 @@ void check_dimensions(long width, long height, int max_dimension, std::string_vi
                               max_dimension, max_dimension));
 }
 
-// The float texels stay; the decoder's own buffer of `decoded_bytes_per_sample` codes per
-// sample lives only while decoding.
 // What stb reports of an image from its header: the size, channels and the bytes of each
 // decoded sample (4: Radiance HDR floats, 2: 16-bit PNG, 1: 8-bit). Nothing when the
 // header does not read (stbi_failure_reason says why) or the data is over 2 GiB.
@@ -58,10 +56,13 @@ std::optional<StbHeader> stb_header(std::span<const unsigned char> bytes) {
   return h;
 }
 
+// The texels stay (8-bit codes as they are, anything else as floats); the decoder's own
+// buffer of `decoded_bytes_per_sample` bytes per sample lives only while decoding.
 TextureMemoryNeed texel_memory(long width, long height, int channels, int decoded_bytes_per_sample) {
   const std::uint64_t samples = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) *
                                 static_cast<std::uint64_t>(channels);
-  return {samples * sizeof(float), samples * static_cast<std::uint64_t>(decoded_bytes_per_sample)};
+  const std::uint64_t kept_bytes_per_sample = decoded_bytes_per_sample == 1 ? 1 : sizeof(float);
+  return {samples * kept_bytes_per_sample, samples * static_cast<std::uint64_t>(decoded_bytes_per_sample)};
 }
 
 void reserve_texels(const TextureLimits& limits, long width, long height, int channels, int decoded_bytes_per_sample,
@@ -72,21 +73,19 @@ void reserve_texels(const TextureLimits& limits, long width, long height, int ch
                          fmt::format("texture '{}' ({}x{}, {} channels)", name, width, height, channels));
 }
 
-// Decodes 8- or 16-bit codes to linear floats: colour channels through the sRGB EOTF when
-// asked, alpha (the 2nd of grey+alpha, the 4th of RGBA) always linearly.
-template <typename Code>
-void decode_codes(const Code* codes, TextureImage& image, TextureEncoding encoding) {
-  constexpr double kMaxCode = sizeof(Code) == 1 ? 255.0 : 65535.0;
+// Decodes 16-bit codes to linear floats: colour channels through the sRGB EOTF when asked,
+// alpha always linearly (8-bit codes are kept and decoded at lookup the same way).
+void decode_16_bit_codes(const std::uint16_t* codes, TextureImage& image, TextureEncoding encoding) {
+  constexpr double kMaxCode = 65535.0;
   std::vector<float> lut(static_cast<std::size_t>(kMaxCode) + 1);
   for (std::size_t i = 0; i < lut.size(); ++i) {
     const double v = static_cast<double>(i) / kMaxCode;
     lut[i] = static_cast<float>(encoding == TextureEncoding::srgb ? color::srgb_decode(v) : v);
   }
   const int c = image.channels;
-  const bool has_alpha = c == 2 || c == 4;
   image.texels.resize(static_cast<std::size_t>(image.width) * image.height * c);
   for (std::size_t i = 0; i < image.texels.size(); ++i) {
-    const bool alpha = has_alpha && static_cast<int>(i % c) == c - 1;
+    const bool alpha = is_alpha_channel(static_cast<int>(i % static_cast<std::size_t>(c)), c);
     image.texels[i] = alpha ? static_cast<float>(codes[i] / kMaxCode) : lut[codes[i]];
   }
 }
@@ -275,11 +274,12 @@ TextureImage decode_with_stb(std::span<const unsigned char> bytes, std::string_v
   } else if (decoded_bytes_per_sample == 2) {
     const auto pixels = input.decode(&stbi_load_16_from_callbacks, width, height, channels);
     check(pixels.get());
-    decode_codes(pixels.get(), image, encoding);
+    decode_16_bit_codes(pixels.get(), image, encoding);
   } else {
     const auto pixels = input.decode(&stbi_load_from_callbacks, width, height, channels);
     check(pixels.get());
-    decode_codes(pixels.get(), image, encoding);
+    image.codes.assign(pixels.get(), pixels.get() + static_cast<std::size_t>(width) * height * channels);
+    image.encoding = encoding;
   }
   return image;
 }

@@ -1,7 +1,8 @@
 #pragma once
-// Reading texture images from files or memory into linear floating-point texels.
-// Formats are recognised by their magic bytes, not the file name: PNG and JPEG (stb_image),
-// Radiance .hdr (stb_image's RGBE reader) and OpenEXR (prism::read_exr).
+// Reading texture images from files or memory: 8-bit PNG and JPEG images keep their codes
+// (decoded at lookup, scene/texture.h), 16-bit PNGs are decoded to linear floats, float
+// formats stay floats. Formats are recognised by their magic bytes, not the file name: PNG
+// and JPEG (stb_image), Radiance .hdr (stb_image's RGBE reader) and OpenEXR (prism::read_exr).
 #include <cstddef>
 #include <filesystem>
 #include <optional>
@@ -13,12 +14,6 @@
 
 namespace prism {
 
-// How 8/16-bit codes map to linear values. Colour textures (base colour, emission) are
-// sRGB-encoded by convention and decoded with the IEC 61966-2-1 EOTF at load time; data
-// textures (roughness/metallic, normals) are linear codes / (2^bits - 1). Float formats
-// (EXR, .hdr) are linear whatever is asked. Alpha is always linear.
-enum class TextureEncoding : std::uint8_t { srgb, linear };
-
 enum class ImageFileFormat : std::uint8_t { unknown, png, jpeg, radiance_hdr, openexr };
 
 // Limits checked from an image's header, before its pixels are decoded.
@@ -26,7 +21,7 @@ struct TextureLimits {
   TextureLimits(int max_dimension_ = 32768, MemoryBudget* budget_ = nullptr)  // NOLINT: implicit from int
       : max_dimension(max_dimension_), budget(budget_) {}
   int max_dimension;       // wider or taller images are refused
-  MemoryBudget* budget;    // when set: the float texels (and the decoder's buffer) must fit
+  MemoryBudget* budget;    // when set: the texels (and the decoder's buffer) must fit
 };
 ImageFileFormat detect_image_format(std::span<const unsigned char> head);
 
@@ -42,7 +37,8 @@ TextureImage decode_texture_memory(std::span<const unsigned char> bytes, std::st
                                    TextureEncoding encoding, const TextureLimits& limits);
 
 // What decode_texture_memory reserves from a budget for `bytes`, read from the header: the
-// float texels, and the decoder's codes, held only while it decodes. Nothing when the
+// texels as kept (a byte per sample of an 8-bit image, a float otherwise), and the
+// decoder's buffer, held only while it decodes. Nothing when the
 // header cannot be read (the decode then reports why).
 struct TextureMemoryNeed {
   std::uint64_t texel_bytes = 0, transient_bytes = 0;

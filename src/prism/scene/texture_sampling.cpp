@@ -35,24 +35,58 @@ Vec2f apply_uv_transform(const TextureImage& t, Vec2f uv) {
 
 namespace {
 
-// The texel at wrapped coordinates (xi, yi) ∈ [0, width) × [0, height). Always inlined,
-// like wrap_reduced_coordinate: GCC otherwise calls both out of line from bilinear()'s
-// four sites, and the texel comes back through memory.
-[[gnu::always_inline]] inline TexelRgba texel_at_index(const float* texels, int width, int channels, int xi, int yi) {
-  const float* p = texels + (static_cast<std::size_t>(yi) * width + xi) * channels;
-  switch (channels) {
-    case 1: return {p[0], p[0], p[0], 1.0f};
-    case 2: return {p[0], p[0], p[0], p[1]};
-    case 3: return {p[0], p[1], p[2], 1.0f};
-    default: return {p[0], p[1], p[2], p[3]};
+// The texel at wrapped coordinates (xi, yi) ∈ [0, width) × [0, height) of a float level,
+// or of an 8-bit one through its value tables. Always inlined, like
+// wrap_reduced_coordinate: GCC otherwise calls them out of line from bilinear()'s four
+// sites, and the texel comes back through memory.
+struct FloatTexels {
+  const float* texels;
+  int width, channels;
+  [[gnu::always_inline]] TexelRgba operator()(int xi, int yi) const {
+    const float* p = texels + (static_cast<std::size_t>(yi) * width + xi) * channels;
+    switch (channels) {
+      case 1: return {p[0], p[0], p[0], 1.0f};
+      case 2: return {p[0], p[0], p[0], p[1]};
+      case 3: return {p[0], p[1], p[2], 1.0f};
+      default: return {p[0], p[1], p[2], p[3]};
+    }
   }
+};
+
+struct CodedTexels {
+  const std::uint8_t* codes;
+  int width, channels;
+  const float* colour;  // code → value of the colour channels
+  const float* alpha;   // code → value of alpha (linear)
+  [[gnu::always_inline]] TexelRgba operator()(int xi, int yi) const {
+    const std::uint8_t* p = codes + (static_cast<std::size_t>(yi) * width + xi) * channels;
+    switch (channels) {
+      case 1: return {colour[p[0]], colour[p[0]], colour[p[0]], 1.0f};
+      case 2: return {colour[p[0]], colour[p[0]], colour[p[0]], alpha[p[1]]};
+      case 3: return {colour[p[0]], colour[p[1]], colour[p[2]], 1.0f};
+      default: return {colour[p[0]], colour[p[1]], colour[p[2]], alpha[p[3]]};
+    }
+  }
+};
+
+// Calls f with the level's texel reader.
+template <class F>
+[[gnu::always_inline]] inline TexelRgba with_texels(const MipLevel& level, int channels, F&& f) {
+  if (level.has_codes())
+    return f(CodedTexels{level.code_data(), level.width, channels, level.colour_values,
+                         code_values(TextureEncoding::linear).data()});
+  return f(FloatTexels{level.data(), level.width, channels});
 }
 
-TexelRgba fetch(const float* texels, int width, int height, int channels, int x, int y, TextureWrap wrap_u,
-                TextureWrap wrap_v) {
-  return texel_at_index(texels, width, channels, wrap_texel_coordinate(x, width, wrap_u),
-                        wrap_texel_coordinate(y, height, wrap_v));
+// The same for a texture image's own texels.
+template <class F>
+[[gnu::always_inline]] inline TexelRgba with_texels(const TextureImage& t, F&& f) {
+  if (t.has_codes())
+    return f(CodedTexels{t.codes.data(), t.width, t.channels, code_values(t.encoding).data(),
+                         code_values(TextureEncoding::linear).data()});
+  return f(FloatTexels{t.texels.data(), t.width, t.channels});
 }
+
 
 // std::floor without its libm call (the baseline x86-64 build has no SSE4.1 round
 // instruction), exact for every double: a magnitude ≥ 2^52 is an integer already, and
@@ -85,8 +119,8 @@ int reduce_coordinate(double i, int size, TextureWrap wrap) {
   return i < size ? i : 2 * size - 1 - i;  // mirror
 }
 
-TexelRgba bilinear(const float* texels, int width, int height, int channels, Vec2f uv, TextureWrap wrap_u,
-                   TextureWrap wrap_v) {
+template <class Texels>
+TexelRgba bilinear(const Texels& texel, int width, int height, Vec2f uv, TextureWrap wrap_u, TextureWrap wrap_v) {
   if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = {0.0f, 0.0f};
   // Texel centres sit at half-integers: shift so that integer coordinates are centres.
   const double x = static_cast<double>(uv.x) * width - 0.5, y = static_cast<double>(uv.y) * height - 0.5;
@@ -96,10 +130,10 @@ TexelRgba bilinear(const float* texels, int width, int height, int channels, Vec
   // Each column and row wrapped once, not once per texel.
   const int x_lo = wrap_reduced_coordinate(ix, width, wrap_u), x_hi = wrap_reduced_coordinate(ix + 1, width, wrap_u);
   const int y_lo = wrap_reduced_coordinate(iy, height, wrap_v), y_hi = wrap_reduced_coordinate(iy + 1, height, wrap_v);
-  const TexelRgba a = texel_at_index(texels, width, channels, x_lo, y_lo);
-  const TexelRgba b = texel_at_index(texels, width, channels, x_hi, y_lo);
-  const TexelRgba c = texel_at_index(texels, width, channels, x_lo, y_hi);
-  const TexelRgba d = texel_at_index(texels, width, channels, x_hi, y_hi);
+  const TexelRgba a = texel(x_lo, y_lo);
+  const TexelRgba b = texel(x_hi, y_lo);
+  const TexelRgba c = texel(x_lo, y_hi);
+  const TexelRgba d = texel(x_hi, y_hi);
   TexelRgba r;
   for (int k = 0; k < 4; ++k) r[k] = (1 - fy) * ((1 - fx) * a[k] + fx * b[k]) + fy * ((1 - fx) * c[k] + fx * d[k]);
   return r;
@@ -108,46 +142,135 @@ TexelRgba bilinear(const float* texels, int width, int height, int channels, Vec
 }  // namespace
 
 TexelRgba texel_fetch(const MipLevel& level, int channels, int x, int y, TextureWrap wrap_u, TextureWrap wrap_v) {
-  return fetch(level.data(), level.width, level.height, channels, x, y, wrap_u, wrap_v);
+  const int xi = wrap_texel_coordinate(x, level.width, wrap_u), yi = wrap_texel_coordinate(y, level.height, wrap_v);
+  return with_texels(level, channels, [&](const auto& texel) { return texel(xi, yi); });
 }
 
 TexelRgba sample_bilinear(const MipLevel& level, int channels, Vec2f uv, TextureWrap wrap_u, TextureWrap wrap_v) {
-  return bilinear(level.data(), level.width, level.height, channels, uv, wrap_u, wrap_v);
+  return with_texels(level, channels, [&](const auto& texel) {
+    return bilinear(texel, level.width, level.height, uv, wrap_u, wrap_v);
+  });
 }
 
 TexelRgba sample_bilinear(const TextureImage& texture, Vec2f uv) {
-  return bilinear(texture.texels.data(), texture.width, texture.height, texture.channels,
-                  apply_uv_transform(texture, uv), texture.wrap_u, texture.wrap_v);
+  const Vec2f st = apply_uv_transform(texture, uv);
+  return with_texels(texture, [&](const auto& texel) {
+    return bilinear(texel, texture.width, texture.height, st, texture.wrap_u, texture.wrap_v);
+  });
 }
+
+namespace {
+
+// One box-filtered level below a fine one of fine_width × fine_height texels whose texel t
+// has the linear value fine(t, k) in channel k: linear values, channels per texel.
+template <class FineValue>
+std::vector<float> box_filter_level(const FineValue& fine, int fine_width, int fine_height, int coarse_width,
+                                    int coarse_height, int c) {
+  std::vector<float> coarse(static_cast<std::size_t>(coarse_width) * coarse_height * c, 0.0f);
+  for (int y = 0; y < coarse_height; ++y) {
+    // Fine rows covered by coarse row y: 2y, 2y+1, and 2y+2 for the last row of an odd size.
+    const int y_begin = std::min(2 * y, fine_height - 1);
+    const int y_end = (y == coarse_height - 1) ? fine_height : std::min(2 * y + 2, fine_height);
+    for (int x = 0; x < coarse_width; ++x) {
+      const int x_begin = std::min(2 * x, fine_width - 1);
+      const int x_end = (x == coarse_width - 1) ? fine_width : std::min(2 * x + 2, fine_width);
+      float* out = coarse.data() + (static_cast<std::size_t>(y) * coarse_width + x) * c;
+      for (int fy = y_begin; fy < y_end; ++fy)
+        for (int fx = x_begin; fx < x_end; ++fx)
+          for (int k = 0; k < c; ++k) out[k] += fine(static_cast<std::size_t>(fy) * fine_width + fx, k);
+      const float n = static_cast<float>((y_end - y_begin) * (x_end - x_begin));
+      for (int k = 0; k < c; ++k) out[k] /= n;
+    }
+  }
+  return coarse;
+}
+
+// The code whose value (in `values`, ascending from 0 to 1) is nearest to v: the number of
+// midpoints between consecutive values at or below v, found from a table of that number
+// at multiples of 1/kBuckets (a bucket holds a few midpoints at most: the sRGB values are
+// densest near 0, 1/(255 · 12.92) apart), then settled against its neighbours, since a
+// midpoint rounded to float can put a v within an ulp of it on the wrong side.
+struct NearestCode {
+  static constexpr int kBuckets = 1024;
+  const std::array<float, 256>& values;
+  std::array<float, 255> midpoints{};
+  std::array<std::uint8_t, kBuckets> first{};  // midpoints at or below bucket / kBuckets
+  explicit NearestCode(const std::array<float, 256>& values_) : values(values_) {
+    for (std::size_t k = 0; k < midpoints.size(); ++k) midpoints[k] = 0.5f * (values[k] + values[k + 1]);
+    for (int b = 0; b < kBuckets; ++b) {
+      const float v = static_cast<float>(b) / kBuckets;
+      first[static_cast<std::size_t>(b)] =
+          static_cast<std::uint8_t>(std::upper_bound(midpoints.begin(), midpoints.end(), v) - midpoints.begin());
+    }
+  }
+  std::uint8_t operator()(float v) const {
+    if (!(v > 0.0f)) return 0;  // and NaN
+    if (v >= 1.0f) return 255;
+    std::size_t k = first[static_cast<std::size_t>(v * kBuckets)];
+    while (k < midpoints.size() && midpoints[k] <= v) ++k;
+    const auto error = [&](std::size_t code) { return std::abs(values[code] - v); };
+    if (k > 0 && error(k - 1) < error(k)) --k;
+    if (k < 255 && error(k + 1) < error(k)) ++k;
+    return static_cast<std::uint8_t>(k);
+  }
+};
+
+}  // namespace
 
 MipPyramid build_mip_pyramid(const TextureImage& texture) {
   MipPyramid pyramid;
-  pyramid.channels = texture.channels;
+  const int c = texture.channels;
+  pyramid.channels = c;
   pyramid.wrap_u = texture.wrap_u;
   pyramid.wrap_v = texture.wrap_v;
-  pyramid.levels.push_back({texture.width, texture.height, {}, texture.texels.data()});
-  const int c = texture.channels;
+  MipLevel base;
+  base.width = texture.width;
+  base.height = texture.height;
+  if (!texture.has_codes()) {
+    base.borrowed = texture.texels.data();
+    pyramid.levels.push_back(std::move(base));
+    while (pyramid.levels.back().width > 1 || pyramid.levels.back().height > 1) {
+      const MipLevel& fine = pyramid.levels.back();
+      const float* values = fine.data();
+      MipLevel coarse;
+      coarse.width = std::max(1, fine.width / 2);
+      coarse.height = std::max(1, fine.height / 2);
+      coarse.texels = box_filter_level([values, c](std::size_t t, int k) { return values[t * c + k]; }, fine.width,
+                                       fine.height, coarse.width, coarse.height, c);
+      pyramid.levels.push_back(std::move(coarse));
+    }
+    return pyramid;
+  }
+  // 8-bit: each level is filtered from the unrounded values of the one above (level 0's
+  // decoded codes), then rounded to codes; alpha by its own (linear) table.
+  const std::array<float, 256>& colour = code_values(texture.encoding);
+  const std::array<float, 256>& linear = code_values(TextureEncoding::linear);
+  const NearestCode nearest_colour(colour), nearest_linear(linear);
+  std::array<const float*, 4> channel_values{};  // per channel: its code → value table
+  for (int k = 0; k < c; ++k)
+    channel_values[static_cast<std::size_t>(k)] = is_alpha_channel(k, c) ? linear.data() : colour.data();
+  const std::uint8_t* codes = texture.codes.data();
+  base.borrowed_codes = codes;
+  base.colour_values = colour.data();
+  pyramid.levels.push_back(std::move(base));
+  std::vector<float> fine_values;  // the unrounded values of the level above, below level 0
   while (pyramid.levels.back().width > 1 || pyramid.levels.back().height > 1) {
     const MipLevel& fine = pyramid.levels.back();
     MipLevel coarse;
     coarse.width = std::max(1, fine.width / 2);
     coarse.height = std::max(1, fine.height / 2);
-    coarse.texels.assign(static_cast<std::size_t>(coarse.width) * coarse.height * c, 0.0f);
-    for (int y = 0; y < coarse.height; ++y) {
-      // Fine rows covered by coarse row y: 2y, 2y+1, and 2y+2 for the last row of an odd size.
-      const int y_begin = std::min(2 * y, fine.height - 1);
-      const int y_end = (y == coarse.height - 1) ? fine.height : std::min(2 * y + 2, fine.height);
-      for (int x = 0; x < coarse.width; ++x) {
-        const int x_begin = std::min(2 * x, fine.width - 1);
-        const int x_end = (x == coarse.width - 1) ? fine.width : std::min(2 * x + 2, fine.width);
-        float* out = coarse.texels.data() + (static_cast<std::size_t>(y) * coarse.width + x) * c;
-        for (int fy = y_begin; fy < y_end; ++fy)
-          for (int fx = x_begin; fx < x_end; ++fx)
-            for (int k = 0; k < c; ++k) out[k] += fine.data()[(static_cast<std::size_t>(fy) * fine.width + fx) * c + k];
-        const float n = static_cast<float>((y_end - y_begin) * (x_end - x_begin));
-        for (int k = 0; k < c; ++k) out[k] /= n;
-      }
-    }
+    std::vector<float> values =
+        fine_values.empty()
+            ? box_filter_level([&](std::size_t t, int k) { return channel_values[k][codes[t * c + k]]; }, fine.width,
+                               fine.height, coarse.width, coarse.height, c)
+            : box_filter_level([&](std::size_t t, int k) { return fine_values[t * c + k]; }, fine.width, fine.height,
+                               coarse.width, coarse.height, c);
+    coarse.codes.resize(values.size());
+    for (std::size_t t = 0; t < values.size(); t += static_cast<std::size_t>(c))
+      for (int k = 0; k < c; ++k)
+        coarse.codes[t + k] = is_alpha_channel(k, c) ? nearest_linear(values[t + k]) : nearest_colour(values[t + k]);
+    coarse.colour_values = colour.data();
+    fine_values = std::move(values);
     pyramid.levels.push_back(std::move(coarse));
   }
   return pyramid;

@@ -8,6 +8,7 @@
 // ((x + ½)/width, (y + ½)/height). The texture's uv transform (offset, scale, rotation) is
 // applied by apply_uv_transform, not by the samplers.
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "prism/core/vec.h"
@@ -18,11 +19,21 @@ namespace prism {
 // Grey expands to (g, g, g, 1), grey+alpha to (g, g, g, a), RGB to (r, g, b, 1).
 using TexelRgba = std::array<float, 4>;
 
+// One level of a pyramid, in its image's storage: floats, or 8-bit codes (then
+// `colour_values` is set: the code → linear value table of its colour channels; alpha is
+// decoded linearly, as in TextureImage).
 struct MipLevel {
   int width = 0, height = 0;
   std::vector<float> texels;        // channels per texel, as in TextureImage; empty where borrowed
   const float* borrowed = nullptr;  // level 0 of a pyramid: its TextureImage's texels, not copied
+  std::vector<std::uint8_t> codes;  // the same for 8-bit levels
+  const std::uint8_t* borrowed_codes = nullptr;
+  const float* colour_values = nullptr;
   const float* data() const { return borrowed != nullptr ? borrowed : texels.data(); }
+  const std::uint8_t* code_data() const { return borrowed_codes != nullptr ? borrowed_codes : codes.data(); }
+  bool has_codes() const { return colour_values != nullptr; }
+  // Bytes this level holds itself (a borrowed level 0 holds none).
+  std::size_t owned_bytes() const { return texels.size() * sizeof(float) + codes.size(); }
 };
 
 struct MipPyramid {
@@ -43,8 +54,11 @@ TexelRgba sample_bilinear(const TextureImage& texture, Vec2f uv);
 // Each level halves the previous one's size (rounding down, at least 1) and averages the
 // 2×2 texels it covers (a box filter). With an odd size the last coarse texel averages the
 // three fine texels left over, so no texel is dropped. Level 0 is the texture's own
-// texels, borrowed rather than copied (a 2048² RGB texture is 48 MB), so the pyramid must
-// not outlive the texture; a temporary is refused at compile time.
+// texels, borrowed rather than copied (a 2048² RGB texture is 12 MB of codes, or 48 MB
+// of floats), so the pyramid must not outlive the texture; a temporary is refused at
+// compile time. The levels of an 8-bit image are 8-bit too, as on GPUs: each is averaged
+// from the unrounded linear values of the level above and stored as the code whose value
+// is nearest (within half a code step of the average: 0.2 % of full scale, linear).
 MipPyramid build_mip_pyramid(const TextureImage& texture);
 MipPyramid build_mip_pyramid(TextureImage&& texture) = delete;
 

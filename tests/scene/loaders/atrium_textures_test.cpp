@@ -39,8 +39,8 @@ const TriangleMesh* foliage_mesh(const Scene& scene) {
 
 TEST(AtriumTextures, SizedDeterministicAndTheLeafMaskIsBinary) {
   const TextureImage floor = make_floor_tile_texture(), wall = make_wall_block_texture(), leaf = make_leaf_texture();
-  EXPECT_EQ(floor.texels, make_floor_tile_texture().texels);
-  EXPECT_EQ(leaf.texels, make_leaf_texture().texels);
+  EXPECT_EQ(floor.linear_values(), make_floor_tile_texture().linear_values());
+  EXPECT_EQ(leaf.linear_values(), make_leaf_texture().linear_values());
   EXPECT_EQ(floor.width, 512);
   EXPECT_EQ(floor.channels, 3);
   EXPECT_EQ(wall.width, 512);
@@ -50,7 +50,7 @@ TEST(AtriumTextures, SizedDeterministicAndTheLeafMaskIsBinary) {
   std::size_t opaque = 0;
   for (int y = 0; y < leaf.height; ++y)
     for (int x = 0; x < leaf.width; ++x) {
-      const float a = leaf.texels[(static_cast<std::size_t>(y) * leaf.width + x) * 4 + 3];
+      const float a = leaf.value((static_cast<std::size_t>(y) * leaf.width + x) * 4 + 3);
       ASSERT_TRUE(a == 0.0f || a == 1.0f) << x << "," << y;
       if (x == 0 || y == 0 || x == leaf.width - 1 || y == leaf.height - 1) {
         EXPECT_EQ(a, 0.0f) << "border " << x << "," << y;
@@ -62,7 +62,7 @@ TEST(AtriumTextures, SizedDeterministicAndTheLeafMaskIsBinary) {
   EXPECT_GT(coverage, 0.1);
   EXPECT_LT(coverage, 0.6);
   // Tiles vary: the mean colour of two tiles of the same kind differs.
-  const auto texel = [&](int x, int y, int c) { return floor.texels[(static_cast<std::size_t>(y) * 512 + x) * 3 + c]; };
+  const auto texel = [&](int x, int y, int c) { return floor.value((static_cast<std::size_t>(y) * 512 + x) * 3 + c); };
   EXPECT_NE(texel(64, 64, 0), texel(64 + 256, 64, 0));
 }
 
@@ -105,7 +105,8 @@ TEST(AtriumRoundTrip, TexturesAndCutOutsSurviveEveryFormat) {
       EXPECT_EQ(loaded.textures[i].width, original.textures[i].width) << i;
       EXPECT_EQ(loaded.textures[i].height, original.textures[i].height) << i;
       EXPECT_EQ(loaded.textures[i].channels, original.textures[i].channels) << i;
-      EXPECT_TRUE(loaded.textures[i].texels == original.textures[i].texels) << "texture " << i << " changed";
+      EXPECT_TRUE(loaded.textures[i].linear_values() == original.textures[i].linear_values())
+          << "texture " << i << " changed";
     }
     const TriangleMesh* foliage = foliage_mesh(loaded);
     ASSERT_NE(foliage, nullptr);
@@ -118,7 +119,7 @@ TEST(AtriumRoundTrip, TexturesAndCutOutsSurviveEveryFormat) {
     ASSERT_GE(m.base_color_texture, 0);
     const TextureImage& t = loaded.textures[static_cast<std::size_t>(m.base_color_texture)];
     ASSERT_EQ(t.channels, 4);
-    EXPECT_TRUE(t.texels == leaf.texels) << "the foliage texture is not the leaf's RGBA";
+    EXPECT_TRUE(t.linear_values() == leaf.linear_values()) << "the foliage texture is not the leaf's RGBA";
     // The cards keep their corners and uvs (pbrt-v4: written as v_pbrt = 1 − v, read back).
     const TriangleMesh& cards = *foliage_mesh(original);
     ASSERT_EQ(foliage->positions.size(), cards.positions.size());
@@ -177,7 +178,7 @@ TEST(AtriumRoundTrip, RaysPassTransparentLeafTexelsInEveryFormat) {
     const std::uint32_t* v = foliage->indices.data();  // triangle 0
     const Vec3f p[3] = {foliage->positions[v[0]], foliage->positions[v[1]], foliage->positions[v[2]]};
     const Vec2f uv[3] = {foliage->uvs[v[0]], foliage->uvs[v[1]], foliage->uvs[v[2]]};
-    const auto alpha = [&](int x, int y) { return t.texels[(static_cast<std::size_t>(y) * t.width + x) * 4 + 3]; };
+    const auto alpha = [&](int x, int y) { return t.value((static_cast<std::size_t>(y) * t.width + x) * 4 + 3); };
     std::optional<Vec2f> through[2];  // barycentrics at a transparent [0] and an opaque [1] texel
     for (int y = 1; y + 1 < t.height; ++y)
       for (int x = 1; x + 1 < t.width; ++x) {

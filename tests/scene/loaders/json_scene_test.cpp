@@ -214,8 +214,8 @@ TEST(JsonScene, LoadsAFileWithASharedTextureOnce) {
   ASSERT_EQ(scene.textures.size(), 1u);
   EXPECT_EQ(scene.materials[0].base_color_texture, 0);
   EXPECT_EQ(scene.materials[1].base_color_texture, 0);
-  EXPECT_FLOAT_EQ(scene.textures[0].texels[0], 1.0f);
-  EXPECT_FLOAT_EQ(scene.textures[0].texels[3], 0.0f);
+  EXPECT_FLOAT_EQ(scene.textures[0].value(0), 1.0f);
+  EXPECT_FLOAT_EQ(scene.textures[0].value(3), 0.0f);
 }
 
 TEST(JsonScene, NormalAndBumpTexturesAreLinearWithScales) {
@@ -230,8 +230,8 @@ TEST(JsonScene, NormalAndBumpTexturesAreLinearWithScales) {
   ASSERT_GE(m.bump_texture, 0);
   EXPECT_FLOAT_EQ(m.normal_scale, 0.25f);
   EXPECT_FLOAT_EQ(m.bump_scale, 0.02f);
-  EXPECT_FLOAT_EQ(scene.textures[static_cast<std::size_t>(m.normal_texture)].texels[0], 128.0f / 255.0f);  // linear
-  EXPECT_FLOAT_EQ(scene.textures[static_cast<std::size_t>(m.bump_texture)].texels[0], 128.0f / 255.0f);
+  EXPECT_FLOAT_EQ(scene.textures[static_cast<std::size_t>(m.normal_texture)].value(0), 128.0f / 255.0f);  // linear
+  EXPECT_FLOAT_EQ(scene.textures[static_cast<std::size_t>(m.bump_texture)].value(0), 128.0f / 255.0f);
   dir.write("grey.json", quad_scene(R"(, "normal_texture": "grey.png")"));
   const std::string message = error_of<SceneError>([&] { load_scene((dir / "grey.json").string()); });
   EXPECT_NE(message.find("materials[0].normal_texture"), std::string::npos) << message;

@@ -90,8 +90,8 @@ TEST(ObjLoader, MapsMtlParametersToMaterials) {
   EXPECT_FLOAT_EQ(m[5].opacity, 0.25f);
   ASSERT_EQ(m[5].base_color_texture, 0);
   ASSERT_EQ(scene.textures.size(), 1u);
-  EXPECT_FLOAT_EQ(scene.textures[0].texels[0], 1.0f);
-  EXPECT_NEAR(scene.textures[0].texels[1], 0.2158605f, 1e-6f);  // sRGB 128 decoded
+  EXPECT_FLOAT_EQ(scene.textures[0].value(0), 1.0f);
+  EXPECT_NEAR(scene.textures[0].value(1), 0.2158605f, 1e-6f);  // sRGB 128 decoded
 }
 
 // bump / map_Bump is a height map (linear) times its -bm multiplier; norm a tangent-space
@@ -107,9 +107,9 @@ TEST(ObjLoader, BumpAndNormalMapsFromMtl) {
   const Material& bumpy = scene.materials[0];
   ASSERT_GE(bumpy.bump_texture, 0);
   EXPECT_FLOAT_EQ(bumpy.bump_scale, 0.25f);
-  EXPECT_FLOAT_EQ(scene.textures[static_cast<std::size_t>(bumpy.bump_texture)].texels[0], 128.0f / 255.0f);  // linear
+  EXPECT_FLOAT_EQ(scene.textures[static_cast<std::size_t>(bumpy.bump_texture)].value(0), 128.0f / 255.0f);  // linear
   ASSERT_GE(bumpy.normal_texture, 0);
-  EXPECT_FLOAT_EQ(scene.textures[static_cast<std::size_t>(bumpy.normal_texture)].texels[2], 1.0f);
+  EXPECT_FLOAT_EQ(scene.textures[static_cast<std::size_t>(bumpy.normal_texture)].value(2), 1.0f);
   EXPECT_EQ(scene.materials[1].bump_texture, bumpy.bump_texture);  // one file, one texture
   EXPECT_FLOAT_EQ(scene.materials[1].bump_scale, 1.0f);
   for (const std::string& w : scene.warnings) {

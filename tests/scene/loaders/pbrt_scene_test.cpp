@@ -154,7 +154,7 @@ TEST(PbrtLoader, NormalMapIsALinearRgbImage) {
   const Scene s = load_pbrt_scene(scene);
   const Material& m = s.materials[s.meshes[0].material];
   ASSERT_GE(m.normal_texture, 0);
-  EXPECT_FLOAT_EQ(s.textures[static_cast<std::size_t>(m.normal_texture)].texels[1], 64.0f / 255.0f);
+  EXPECT_FLOAT_EQ(s.textures[static_cast<std::size_t>(m.normal_texture)].value(1), 64.0f / 255.0f);
   for (const std::string& w : s.warnings) EXPECT_EQ(w.find("normalmap"), std::string::npos) << w;
   const auto grey = dir.write(
       "grey.pbrt", "WorldBegin\n\nMaterial \"diffuse\" \"string normalmap\" \"grey.png\"\n" + std::string(kTriangle));
@@ -176,7 +176,7 @@ TEST(PbrtLoader, DisplacementIsABumpMap) {
   const Material& m = s.materials[s.meshes[0].material];
   ASSERT_GE(m.bump_texture, 0);
   EXPECT_FLOAT_EQ(m.bump_scale, 0.05f);
-  EXPECT_FLOAT_EQ(s.textures[static_cast<std::size_t>(m.bump_texture)].texels[0], 128.0f / 255.0f);
+  EXPECT_FLOAT_EQ(s.textures[static_cast<std::size_t>(m.bump_texture)].value(0), 128.0f / 255.0f);
   for (const std::string& w : s.warnings) EXPECT_EQ(w.find("displacement"), std::string::npos) << w;
   const std::string flat = "WorldBegin\nMaterial \"diffuse\" \"float displacement\" 0.1\n";
   const Scene constant = parse(flat + std::string(kTriangle));

@@ -20,16 +20,21 @@ TEST(TextureFile, PngDecodesSrgbColourAndLinearAlpha) {
   const TextureImage srgb = read_texture_file(dir / "a.png", TextureEncoding::srgb, 32768);
   ASSERT_EQ(srgb.channels, 4);
   EXPECT_EQ(srgb.width, 2);
-  EXPECT_FLOAT_EQ(srgb.texels[0], 0.0f);
-  EXPECT_NEAR(srgb.texels[1], 0.2158605f, 1e-6f);  // IEC 61966-2-1 decode of 128/255
-  EXPECT_FLOAT_EQ(srgb.texels[2], 1.0f);
-  EXPECT_NEAR(srgb.texels[3], 128.0f / 255.0f, 1e-7f);  // alpha is linear
+  EXPECT_FLOAT_EQ(srgb.value(0), 0.0f);
+  EXPECT_NEAR(srgb.value(1), 0.2158605f, 1e-6f);  // IEC 61966-2-1 decode of 128/255
+  EXPECT_FLOAT_EQ(srgb.value(2), 1.0f);
+  EXPECT_NEAR(srgb.value(3), 128.0f / 255.0f, 1e-7f);  // alpha is linear
+  // 8-bit images keep their codes (a quarter of the floats' memory), decoded at lookup.
+  EXPECT_EQ(srgb.codes, (std::vector<std::uint8_t>{0, 128, 255, 128, 255, 255, 255, 0}));
+  EXPECT_TRUE(srgb.texels.empty());
+  EXPECT_EQ(srgb.memory_bytes(), 8u);
   const TextureImage linear = read_texture_file(dir / "a.png", TextureEncoding::linear, 32768);
-  EXPECT_NEAR(linear.texels[1], 128.0f / 255.0f, 1e-7f);
+  EXPECT_NEAR(linear.value(1), 128.0f / 255.0f, 1e-7f);
   // 16-bit PNGs keep their precision.
   write_png(dir / "b.png", EncodedImage{1, 1, 1, 16, {32768}});
   const TextureImage sixteen = read_texture_file(dir / "b.png", TextureEncoding::linear, 32768);
-  EXPECT_NEAR(sixteen.texels[0], 32768.0f / 65535.0f, 1e-7f);
+  EXPECT_NEAR(sixteen.value(0), 32768.0f / 65535.0f, 1e-7f);
+  EXPECT_FALSE(sixteen.has_codes());
 }
 
 TEST(TextureFile, RadianceHdrAndExrAreLinearFloats) {
@@ -41,12 +46,12 @@ TEST(TextureFile, RadianceHdrAndExrAreLinearFloats) {
   dir.write("a.hdr", hdr);
   const TextureImage h = read_texture_file(dir / "a.hdr", TextureEncoding::srgb, 32768);
   ASSERT_EQ(h.channels, 3);
-  EXPECT_NEAR(h.texels[0], 1.0f, 1e-6f);
-  EXPECT_NEAR(h.texels[1], 0.5f, 1e-6f);
-  EXPECT_NEAR(h.texels[2], 0.25f, 1e-6f);
+  EXPECT_NEAR(h.value(0), 1.0f, 1e-6f);
+  EXPECT_NEAR(h.value(1), 0.5f, 1e-6f);
+  EXPECT_NEAR(h.value(2), 0.25f, 1e-6f);
   write_exr(dir / "a.exr", ImageRgbF{1, 1, {2.0f, 3.0f, 4.0f}}, kRec709);
   const TextureImage e = read_texture_file(dir / "a.exr", TextureEncoding::srgb, 32768);
-  EXPECT_EQ(e.texels, (std::vector<float>{2.0f, 3.0f, 4.0f}));
+  EXPECT_EQ(e.linear_values(), (std::vector<float>{2.0f, 3.0f, 4.0f}));
 }
 
 TEST(TextureFile, RefusesImagesLargerThanTheLimitBeforeDecoding) {
@@ -84,8 +89,12 @@ TEST(TextureFile, TexelsBeyondTheMemoryBudgetAreRefusedFromTheHeader) {
   EXPECT_NE(message.find("bomb.png' (8000x8000, 3 channels) needs"), std::string::npos) << message;
   EXPECT_NE(message.find("more than the memory limit of 256 MiB"), std::string::npos) << message;
   EXPECT_EQ(budget.used_bytes(), 0u);
+  // An 8-bit image keeps its codes: a byte per sample; a 16-bit one floats.
   read_texture_file(dir / "small.png", TextureEncoding::srgb, {32768, &budget});
-  EXPECT_EQ(budget.used_bytes(), 2u * 2u * 3u * sizeof(float));
+  EXPECT_EQ(budget.used_bytes(), 2u * 2u * 3u);
+  write_png(dir / "deep.png", EncodedImage{2, 2, 3, 16, {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12}});
+  read_texture_file(dir / "deep.png", TextureEncoding::srgb, {32768, &budget});
+  EXPECT_EQ(budget.used_bytes(), 2u * 2u * 3u + 2u * 2u * 3u * sizeof(float));
 }
 
 TEST(MemoryBudget, AccountsAndRefusesBeyondTheLimit) {
@@ -232,8 +241,8 @@ TEST(TextureFile, PngWithAnEmptyIdatChunkIsReadWithoutIt) {
   const std::size_t idat = bytes.find("IDAT") - 4;
   bytes.insert(idat, std::string("\x00\x00\x00\x00IDAT\x35\xaf\x06\x1e", 12));  // CRC-32 of "IDAT"
   dir.write("empty_idat.png", bytes);
-  EXPECT_EQ(read_texture_file(dir / "empty_idat.png", TextureEncoding::linear, 32768).texels,
-            read_texture_file(dir / "a.png", TextureEncoding::linear, 32768).texels);
+  EXPECT_EQ(read_texture_file(dir / "empty_idat.png", TextureEncoding::linear, 32768).linear_values(),
+            read_texture_file(dir / "a.png", TextureEncoding::linear, 32768).linear_values());
 }
 
 TEST(TextureFile, PngChunkHeaderAtTheEndOfTheFileIsCheckedToo) {

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <numbers>
 
+#include "prism/color/transfer_functions.h"
 #include "prism/scene/texture_sampling.h"
 
 namespace prism {
@@ -92,7 +93,9 @@ TEST(TextureSampling, BilinearMatchesItsDefinitionBitForBit) {
   int compared = 0;
   for (const auto& size : sizes)
     for (int channels = 1; channels <= 4; ++channels) {
-      MipLevel level{size[0], size[1], {}};
+      MipLevel level;
+      level.width = size[0];
+      level.height = size[1];
       for (int i = 0; i < size[0] * size[1] * channels; ++i)
         level.texels.push_back(static_cast<float>(i * 7 % 13) + 0.25f);
       for (TextureWrap wrap_u : modes)
@@ -192,6 +195,95 @@ TEST(TextureSampling, TrilinearBlendsNeighbouringLevels) {
   EXPECT_FLOAT_EQ(sample_trilinear(p, centre_of_texel_0, 0.5f)[0], 0.25f);
   EXPECT_FLOAT_EQ(sample_trilinear(p, centre_of_texel_0, 9.0f)[0], 0.5f);   // clamped to the coarsest
   EXPECT_FLOAT_EQ(sample_trilinear(p, centre_of_texel_0, -3.0f)[0], 0.0f);  // and the finest
+}
+
+// An 8-bit image of `channels` channels with a pseudo-random pattern of codes, and the
+// same image as the floats its codes decode to.
+TextureImage coded_image(int width, int height, int channels, TextureEncoding encoding, std::uint32_t seed) {
+  TextureImage t;
+  t.width = width;
+  t.height = height;
+  t.channels = channels;
+  t.encoding = encoding;
+  std::uint32_t state = seed;
+  for (int i = 0; i < width * height * channels; ++i) {
+    state = state * 1664525u + 1013904223u;
+    t.codes.push_back(static_cast<std::uint8_t>(state >> 24));
+  }
+  return t;
+}
+
+TextureImage as_floats(const TextureImage& coded) {
+  TextureImage t = coded;
+  t.texels = coded.linear_values();
+  t.codes.clear();
+  return t;
+}
+
+// Lookups in an image kept as 8-bit codes give bitwise what the floats they decode to give
+// (the decode tables are the load-time decoder's), colour channels through the sRGB EOTF
+// and alpha linearly.
+TEST(TextureSampling, EightBitImagesSampleAsTheirDecodedFloats) {
+  for (const TextureEncoding encoding : {TextureEncoding::srgb, TextureEncoding::linear})
+    for (int channels = 1; channels <= 4; ++channels) {
+      const TextureImage coded = coded_image(7, 5, channels, encoding, 17u + static_cast<std::uint32_t>(channels));
+      const TextureImage floats = as_floats(coded);
+      for (int i = 0; i < 7 * 5 * channels; ++i) {
+        const bool alpha = (channels == 2 || channels == 4) && i % channels == channels - 1;
+        const double v = coded.codes[static_cast<std::size_t>(i)] / 255.0;
+        const double expected = (alpha || encoding == TextureEncoding::linear) ? v : color::srgb_decode(v);
+        ASSERT_EQ(coded.value(static_cast<std::size_t>(i)), static_cast<float>(expected)) << i;
+      }
+      for (int y = 0; y < 5; ++y)
+        for (int x = 0; x < 7; ++x) ASSERT_EQ(texel_rgb(coded, x, y), texel_rgb(floats, x, y)) << x << " " << y;
+      const MipPyramid coded_pyramid = build_mip_pyramid(coded), float_pyramid = build_mip_pyramid(floats);
+      for (int n = 0; n < 200; ++n) {
+        const Vec2f uv{static_cast<float>(n % 23) / 9.0f - 0.7f, static_cast<float>(n % 19) / 7.0f - 0.4f};
+        ASSERT_EQ(sample_bilinear(coded, uv), sample_bilinear(floats, uv)) << n;
+        ASSERT_EQ(sample_trilinear(coded_pyramid, uv, 0.0f), sample_trilinear(float_pyramid, uv, 0.0f)) << n;
+        ASSERT_EQ(texel_fetch(coded_pyramid.levels[0], channels, n % 9 - 1, n % 6, TextureWrap::repeat,
+                              TextureWrap::mirror),
+                  texel_fetch(float_pyramid.levels[0], channels, n % 9 - 1, n % 6, TextureWrap::repeat,
+                              TextureWrap::mirror))
+            << n;
+      }
+    }
+}
+
+// The levels of an 8-bit image are 8-bit, level 0 borrowed from the image; every texel of
+// a coarser level is the code whose value is nearest to the box filter's exact average,
+// i.e. to the float pyramid of the decoded image (whose levels are each averaged from the
+// unrounded level above, as the 8-bit pyramid's are).
+TEST(TextureSampling, EightBitLevelsHoldTheCodeNearestTheAverage) {
+  for (const TextureEncoding encoding : {TextureEncoding::srgb, TextureEncoding::linear})
+    for (int channels = 1; channels <= 4; ++channels) {
+      const TextureImage coded = coded_image(37, 22, channels, encoding, 5u + static_cast<std::uint32_t>(channels));
+      const MipPyramid pyramid = build_mip_pyramid(coded);
+      const TextureImage floats = as_floats(coded);
+      const MipPyramid exact = build_mip_pyramid(floats);
+      ASSERT_EQ(pyramid.levels.size(), exact.levels.size());
+      EXPECT_EQ(pyramid.levels[0].code_data(), coded.codes.data());  // borrowed, not copied
+      EXPECT_EQ(pyramid.levels[0].owned_bytes(), 0u);
+      for (std::size_t l = 1; l < pyramid.levels.size(); ++l) {
+        const MipLevel& level = pyramid.levels[l];
+        ASSERT_TRUE(level.has_codes());
+        ASSERT_EQ(level.codes.size(), exact.levels[l].texels.size());
+        EXPECT_EQ(level.owned_bytes(), level.codes.size());  // a byte per sample
+        for (std::size_t i = 0; i < level.codes.size(); ++i) {
+          const bool alpha = (channels == 2 || channels == 4) && static_cast<int>(i) % channels == channels - 1;
+          const std::array<float, 256>& values = code_values(alpha ? TextureEncoding::linear : encoding);
+          const float target = exact.levels[l].texels[i];
+          const int code = level.codes[i];
+          const float error = std::abs(values[static_cast<std::size_t>(code)] - target);
+          if (code > 0) {
+            ASSERT_LE(error, std::abs(values[static_cast<std::size_t>(code - 1)] - target)) << l << " " << i;
+          }
+          if (code < 255) {
+            ASSERT_LE(error, std::abs(values[static_cast<std::size_t>(code + 1)] - target)) << l << " " << i;
+          }
+        }
+      }
+    }
 }
 
 }  // namespace

@@ -6,9 +6,8 @@
 #include <cstdint>
 #include <numbers>
 #include <string>
+#include <utility>
 #include <vector>
-
-#include "prism/color/transfer_functions.h"
 
 namespace prism::loaders {
 namespace {
@@ -59,22 +58,16 @@ void put_rgb(std::uint8_t* texel, const std::array<float, 3>& srgb, float factor
   for (int c = 0; c < 3; ++c) texel[c] = static_cast<std::uint8_t>(std::clamp(std::lround(srgb[c] * factor), 0L, 255L));
 }
 
-// Decodes the codes as texture_file.cpp decodes an 8-bit PNG: colour channels through the
-// IEC 61966-2-1 EOTF, alpha (the 4th of RGBA) linearly.
-TextureImage decode(const CodeImage& image, std::string name) {
-  std::array<float, 256> srgb{};
-  for (std::size_t i = 0; i < srgb.size(); ++i) srgb[i] = static_cast<float>(color::srgb_decode(static_cast<double>(i) / 255.0));
+// The codes as an 8-bit sRGB texture, as texture_file.cpp keeps an 8-bit PNG: colour
+// channels decoded through the IEC 61966-2-1 EOTF, alpha (the 4th of RGBA) linearly.
+TextureImage decode(CodeImage image, std::string name) {
   TextureImage t;
   t.name = std::move(name);
   t.width = image.width;
   t.height = image.height;
   t.channels = image.channels;
-  t.texels.resize(image.codes.size());
-  const bool has_alpha = image.channels == 4;
-  for (std::size_t i = 0; i < image.codes.size(); ++i) {
-    const bool alpha = has_alpha && static_cast<int>(i % 4) == 3;
-    t.texels[i] = alpha ? static_cast<float>(image.codes[i] / 255.0) : srgb[image.codes[i]];
-  }
+  t.codes = std::move(image.codes);
+  t.encoding = TextureEncoding::srgb;
   return t;
 }
 
@@ -97,7 +90,7 @@ TextureImage make_floor_tile_texture() {
       const float mottle = 0.92f + 0.16f * value_noise(x, y, 16, kSize, 3u);
       put_rgb(image.at(x, y), (tx + ty) % 2 == 0 ? kCream : kTerracotta, tint * mottle * (0.5f + 0.5f * grain));
     }
-  return decode(image, "floor-tiles");
+  return decode(std::move(image), "floor-tiles");
 }
 
 TextureImage make_wall_block_texture() {
@@ -118,7 +111,7 @@ TextureImage make_wall_block_texture() {
       const float weathering = 0.85f + 0.25f * value_noise(x, y, 32, kSize, 6u);
       put_rgb(image.at(x, y), kSandstone, tint * weathering * grain);
     }
-  return decode(image, "wall-blocks");
+  return decode(std::move(image), "wall-blocks");
 }
 
 TextureImage make_leaf_texture() {
@@ -164,7 +157,7 @@ TextureImage make_leaf_texture() {
         image.at(x, y)[3] = 255;
       }
   }
-  return decode(image, "leaves");
+  return decode(std::move(image), "leaves");
 }
 
 }  // namespace prism::loaders

@@ -30,16 +30,17 @@ int PbrtBuilder::texture_with_alpha(int base, int alpha) {
     for (int x = 0; x < w; ++x) {
       float* t = &texels[(static_cast<std::size_t>(y) * w + x) * 4];
       if (colour) {
-        const float* c = &colour->texels[(static_cast<std::size_t>(y) * w + x) * colour->channels];
+        const std::size_t c = (static_cast<std::size_t>(y) * w + x) * colour->channels;
         const bool grey = colour->channels <= 2;
-        for (int k = 0; k < 3; ++k) t[k] = c[grey ? 0 : k];
+        for (int k = 0; k < 3; ++k) t[k] = colour->value(c + (grey ? 0 : k));
       }
       // Nearest alpha texel (the same texel when both images have the same size).
       const int ax = static_cast<int>(static_cast<long>(x) * a.width / w), ay = static_cast<int>(static_cast<long>(y) * a.height / h);
-      t[3] = std::clamp(a.texels[(static_cast<std::size_t>(ay) * a.width + ax) * a.channels], 0.0f, 1.0f);
+      t[3] = std::clamp(a.value((static_cast<std::size_t>(ay) * a.width + ax) * a.channels), 0.0f, 1.0f);
     }
   out.channels = 4;
   out.texels = std::move(texels);
+  out.codes.clear();  // the copy's 8-bit texels, if the image it copied had them
   scene_.textures.push_back(std::move(out));
   return static_cast<int>(scene_.textures.size() - 1);
 }

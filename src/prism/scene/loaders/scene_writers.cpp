@@ -222,9 +222,10 @@ PbrtMaterialTextures write_pbrt_textures(Writer& w, const Scene& scene, std::siz
   // exactly where Prism's cutoff does at the texels.
   TextureImage alpha = *image;
   alpha.channels = 1;
+  alpha.codes.clear();  // a float image of the one channel
   alpha.texels.resize(static_cast<std::size_t>(image->width) * image->height);
   for (std::size_t i = 0; i < alpha.texels.size(); ++i) {
-    const float a = m.opacity * image->texels[i * image->channels + image->channels - 1];
+    const float a = m.opacity * image->value(i * image->channels + image->channels - 1);
     alpha.texels[i] = m.alpha_mode == AlphaMode::mask ? (a >= m.alpha_cutoff ? 1.0f : 0.0f) : a;
   }
   const std::string file = texture_file_name(path, *image, static_cast<std::size_t>(t), fmt::format("-alpha-{}", index));

@@ -38,7 +38,7 @@ std::vector<unsigned char> encode_codes(const std::vector<std::uint8_t>& codes, 
 
 void check_image(const TextureImage& image) {
   if (image.width <= 0 || image.height <= 0 || image.channels < 1 || image.channels > 4 ||
-      image.texels.size() != static_cast<std::size_t>(image.width) * image.height * image.channels)
+      image.sample_count() != static_cast<std::size_t>(image.width) * image.height * image.channels)
     throw UsageError(fmt::format("texture '{}': not a 1- to 4-channel image", image.name));
 }
 
@@ -48,10 +48,10 @@ std::vector<unsigned char> encode_texture_png(const TextureImage& image, Texture
   check_image(image);
   const int c = image.channels;
   const bool has_alpha = c == 2 || c == 4;
-  std::vector<std::uint8_t> codes(image.texels.size());
+  std::vector<std::uint8_t> codes(image.sample_count());
   for (std::size_t i = 0; i < codes.size(); ++i) {
     const bool alpha = has_alpha && static_cast<int>(i % c) == c - 1;
-    codes[i] = alpha || encoding == TextureEncoding::linear ? linear_code(image.texels[i]) : srgb_code(image.texels[i]);
+    codes[i] = alpha || encoding == TextureEncoding::linear ? linear_code(image.value(i)) : srgb_code(image.value(i));
   }
   return encode_codes(codes, image.width, image.height, c, image.name);
 }
@@ -60,7 +60,7 @@ std::vector<unsigned char> encode_texture_channel_png(const TextureImage& image,
   check_image(image);
   if (channel < 0 || channel >= image.channels) throw UsageError(fmt::format("texture '{}' has no channel {}", image.name, channel));
   std::vector<std::uint8_t> codes(static_cast<std::size_t>(image.width) * image.height);
-  for (std::size_t i = 0; i < codes.size(); ++i) codes[i] = linear_code(image.texels[i * image.channels + channel]);
+  for (std::size_t i = 0; i < codes.size(); ++i) codes[i] = linear_code(image.value(i * image.channels + channel));
   return encode_codes(codes, image.width, image.height, 1, image.name);
 }
 

@@ -187,11 +187,12 @@ std::vector<float> box_filter_level(const FineValue& fine, int fine_width, int f
 
 // The code whose value (in `values`, ascending from 0 to 1) is nearest to v: the number of
 // midpoints between consecutive values at or below v, found from a table of that number
-// at multiples of 1/kBuckets (a bucket holds a few midpoints at most: the sRGB values are
-// densest near 0, 1/(255 · 12.92) apart), then settled against its neighbours, since a
-// midpoint rounded to float can put a v within an ulp of it on the wrong side.
+// at multiples of 1/kBuckets (a bucket holds one midpoint at most: the sRGB values are
+// densest near 0, 1/(255 · 12.92) = 3.0e-4 apart, five buckets), then settled against its
+// neighbours, since a midpoint rounded to float can put a v within an ulp of it on the
+// wrong side.
 struct NearestCode {
-  static constexpr int kBuckets = 1024;
+  static constexpr int kBuckets = 1 << 14;
   const std::array<float, 256>& values;
   std::array<float, 255> midpoints{};
   std::array<std::uint8_t, kBuckets> first{};  // midpoints at or below bucket / kBuckets

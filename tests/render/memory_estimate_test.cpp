@@ -55,12 +55,16 @@ TEST(MemoryEstimate, CountsTexturesAndInstancedMeshes) {
   t.channels = 4;
   t.texels.assign(256u * 256 * 4, 0.5f);
   scene.textures.push_back(t);
+  scene.materials[0].base_color_texture = 0;
   const MemoryEstimate textured = estimate_render_memory(scene, s);
   EXPECT_EQ(plain.textures, 0u);
   // Copied into the prepared scene: loaded + copy + mip levels 1 and up (a third of the
   // image; level 0 is the texels themselves). Handed over: no copy.
   EXPECT_EQ(textured.textures, 2 * t.memory_bytes() + t.memory_bytes() / 3);
   EXPECT_EQ(estimate_render_memory(scene, s, SceneHandover::moved).textures, t.memory_bytes() + t.memory_bytes() / 3);
+  // Used by no material (an environment map): no mip levels.
+  scene.materials[0].base_color_texture = -1;
+  EXPECT_EQ(estimate_render_memory(scene, s, SceneHandover::moved).textures, t.memory_bytes());
   // Ten instances of a one-triangle mesh: the loaded mesh, ten flattened copies and a
   // BVH over ten triangles.
   Scene tri;

@@ -52,6 +52,26 @@ TEST(PreparedScene, BuildsOneMipPyramidPerTextureOnce) {
   EXPECT_NEAR(p.levels[6].texels[0], 0.5f, 1e-6f);
 }
 
+// Textures no material uses (environment maps, read texel by texel) keep level 0 alone;
+// when a material takes one up, its pyramid is built then.
+TEST(PreparedScene, TexturesNoMaterialUsesHaveNoMipLevels) {
+  Scene scene = textured_cornell_box();
+  scene.materials[0].base_color_texture = -1;
+  Light sky;
+  sky.type = LightType::environment;
+  sky.environment_texture = 0;
+  scene.lights.push_back(sky);
+  PreparedScene prepared(scene);
+  ASSERT_EQ(prepared.mip_pyramids().size(), 1u);
+  ASSERT_EQ(prepared.mip_pyramids()[0].levels.size(), 1u);
+  EXPECT_EQ(prepared.mip_pyramids()[0].levels[0].data(), prepared.scene().textures[0].texels.data());
+  std::vector<Material> materials = prepared.scene().materials;
+  materials[0].base_color_texture = 0;
+  prepared.set_materials(materials);
+  ASSERT_EQ(prepared.mip_pyramids()[0].levels.size(), 7u);
+  EXPECT_NEAR(prepared.mip_pyramids()[0].levels[6].texels[0], 0.5f, 1e-6f);
+}
+
 TEST(PreparedScene, CopyingTheSceneLeavesItIntact) {
   const Scene scene = textured_cornell_box();
   const PreparedScene prepared(scene);

@@ -11,6 +11,7 @@
 #include "prism/core/error.h"
 #include "prism/core/parallel.h"
 #include "prism/render/wavefront_integrator.h"
+#include "prism/scene/material_textures.h"
 
 namespace prism {
 namespace {
@@ -47,11 +48,16 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderSettings& 
   e.images = pixels * (kImageBytesPerPixel + aov_channels * kAovImageBytesPerChannel);
 
   // The loaded texels, the prepared scene's copy of them unless the scene is handed over,
-  // and the mip levels above level 0 (1/3 of the image; level 0 is the texels themselves).
+  // and the mip levels above level 0 of the textures materials use (1/3 of the image; level
+  // 0 is the texels themselves; environment maps have none).
   const bool copied = handover == SceneHandover::copied;
-  std::uint64_t texels = 0;
-  for (const auto& t : scene.textures) texels += t.memory_bytes();
-  e.textures = texels * (copied ? 2 : 1) + texels / 3;
+  const std::vector<bool> filtered = textures_used_by_materials(scene);
+  std::uint64_t texels = 0, mip_levels = 0;
+  for (std::size_t t = 0; t < scene.textures.size(); ++t) {
+    texels += scene.textures[t].memory_bytes();
+    if (filtered[t]) mip_levels += scene.textures[t].memory_bytes() / 3;
+  }
+  e.textures = texels * (copied ? 2 : 1) + mip_levels;
 
   // The loaded meshes, the flattened copy (one mesh per instance; without instances a copy
   // only when the scene is copied, not handed over) and the BVH over it.

@@ -28,7 +28,8 @@ class PreparedScene {
 
   const Scene& scene() const { return *scene_; }
   const EmbreeAccel& accel() const { return *accel_; }
-  // One per scene texture, level 0 borrowed from the prepared scene's own texels.
+  // One per scene texture, level 0 borrowed from the prepared scene's own texels: the whole
+  // pyramid for textures materials use, level 0 alone for the others (environment maps).
   const std::vector<MipPyramid>& mip_pyramids() const { return mip_pyramids_; }
   // The light sampler for `options`, built on first use and kept while the options and the
   // emitters (the materials' emission, the lights) stay as they are, so that a restart
@@ -53,6 +54,7 @@ class PreparedScene {
   mutable LightSamplerOptions light_sampler_options_;
 
   void build();  // the BVH and the mip pyramids of scene_
+  void build_material_pyramids();  // the pyramids of textures materials use, where not built yet
 };
 
 }  // namespace prism

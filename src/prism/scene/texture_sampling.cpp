@@ -218,18 +218,28 @@ struct NearestCode {
 
 }  // namespace
 
-MipPyramid build_mip_pyramid(const TextureImage& texture) {
+MipPyramid base_level_pyramid(const TextureImage& texture) {
   MipPyramid pyramid;
-  const int c = texture.channels;
-  pyramid.channels = c;
+  pyramid.channels = texture.channels;
   pyramid.wrap_u = texture.wrap_u;
   pyramid.wrap_v = texture.wrap_v;
   MipLevel base;
   base.width = texture.width;
   base.height = texture.height;
-  if (!texture.has_codes()) {
+  if (texture.has_codes()) {
+    base.borrowed_codes = texture.codes.data();
+    base.colour_values = code_values(texture.encoding).data();
+  } else {
     base.borrowed = texture.texels.data();
-    pyramid.levels.push_back(std::move(base));
+  }
+  pyramid.levels.push_back(std::move(base));
+  return pyramid;
+}
+
+MipPyramid build_mip_pyramid(const TextureImage& texture) {
+  MipPyramid pyramid = base_level_pyramid(texture);
+  const int c = texture.channels;
+  if (!texture.has_codes()) {
     while (pyramid.levels.back().width > 1 || pyramid.levels.back().height > 1) {
       const MipLevel& fine = pyramid.levels.back();
       const float* values = fine.data();
@@ -251,9 +261,6 @@ MipPyramid build_mip_pyramid(const TextureImage& texture) {
   for (int k = 0; k < c; ++k)
     channel_values[static_cast<std::size_t>(k)] = is_alpha_channel(k, c) ? linear.data() : colour.data();
   const std::uint8_t* codes = texture.codes.data();
-  base.borrowed_codes = codes;
-  base.colour_values = colour.data();
-  pyramid.levels.push_back(std::move(base));
   std::vector<float> fine_values;  // the unrounded values of the level above, below level 0
   while (pyramid.levels.back().width > 1 || pyramid.levels.back().height > 1) {
     const MipLevel& fine = pyramid.levels.back();

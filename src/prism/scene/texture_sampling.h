@@ -61,6 +61,10 @@ TexelRgba sample_bilinear(const TextureImage& texture, Vec2f uv);
 // is nearest (within half a code step of the average: 0.2 % of full scale, linear).
 MipPyramid build_mip_pyramid(const TextureImage& texture);
 MipPyramid build_mip_pyramid(TextureImage&& texture) = delete;
+// Level 0 alone, borrowed: for textures read texel by texel (environment maps), which
+// filtered lookups never reach.
+MipPyramid base_level_pyramid(const TextureImage& texture);
+MipPyramid base_level_pyramid(TextureImage&& texture) = delete;
 
 // Level of detail λ (0 = finest) from the screen-space uv derivatives of a ray
 // differential: log2 of the longer of the two texel-space footprint axes.

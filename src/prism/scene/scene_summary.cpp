@@ -78,8 +78,11 @@ std::string format_scene_summary(const Scene& scene) {
                      s.emissive_materials, extras);
   out += fmt::format("lights {} ({})\n", scene.lights.size(), counts(s.lights_by_type));
   out += fmt::format("textures {} ({})\n", s.textures, mebibytes(s.texture_bytes));
-  for (const auto& t : scene.textures)
-    out += fmt::format("  texture {} {}x{}x{} {}\n", t.name, t.width, t.height, t.channels, mebibytes(t.memory_bytes()));
+  for (const auto& t : scene.textures) {
+    const char* storage = !t.has_codes() ? "float" : t.encoding == TextureEncoding::srgb ? "8-bit sRGB" : "8-bit linear";
+    out += fmt::format("  texture {} {}x{}x{} {} {}\n", t.name, t.width, t.height, t.channels, storage,
+                       mebibytes(t.memory_bytes()));
+  }
   const auto camera_line = [](const Camera& c) {
     return fmt::format("  camera {} {} fov {:.4g} deg{}\n", c.name.empty() ? "default" : c.name,
                        c.aperture_radius > 0.0f ? "thin lens" : "pinhole", c.fov_degrees,

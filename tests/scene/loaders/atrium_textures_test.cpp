@@ -84,8 +84,9 @@ TEST(AtriumGenerator, TexturedSurfacesHaveUvsAndTheFoliageIsMasked) {
   // `prism info` reports the textures and the alpha-tested material.
   const std::string info = format_scene_summary(s);
   EXPECT_NE(info.find("1 emissive, 1 alpha-tested)"), std::string::npos) << info;
-  EXPECT_NE(info.find("texture leaves 256x256x4"), std::string::npos) << info;
-  EXPECT_NE(info.find("texture floor-tiles 512x512x3"), std::string::npos) << info;
+  // 8-bit sRGB codes, a byte per sample: 256 KiB and 768 KiB.
+  EXPECT_NE(info.find("texture leaves 256x256x4 8-bit sRGB 0.25 MiB"), std::string::npos) << info;
+  EXPECT_NE(info.find("texture floor-tiles 512x512x3 8-bit sRGB 0.75 MiB"), std::string::npos) << info;
 }
 
 // Each format loads back with the textures bit for bit (8-bit sRGB codes survive the

@@ -42,10 +42,10 @@ color::ColorSpace film_color_space(const TransportSettings& settings) {
 template <int N>
 ColorContext<SpectralMode<N>>::ColorContext(const Scene& scene, const TransportSettings& settings)
     : settings_(settings),
-      srgb_to_film_(color::conversion_matrix(color::color_space("srgb"), film_color_space(settings))) {
-  const color::JakobHanikaTable& table = color::JakobHanikaTable::get("srgb");
+      srgb_to_film_(color::conversion_matrix(color::color_space("srgb"), film_color_space(settings))),
+      srgb_table_(&color::JakobHanikaTable::get("srgb")) {
   for (const Material& m : scene.materials) {
-    base_color_jh_.push_back(table.lookup(Vec3d(m.base_color)));
+    base_color_jh_.push_back(srgb_table_->lookup(Vec3d(m.base_color)));
     base_color_rgb_.emplace_back(m.base_color);
   }
   const color::ColorSpace& working = color::color_space(settings.working_space);
@@ -69,8 +69,7 @@ Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::reflectance(const Vec3f
     const color::MallettYukselSpectrum my{Vec3d(srgb)};
     for (int i = 0; i < N; ++i) s[i] = static_cast<float>(my(w.wavelength_nm[i]));
   } else {
-    s.values = color::evaluate_sigmoid_polynomial(color::JakobHanikaTable::get("srgb").lookup(Vec3d(srgb)),
-                                                  w.wavelength_nm);
+    s.values = color::evaluate_sigmoid_polynomial(srgb_table_->lookup(Vec3d(srgb)), w.wavelength_nm);
   }
   return s;
 }
@@ -89,7 +88,7 @@ Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::rgb_radiance(const Vec3
   Spectrum<Mode> s;
   const float m = std::max({rgb.x, rgb.y, rgb.z});
   if (!(m > 0.0f)) return s;
-  const color::SigmoidPolynomial c = color::JakobHanikaTable::get("srgb").lookup(Vec3d(rgb / (2.0f * m)));
+  const color::SigmoidPolynomial c = srgb_table_->lookup(Vec3d(rgb / (2.0f * m)));
   // 683 ∫ L ȳ ≈ Y(rgb): L(λ) = 2m s(λ) / (683 ∫ ȳ), exact for greys (s = ½).
   const double k = 2.0 * m / (color::kMaxLuminousEfficacyLmPerW * color::cie1931_y_integral());
   s.values = color::evaluate_sigmoid_polynomial(c, w.wavelength_nm, static_cast<float>(k));

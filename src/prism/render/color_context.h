@@ -15,6 +15,7 @@
 #include "prism/color/cie_1931.h"
 #include "prism/color/color_space.h"
 #include "prism/color/emission_spectrum.h"
+#include "prism/color/jakob_hanika_table.h"
 #include "prism/color/sigmoid_polynomial.h"
 #include "prism/render/transport_mode.h"
 #include "prism/scene/scene.h"
@@ -69,6 +70,10 @@ class ColorContext<SpectralMode<N>> {
 
   TransportSettings settings_;
   Mat3 srgb_to_film_;
+  // The sRGB upsampling table, found once: JakobHanikaTable::get looks the space up by
+  // name and takes a lock, which every textured shading point and environment lookup
+  // paid (and every thread contended for) when it was called per lookup.
+  const color::JakobHanikaTable* srgb_table_;
   std::vector<color::SigmoidPolynomial> base_color_jh_;
   std::vector<Vec3d> base_color_rgb_;
   std::vector<color::EmissionSpectrum> emitters_;

@@ -16,11 +16,10 @@ std::array<float, 256> make_code_values(TextureEncoding encoding) {
 
 }  // namespace
 
-const std::array<float, 256>& code_values(TextureEncoding encoding) {
-  static const std::array<float, 256> srgb = make_code_values(TextureEncoding::srgb);
-  static const std::array<float, 256> linear = make_code_values(TextureEncoding::linear);
-  return encoding == TextureEncoding::srgb ? srgb : linear;
-}
+namespace detail {
+const std::array<float, 256> kSrgbCodeValues = make_code_values(TextureEncoding::srgb);
+const std::array<float, 256> kLinearCodeValues = make_code_values(TextureEncoding::linear);
+}  // namespace detail
 
 std::vector<float> TextureImage::linear_values() const {
   if (!has_codes()) return texels;

@@ -21,8 +21,16 @@ enum class TextureWrap : std::uint8_t { repeat, clamp, mirror };
 // are linear whatever is asked. Alpha is always linear.
 enum class TextureEncoding : std::uint8_t { srgb, linear };
 
-// The linear value of each 8-bit code under `encoding`, rounded to float once.
-const std::array<float, 256>& code_values(TextureEncoding encoding);
+namespace detail {
+// Filled before main (texture.cpp); no static initialiser decodes a texture.
+extern const std::array<float, 256> kSrgbCodeValues, kLinearCodeValues;
+}  // namespace detail
+
+// The linear value of each 8-bit code under `encoding`, rounded to float once. Inline and
+// without a guard: lookups ask for it at every texel.
+inline const std::array<float, 256>& code_values(TextureEncoding encoding) {
+  return encoding == TextureEncoding::srgb ? detail::kSrgbCodeValues : detail::kLinearCodeValues;
+}
 
 // Whether channel `channel` of a `channels`-channel image is alpha (the 2nd of grey+alpha,
 // the 4th of RGBA), which is linear whatever the colour channels' encoding.

@@ -58,7 +58,8 @@ TexelRgba sample_bilinear(const TextureImage& texture, Vec2f uv);
 // of floats), so the pyramid must not outlive the texture; a temporary is refused at
 // compile time. The levels of an 8-bit image are 8-bit too, as on GPUs: each is averaged
 // from the unrounded linear values of the level above and stored as the code whose value
-// is nearest (within half a code step of the average: 0.2 % of full scale, linear).
+// is nearest (within half a code step of the average: 0.2 % of full scale for linear codes,
+// at most 0.43 % for sRGB ones, whose steps are widest near white).
 MipPyramid build_mip_pyramid(const TextureImage& texture);
 MipPyramid build_mip_pyramid(TextureImage&& texture) = delete;
 // Level 0 alone, borrowed: for textures read texel by texel (environment maps), which

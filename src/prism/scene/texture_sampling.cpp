@@ -87,7 +87,6 @@ template <class F>
   return f(FloatTexels{t.texels.data(), t.width, t.channels});
 }
 
-
 // std::floor without its libm call (the baseline x86-64 build has no SSE4.1 round
 // instruction), exact for every double: a magnitude ≥ 2^52 is an integer already, and
 // truncation toward zero is one below the floor for negative non-integers.

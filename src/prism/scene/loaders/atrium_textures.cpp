@@ -60,7 +60,7 @@ void put_rgb(std::uint8_t* texel, const std::array<float, 3>& srgb, float factor
 
 // The codes as an 8-bit sRGB texture, as texture_file.cpp keeps an 8-bit PNG: colour
 // channels decoded through the IEC 61966-2-1 EOTF, alpha (the 4th of RGBA) linearly.
-TextureImage decode(CodeImage image, std::string name) {
+TextureImage srgb_texture(CodeImage image, std::string name) {
   TextureImage t;
   t.name = std::move(name);
   t.width = image.width;
@@ -90,7 +90,7 @@ TextureImage make_floor_tile_texture() {
       const float mottle = 0.92f + 0.16f * value_noise(x, y, 16, kSize, 3u);
       put_rgb(image.at(x, y), (tx + ty) % 2 == 0 ? kCream : kTerracotta, tint * mottle * (0.5f + 0.5f * grain));
     }
-  return decode(std::move(image), "floor-tiles");
+  return srgb_texture(std::move(image), "floor-tiles");
 }
 
 TextureImage make_wall_block_texture() {
@@ -111,7 +111,7 @@ TextureImage make_wall_block_texture() {
       const float weathering = 0.85f + 0.25f * value_noise(x, y, 32, kSize, 6u);
       put_rgb(image.at(x, y), kSandstone, tint * weathering * grain);
     }
-  return decode(std::move(image), "wall-blocks");
+  return srgb_texture(std::move(image), "wall-blocks");
 }
 
 TextureImage make_leaf_texture() {
@@ -157,7 +157,7 @@ TextureImage make_leaf_texture() {
         image.at(x, y)[3] = 255;
       }
   }
-  return decode(std::move(image), "leaves");
+  return srgb_texture(std::move(image), "leaves");
 }
 
 }  // namespace prism::loaders

@@ -47,10 +47,9 @@ void check_image(const TextureImage& image) {
 std::vector<unsigned char> encode_texture_png(const TextureImage& image, TextureEncoding encoding) {
   check_image(image);
   const int c = image.channels;
-  const bool has_alpha = c == 2 || c == 4;
   std::vector<std::uint8_t> codes(image.sample_count());
   for (std::size_t i = 0; i < codes.size(); ++i) {
-    const bool alpha = has_alpha && static_cast<int>(i % c) == c - 1;
+    const bool alpha = is_alpha_channel(static_cast<int>(i % static_cast<std::size_t>(c)), c);
     codes[i] = alpha || encoding == TextureEncoding::linear ? linear_code(image.value(i)) : srgb_code(image.value(i));
   }
   return encode_codes(codes, image.width, image.height, c, image.name);

@@ -443,6 +443,14 @@ std::optional<TextureMemoryNeed> texture_memory_need(std::span<const unsigned ch
   return texel_memory(header->width, header->height, header->channels, header->decoded_bytes_per_sample);
 }
 
+std::optional<TextureMemoryNeed> texture_file_memory_need(const std::filesystem::path& path) {
+  try {
+    return texture_memory_need(read_file_bytes(path));
+  } catch (const IoError&) {
+    return std::nullopt;
+  }
+}
+
 TextureImage read_texture_file(const std::filesystem::path& path, TextureEncoding encoding,
                                const TextureLimits& limits) {
   std::array<unsigned char, 16> head{};

@@ -44,5 +44,8 @@ struct TextureMemoryNeed {
   std::uint64_t texel_bytes = 0, transient_bytes = 0;
 };
 std::optional<TextureMemoryNeed> texture_memory_need(std::span<const unsigned char> bytes);
+// The same for a PNG, JPEG or .hdr file; nothing for other files and for files that cannot
+// be read (read_texture_file then reports why).
+std::optional<TextureMemoryNeed> texture_file_memory_need(const std::filesystem::path& path);
 
 }  // namespace prism

@@ -163,6 +163,32 @@ TEST(PbrtLoader, NormalMapIsALinearRgbImage) {
   EXPECT_NE(message.find("RGB"), std::string::npos) << message;
 }
 
+// The images are decoded together at the end of the file (texture_cache.h), but a bad one
+// is still reported as one-at-a-time decoding would: the first in the file, with its line,
+// before any error the parser met after it.
+TEST(PbrtLoader, TheFirstBadImageIsReportedWithItsLine) {
+  test::ScratchFolder dir;
+  write_png(dir / "good.png", EncodedImage{1, 1, 3, 8, {128, 64, 255}});
+  dir.write("bad.png", "\x89PNG\r\n\x1a\n truncated");
+  dir.write("worse.png", "not an image");
+  const std::string textures = "WorldBegin\n"
+                               "Texture \"a\" \"spectrum\" \"imagemap\" \"string filename\" \"good.png\"\n"
+                               "Texture \"b\" \"spectrum\" \"imagemap\" \"string filename\" \"bad.png\"\n"
+                               "Texture \"c\" \"spectrum\" \"imagemap\" \"string filename\" \"worse.png\"\n";
+  for (const std::string& tail : {std::string(kTriangle), std::string("Shape \"nonsense\" [\n")}) {
+    const std::string message =
+        test::error_of<IoError>([&] { load_pbrt_scene(dir.write("scene.pbrt", textures + tail)); });
+    EXPECT_EQ(message.rfind("scene.pbrt:3: Texture: cannot read image", 0), 0u) << message;
+    EXPECT_NE(message.find("bad.png"), std::string::npos) << message;
+  }
+  // With good images the parser's own error stands.
+  const std::string message = test::error_of<SceneError>([&] {
+    load_pbrt_scene(dir.write("scene.pbrt", "WorldBegin\nTexture \"a\" \"spectrum\" \"imagemap\" "
+                                            "\"string filename\" \"good.png\"\nShape \"nonsense\" [\n"));
+  });
+  EXPECT_NE(message.find("scene.pbrt:3"), std::string::npos) << message;
+}
+
 // A material's "texture displacement" (a float texture) is a bump map: the image, with the
 // texture's "scale" as the bump scale; a constant "float displacement" bends nothing.
 TEST(PbrtLoader, DisplacementIsABumpMap) {

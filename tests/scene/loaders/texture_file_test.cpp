@@ -151,6 +151,7 @@ TEST(TextureFile, CacheLoadsEachFileOncePerEncodingAndAddressing) {
   const int clamped = cache.load(dir / "a.png", TextureEncoding::srgb, TextureWrap::clamp, TextureWrap::clamp);
   EXPECT_NE(clamped, a);
   EXPECT_EQ(scene.textures.size(), 3u);
+  cache.finish();
   EXPECT_EQ(cache.files_read(), 3u);
   EXPECT_EQ(scene.textures[static_cast<std::size_t>(clamped)].wrap_u, TextureWrap::clamp);
 }

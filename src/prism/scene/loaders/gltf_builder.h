@@ -10,7 +10,6 @@
 #include "prism/scene/loaders/tinygltf_config.h"
 
 #include "prism/scene/load_options.h"
-#include "prism/scene/loaders/texture_cache.h"
 #include "prism/scene/scene.h"
 #include "prism/scene/texture_file.h"
 
@@ -41,7 +40,6 @@ class GltfBuilder {
   std::filesystem::path dir_;
   LoadOptions options_;
   Scene scene_;
-  TextureCache cache_;
   std::map<std::pair<int, TextureEncoding>, int> image_textures_;
   // Images decoded ahead by decode_images_in_parallel, by (image, encoding): the texture,
   // or what decoding it threw, for texture() to take in its own order.

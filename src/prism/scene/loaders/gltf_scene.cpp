@@ -108,7 +108,7 @@ bool finite(const Transform& t) {
 
 GltfBuilder::GltfBuilder(const tinygltf::Model& model, std::string source, const std::filesystem::path& dir,
                          const LoadOptions& options)
-    : model_(model), source_(std::move(source)), dir_(dir), options_(options), cache_(scene_, options) {}
+    : model_(model), source_(std::move(source)), dir_(dir), options_(options) {}
 
 void GltfBuilder::fail(const std::string& message) const { throw SceneError(fmt::format("{}: {}", source_, message)); }
 

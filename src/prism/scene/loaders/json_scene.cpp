@@ -126,10 +126,15 @@ Scene parse_json_scene(std::string_view text, std::string_view source, const std
   JsonDocument document{std::string(source), {}};
   JsonSceneReader reader(scene, document, scene_dir, options);
   try {
-    read_document(reader, JsonValue(root, "", document));
-  } catch (const nlohmann::json::exception& e) {
-    // Defensive: the readers check types first, so this is only reached through a bug.
-    throw SceneError(fmt::format("{}: {}", source, e.what()));
+    try {
+      read_document(reader, JsonValue(root, "", document));
+      reader.textures.finish();  // the images, decoded together (texture_cache.h)
+    } catch (const nlohmann::json::exception& e) {
+      // Defensive: the readers check types first, so this is only reached through a bug.
+      throw SceneError(fmt::format("{}: {}", source, e.what()));
+    }
+  } catch (...) {
+    reader.textures.rethrow_first_error(std::current_exception());
   }
   warn_unknown_keys(scene, document);
   validate_scene(scene);

@@ -108,7 +108,7 @@ void JsonSceneReader::read_environment(const JsonValue& value) {
         {{"equirectangular", EnvironmentMapping::equirectangular},
          {"equal-area-octahedral", EnvironmentMapping::equal_area_octahedral}});
     if (light.environment_mapping == EnvironmentMapping::equal_area_octahedral && light.environment_texture >= 0) {
-      const TextureImage& image = scene.textures[static_cast<std::size_t>(light.environment_texture)];
+      const TextureImage& image = textures.image(light.environment_texture);  // its size is checked here
       if (image.width != image.height)
         m->fail(fmt::format("an equal-area-octahedral map must be square (the texture is {}×{})", image.width,
                             image.height));

@@ -79,8 +79,11 @@ std::filesystem::path JsonSceneReader::resolve(const JsonValue& file_name) const
                                  fmt::format("{}: {}", document.source, file_name.path()));
 }
 
-int JsonSceneReader::read_texture(const JsonValue& value, TextureEncoding default_encoding) {
-  if (value.is_string()) return textures.load(resolve(value), default_encoding);
+int JsonSceneReader::read_texture(const JsonValue& value, TextureEncoding default_encoding,
+                                  TextureCache::ImageCheck check) {
+  if (value.is_string())
+    return textures.load(resolve(value), default_encoding, TextureWrap::repeat, TextureWrap::repeat, {},
+                         std::move(check));
   value.expect_keys({"file", "encoding", "wrap", "wrap_u", "wrap_v"});
   const auto wrap_mode = [](const JsonValue& w) {
     return w.as_enum<TextureWrap>(
@@ -93,7 +96,7 @@ int JsonSceneReader::read_texture(const JsonValue& value, TextureEncoding defaul
   TextureEncoding encoding = default_encoding;
   if (auto e = value.find("encoding"))
     encoding = e->as_enum<TextureEncoding>({{"srgb", TextureEncoding::srgb}, {"linear", TextureEncoding::linear}});
-  return textures.load(resolve(value["file"]), encoding, wrap_u, wrap_v);
+  return textures.load(resolve(value["file"]), encoding, wrap_u, wrap_v, {}, std::move(check));
 }
 
 std::uint32_t JsonSceneReader::material_index(const JsonValue& name) const {
@@ -125,9 +128,10 @@ void JsonSceneReader::read_material(const JsonValue& value) {
   if (auto t = value.find("metallic_roughness_texture"))
     m.metallic_roughness_texture = read_texture(*t, TextureEncoding::linear);
   if (auto t = value.find("normal_texture")) {
-    m.normal_texture = read_texture(*t, TextureEncoding::linear);
-    if (scene.textures[static_cast<std::size_t>(m.normal_texture)].channels < 3)
-      t->fail("a normal map needs an RGB image (tangent-space x, y, z)");
+    // Checked once decoded, with the scene's other images (texture_cache.h).
+    m.normal_texture = read_texture(*t, TextureEncoding::linear, [where = *t](const TextureImage& image) {
+      if (image.channels < 3) where.fail("a normal map needs an RGB image (tangent-space x, y, z)");
+    });
   }
   m.normal_scale = value.get_float("normal_scale", m.normal_scale, -100.0f, 100.0f);
   if (auto t = value.find("bump_texture")) m.bump_texture = read_texture(*t, TextureEncoding::linear);

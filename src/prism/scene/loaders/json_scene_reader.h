@@ -31,7 +31,8 @@ struct JsonSceneReader {
 
   std::filesystem::path resolve(const JsonValue& file_name) const;
   // A texture reference: "file.png" or {"file", "encoding", "wrap", "wrap_u", "wrap_v"}.
-  int read_texture(const JsonValue& value, TextureEncoding default_encoding);
+  // `check` runs on the image once it is decoded (at the end of the load).
+  int read_texture(const JsonValue& value, TextureEncoding default_encoding, TextureCache::ImageCheck check = {});
   std::uint32_t material_index(const JsonValue& name) const;
 
   void read_material(const JsonValue& value);

@@ -134,16 +134,15 @@ class MeshBuilder {
   std::string source_;
 };
 
+// The image is decoded with the others at the end of the load (texture_cache.h); an error
+// decoding it names the material and map that asked for it, then the file.
 int load_material_texture(const ObjContext& context, const std::string& name, TextureEncoding encoding,
-                          const tinyobj::texture_option_t& option, std::string_view where) {
+                          const tinyobj::texture_option_t& option, const std::string& where,
+                          TextureCache::ImageCheck check = {}) {
   const std::filesystem::path path =
       resolve_scene_reference(context.dir, name, context.options.allow_external_paths, where);
   const TextureWrap wrap = option.clamp ? TextureWrap::clamp : TextureWrap::repeat;
-  try {
-    return context.textures->load(path, encoding, wrap, wrap);
-  } catch (const IoError& e) {
-    throw IoError(fmt::format("{}: {}", where, e.what()));  // which material and map asked for it
-  }
+  return context.textures->load(path, encoding, wrap, wrap, where, std::move(check));
 }
 
 std::vector<std::uint32_t> add_materials(Scene& scene, const std::vector<tinyobj::material_t>& materials,
@@ -173,10 +172,12 @@ std::vector<std::uint32_t> add_materials(Scene& scene, const std::vector<tinyobj
         }
         // norm: a tangent-space normal map, +y up the image (glTF's convention).
         if (!mtl.normal_texname.empty()) {
-          m.normal_texture = load_material_texture(context, mtl.normal_texname, TextureEncoding::linear,
-                                                   mtl.normal_texopt, where + " norm");
-          if (scene.textures[static_cast<std::size_t>(m.normal_texture)].channels < 3)
-            throw SceneError(fmt::format("{} norm: a normal map needs an RGB image", where));
+          m.normal_texture = load_material_texture(
+              context, mtl.normal_texname, TextureEncoding::linear, mtl.normal_texopt, where + " norm",
+              [where](const TextureImage& image) {
+                if (image.channels < 3)
+                  throw SceneError(fmt::format("{} norm: a normal map needs an RGB image", where));
+              });
         }
       }
     }
@@ -291,7 +292,12 @@ Scene load_obj_scene(const std::filesystem::path& path, const LoadOptions& optio
   context.dir = path.parent_path().empty() ? std::filesystem::path(".") : path.parent_path();
   context.options = options;
   context.textures = &textures;
-  append_obj(scene, text.str(), path.string(), context);
+  try {
+    append_obj(scene, text.str(), path.string(), context);
+    textures.finish();
+  } catch (...) {
+    textures.rethrow_first_error(std::current_exception());
+  }
   if (scene.meshes.empty()) throw SceneError(fmt::format("{}: the file has no triangles", path.string()));
   bool emissive = false;
   for (const auto& m : scene.materials) emissive = emissive || m.is_emissive();

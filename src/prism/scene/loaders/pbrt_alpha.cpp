@@ -13,6 +13,7 @@
 namespace prism::loaders {
 
 int PbrtBuilder::texture_with_alpha(int base, int alpha) {
+  textures_->finish();  // both images' texels are read here
   const TextureImage a = scene_.textures[static_cast<std::size_t>(alpha)];
   TextureImage out;
   if (base >= 0) {

@@ -44,6 +44,9 @@ class PbrtBuilder {
 
   void parse(std::string_view text, const std::string& source, int include_depth);
   Scene finish();
+  // After parse() or finish() threw `error`: the first failing image asked for before it,
+  // if any, else `error` (images are decoded in batches; texture_cache.h).
+  [[noreturn]] void rethrow_first_texture_error(std::exception_ptr error) { textures_->rethrow_first_error(error); }
 
  private:
   void directive(PbrtTokenizer& tokens, const PbrtToken& name, int include_depth);

@@ -99,12 +99,15 @@ void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
     const std::string file = p.get_string("filename", "");
     if (!file.empty()) {
       if (p.has("L")) throw SceneError(fmt::format("{}:{}: infinite light: give \"L\" or \"filename\", not both", p.source, p.line));
+      const std::string context = fmt::format("{}:{}: infinite light", p.source, p.line);
       try {
         // pbrt-v4 reads an 8- or 16-bit PNG as sRGB-encoded (Image::Read without an
         // encoding); EXR and HDR are linear whatever is asked.
-        light.environment_texture = textures_->load(resolve(p, "filename", file), TextureEncoding::srgb);
+        light.environment_texture =
+            textures_->load(resolve(p, "filename", file), TextureEncoding::srgb, TextureWrap::repeat,
+                            TextureWrap::repeat, context);
       } catch (const IoError& e) {
-        throw IoError(fmt::format("{}:{}: infinite light: {}", p.source, p.line, e.what()));
+        throw IoError(fmt::format("{}: {}", context, e.what()));
       }
       light.intensity = static_cast<float>(light_scale(p));
       // pbrt-v4's ImageInfiniteLight looks the image up at EqualAreaSphereToSquare of the
@@ -112,7 +115,7 @@ void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
       // direction; pbrt-v4 book §12.5.2 and §3.8.3), nearest texel, pixel (0, 0) at the
       // image's top left — Prism's uv convention — and it refuses non-square images.
       light.environment_mapping = EnvironmentMapping::equal_area_octahedral;
-      const TextureImage& image = scene_.textures[static_cast<std::size_t>(light.environment_texture)];
+      const TextureImage& image = textures_->image(light.environment_texture);  // its size is checked here
       if (image.width != image.height)
         throw SceneError(fmt::format("{}:{}: infinite light: \"{}\" is {}×{}; pbrt-v4's equal-area environment "
                                      "images are square",

@@ -126,14 +126,19 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
   // pbrt-v4's "normalmap": an RGB image read as linear, repeated, in the frame (dP/du,
   // n × dP/du, n), whose y runs up the image as glTF's does (normal_mapping.h).
   if (const std::string normal_map = p.get_string("normalmap", ""); !normal_map.empty()) {
+    // Decoded with the scene's other images (texture_cache.h), then checked.
+    const std::string context = fmt::format("{}:{}: Material normalmap", p.source, p.line);
+    const std::string not_rgb = fmt::format("{}:{}: parameter 'normalmap': a normal map needs an RGB image", p.source,
+                                            p.find("normalmap")->line);
+    const auto check = [not_rgb](const TextureImage& image) {
+      if (image.channels < 3) throw SceneError(not_rgb);
+    };
     try {
       m.normal_texture = textures_->load(resolve(p, "normalmap", normal_map), TextureEncoding::linear,
-                                         TextureWrap::repeat, TextureWrap::repeat);
+                                         TextureWrap::repeat, TextureWrap::repeat, context, check);
     } catch (const IoError& e) {
-      throw IoError(fmt::format("{}:{}: Material normalmap: {}", p.source, p.line, e.what()));
+      throw IoError(fmt::format("{}: {}", context, e.what()));
     }
-    if (scene_.textures[static_cast<std::size_t>(m.normal_texture)].channels < 3)
-      p.fail(*p.find("normalmap"), "a normal map needs an RGB image");
   }
   // "texture displacement": a float texture as a bump map (pbrt-v4's BumpMap), its image's
   // values times the texture's "scale" in scene units. A constant displacement moves the
@@ -170,10 +175,11 @@ PbrtTexture PbrtBuilder::imagemap(const std::string& name, const PbrtParams& p) 
   const TextureEncoding enc = encoding == "linear" ? TextureEncoding::linear : TextureEncoding::srgb;
   if (encoding != "linear" && encoding != "sRGB")
     approximations_.push_back(fmt::format("Texture '{}' encoding \"{}\" as sRGB", name, encoding));
+  const std::string context = fmt::format("{}:{}: Texture", p.source, p.line);
   try {
-    t.image = textures_->load(resolve(p, "filename", file), enc, w, w);
+    t.image = textures_->load(resolve(p, "filename", file), enc, w, w, context);
   } catch (const IoError& e) {
-    throw IoError(fmt::format("{}:{}: Texture: {}", p.source, p.line, e.what()));
+    throw IoError(fmt::format("{}: {}", context, e.what()));
   }
   // pbrt-v4 looks images up at t = 1 − (vscale·v + vdelta) with v up the image, Prism at
   // offset + scale·v' with v' = 1 − v down it (uvs are flipped in pbrt_shapes.cpp):
@@ -181,7 +187,7 @@ PbrtTexture PbrtBuilder::imagemap(const std::string& name, const PbrtParams& p) 
   const double su = p.get_float("uscale", 1.0), sv = p.get_float("vscale", 1.0);
   const double du = p.get_float("udelta", 0.0), dv = p.get_float("vdelta", 0.0);
   if (su != 1.0 || sv != 1.0 || du != 0.0 || dv != 0.0) {
-    TextureImage copy = scene_.textures[t.image];
+    TextureImage copy = textures_->image(t.image);  // the texels again, with this addressing
     copy.scale_u = static_cast<float>(su);
     copy.scale_v = static_cast<float>(sv);
     copy.offset_u = static_cast<float>(du);

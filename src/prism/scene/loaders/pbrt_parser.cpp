@@ -299,6 +299,7 @@ void PbrtBuilder::film(const std::string& type, const PbrtParams& p) {
 }
 
 Scene PbrtBuilder::finish() {
+  textures_->finish();  // the images, decoded together, before the checks of the whole file
   if (!stack_.empty()) throw SceneError(fmt::format("{} AttributeBegin without AttributeEnd", stack_.size()));
   if (current_object_) throw SceneError(fmt::format("ObjectBegin '{}' without ObjectEnd", *current_object_));
   bool any_object_mesh = false;
@@ -323,8 +324,13 @@ Scene PbrtBuilder::finish() {
 Scene parse_pbrt_scene(std::string_view text, std::string_view source, const std::filesystem::path& scene_dir,
                        const LoadOptions& options) {
   PbrtBuilder builder(scene_dir, options);
-  builder.parse(text, std::string(source), 0);
-  Scene scene = builder.finish();
+  Scene scene;
+  try {
+    builder.parse(text, std::string(source), 0);
+    scene = builder.finish();
+  } catch (...) {
+    builder.rethrow_first_texture_error(std::current_exception());
+  }
   if (scene.name.empty()) scene.name = std::filesystem::path(source).stem().string();
   return scene;
 }

@@ -1,23 +1,107 @@
 #include "prism/scene/loaders/texture_cache.h"
 
+#include <fmt/format.h>
+
+#include "prism/core/error.h"
+#include "prism/core/parallel.h"
+
 namespace prism::loaders {
 
 int TextureCache::load(const std::filesystem::path& file, TextureEncoding encoding, TextureWrap wrap_u,
-                       TextureWrap wrap_v) {
+                       TextureWrap wrap_v, std::string context, ImageCheck check) {
   std::error_code ec;
   std::filesystem::path canonical = std::filesystem::weakly_canonical(file, ec);
   if (ec) canonical = file;
   const Key key{canonical.string(), encoding, wrap_u, wrap_v};
   if (const auto it = indices_.find(key); it != indices_.end()) return it->second;
-  TextureImage image = read_texture_file(canonical, encoding, {options_.max_texture_dimension, options_.memory_budget});
-  ++files_read_;
-  image.name = file.filename().string();
-  image.wrap_u = wrap_u;
-  image.wrap_v = wrap_v;
+  // The entry's place and addressing now, its texels at the next sync.
+  TextureImage placeholder;
+  placeholder.name = file.filename().string();
+  placeholder.wrap_u = wrap_u;
+  placeholder.wrap_v = wrap_v;
   const int index = static_cast<int>(scene_.textures.size());
-  scene_.textures.push_back(std::move(image));
+  scene_.textures.push_back(std::move(placeholder));
   indices_.emplace(key, index);
+  Request request;
+  request.index = index;
+  request.path = std::move(canonical);
+  request.encoding = encoding;
+  request.context = std::move(context);
+  request.check = std::move(check);
+  pending_.push_back(std::move(request));
   return index;
+}
+
+void TextureCache::decode(Request& request) const {
+  try {
+    request.image = read_texture_file(request.path, request.encoding,
+                                      {options_.max_texture_dimension, options_.memory_budget});
+  } catch (...) {
+    request.error = std::current_exception();
+  }
+}
+
+bool TextureCache::fits_together(const std::vector<Request>& batch) const {
+  const MemoryBudget* budget = options_.memory_budget;
+  if (!budget || budget->limit_bytes() == 0) return true;
+  // One at a time, each image's decoder buffer sits only beside the texels decoded before
+  // it; all at once, every buffer is held together. So only when the whole batch fits does
+  // every reservation succeed in any order, as it would have one at a time.
+  std::uint64_t together = 0;
+  for (const Request& r : batch) {
+    const auto need = texture_file_memory_need(r.path);
+    if (!need) return false;  // OpenEXR, or a header that does not read: one at a time
+    together += need->texel_bytes + need->transient_bytes;
+  }
+  return budget->used_bytes() + together <= budget->limit_bytes();
+}
+
+void TextureCache::rethrow(const Request& request) {
+  try {
+    std::rethrow_exception(request.error);
+  } catch (const IoError& e) {
+    if (request.context.empty()) throw;
+    throw IoError(fmt::format("{}: {}", request.context, e.what()));  // which material or light asked for it
+  }
+}
+
+void TextureCache::finish() {
+  if (pending_.empty()) return;
+  std::vector<Request> batch = std::move(pending_);
+  pending_.clear();
+  if (batch.size() > 1 && fits_together(batch)) {
+    parallel_for(batch.size(), 1, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) decode(batch[i]);
+    });
+    ++parallel_batches_;
+  } else {
+    // In request order, stopping at the first failure as one-at-a-time loading would.
+    for (Request& r : batch) {
+      decode(r);
+      if (r.error) break;
+    }
+  }
+  for (Request& r : batch) {
+    if (r.error) rethrow(r);
+    if (!r.image) continue;  // not reached: every request before a failure was decoded
+    ++files_read_;
+    TextureImage& entry = scene_.textures[static_cast<std::size_t>(r.index)];
+    r.image->name = std::move(entry.name);
+    r.image->wrap_u = entry.wrap_u;
+    r.image->wrap_v = entry.wrap_v;
+    entry = std::move(*r.image);
+    if (r.check) r.check(entry);
+  }
+}
+
+const TextureImage& TextureCache::image(int index) {
+  finish();
+  return scene_.textures.at(static_cast<std::size_t>(index));
+}
+
+void TextureCache::rethrow_first_error(std::exception_ptr error) {
+  finish();  // throws the first failure among the images asked for before `error`
+  std::rethrow_exception(error);
 }
 
 }  // namespace prism::loaders

@@ -2,31 +2,35 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "prism/core/error.h"
 
 namespace prism {
 
 PiecewiseConstant1D::PiecewiseConstant1D(std::span<const float> f, float min, float max)
-    : f_(f.begin(), f.end()), min_(min), max_(max) {
-  if (f_.empty()) throw UsageError("piecewise-constant distribution needs at least one value");
+    : size_(static_cast<int>(f.size())), min_(min), max_(max) {
+  if (f.empty()) throw UsageError("piecewise-constant distribution needs at least one value");
+  if (f.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()) - 1)
+    throw UsageError("piecewise-constant distribution: too many values");
   if (!(max > min)) throw UsageError("piecewise-constant distribution needs max > min");
-  for (float v : f_)
+  for (float v : f)
     if (!(v >= 0.0f) || !std::isfinite(v))
       throw UsageError("piecewise-constant distribution needs finite, non-negative values");
   const int n = size();
   const double width = (double(max) - double(min)) / n;
   // Running sums in double so that long rows (e.g. 4k-wide environment maps) keep a
-  // monotone, accurately normalised CDF in float.
+  // monotone, accurately normalised CDF in float. The values themselves are not kept:
+  // the CDF says everything sampling and pdf() need (an environment map's distribution is
+  // then 4 bytes per texel, not 8).
   std::vector<double> running(static_cast<std::size_t>(n) + 1, 0.0);
-  for (int i = 0; i < n; ++i) running[i + 1] = running[i] + double(f_[i]) * width;
+  for (int i = 0; i < n; ++i) running[i + 1] = running[i] + double(f[i]) * width;
   integral_ = static_cast<float>(running[n]);
   cdf_.resize(static_cast<std::size_t>(n) + 1);
   if (running[n] > 0.0) {
     for (int i = 0; i <= n; ++i) cdf_[i] = static_cast<float>(running[i] / running[n]);
   } else {
-    for (int i = 0; i <= n; ++i) cdf_[i] = static_cast<float>(i) / n;
-    std::fill(f_.begin(), f_.end(), 1.0f);  // all-zero: uniform fallback
+    for (int i = 0; i <= n; ++i) cdf_[i] = static_cast<float>(i) / n;  // all-zero: uniform fallback
   }
   cdf_[n] = 1.0f;
   width_ = (max_ - min_) / n;

@@ -45,7 +45,7 @@ class PiecewiseConstant1D {
   void build_guide_table();
   float pmf(int index) const;
   float cdf(int index) const;  // mass of the cells before `index` (index ∈ [0, N])
-  int size() const { return static_cast<int>(f_.size()); }
+  int size() const { return size_; }
   // ∫ f over [min, max] (before any fallback to uniform).
   float integral() const { return integral_; }
   float min() const { return min_; }
@@ -54,7 +54,7 @@ class PiecewiseConstant1D {
  private:
   int find_cell(float u) const;
 
-  std::vector<float> f_;
+  int size_ = 0;            // N, the number of cells
   std::vector<float> cdf_;  // size N + 1, cdf_[0] = 0, cdf_[N] = 1
   // guide_[g]: the largest cell i with cdf_[i] ≤ g / guide_.size(), when built. 16 bits:
   // the wavelength lobes' three tables then fit the L1 cache beside the path state

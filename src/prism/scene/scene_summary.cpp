@@ -79,8 +79,10 @@ std::string format_scene_summary(const Scene& scene) {
   out += fmt::format("lights {} ({})\n", scene.lights.size(), counts(s.lights_by_type));
   out += fmt::format("textures {} ({})\n", s.textures, mebibytes(s.texture_bytes));
   for (const auto& t : scene.textures) {
-    const char* storage =
-        !t.has_codes() ? "float" : t.encoding == TextureEncoding::srgb ? "8-bit sRGB" : "8-bit linear";
+    const char* storage = t.has_rgbe()                          ? "RGBE"
+                          : !t.has_codes()                        ? "float"
+                          : t.encoding == TextureEncoding::srgb ? "8-bit sRGB"
+                                                                : "8-bit linear";
     out += fmt::format("  texture {} {}x{}x{} {} {}\n", t.name, t.width, t.height, t.channels, storage,
                        mebibytes(t.memory_bytes()));
   }

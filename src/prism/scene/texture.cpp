@@ -1,5 +1,7 @@
 #include "prism/scene/texture.h"
 
+#include <cmath>
+
 #include "prism/color/transfer_functions.h"
 
 namespace prism {
@@ -14,17 +16,26 @@ std::array<float, 256> make_code_values(TextureEncoding encoding) {
   return values;
 }
 
+// stb_image's conversion (stbi__hdr_convert): (float) ldexp(1.0f, e − 136), then the
+// mantissa times it; exponent 0 is black.
+std::array<float, 256> make_rgbe_exponent_scales() {
+  std::array<float, 256> scales{};
+  for (int e = 1; e < 256; ++e) scales[static_cast<std::size_t>(e)] = static_cast<float>(std::ldexp(1.0f, e - 136));
+  return scales;
+}
+
 }  // namespace
 
 namespace detail {
 const std::array<float, 256> kSrgbCodeValues = make_code_values(TextureEncoding::srgb);
 const std::array<float, 256> kLinearCodeValues = make_code_values(TextureEncoding::linear);
+const std::array<float, 256> kRgbeExponentScales = make_rgbe_exponent_scales();
 }  // namespace detail
 
 std::vector<float> TextureImage::linear_values() const {
-  if (!has_codes()) return texels;
-  std::vector<float> values(codes.size());
-  for (std::size_t i = 0; i < codes.size(); ++i) values[i] = value(i);
+  if (!has_codes() && !has_rgbe()) return texels;
+  std::vector<float> values(sample_count());
+  for (std::size_t i = 0; i < values.size(); ++i) values[i] = value(i);
   return values;
 }
 

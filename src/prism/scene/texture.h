@@ -1,9 +1,11 @@
 #pragma once
 // Texture images as loaded, with the addressing the material asked for. Texels are linear
-// values: floats (HDR and EXR files, 16-bit PNGs, images made in code), or the 8-bit codes
-// of a PNG or JPEG kept as they are and decoded at each lookup through a 256-entry table
-// (the sRGB EOTF for colour textures, code/255 for data textures and alpha), the values
-// decoding them to floats at load time gave, in a quarter of the memory.
+// values: floats (EXR files, 16-bit PNGs, images made in code), the 8-bit codes of a PNG
+// or JPEG kept as they are and decoded at each lookup through a 256-entry table (the sRGB
+// EOTF for colour textures, code/255 for data textures and alpha), the values decoding
+// them to floats at load time gave, in a quarter of the memory; or the shared-exponent
+// texels of a Radiance .hdr file (Ward 1991, "Real Pixels", Graphics Gems II), 4 bytes per
+// RGB texel instead of 12, decoded at each lookup to exactly the floats stb_image gives.
 #include <array>
 #include <cstdint>
 #include <string>
@@ -32,6 +34,17 @@ inline const std::array<float, 256>& code_values(TextureEncoding encoding) {
   return encoding == TextureEncoding::srgb ? detail::kSrgbCodeValues : detail::kLinearCodeValues;
 }
 
+namespace detail {
+// 2^(e − 136) for exponent byte e > 0, and 0 for e = 0 (stb_image's RGBE conversion).
+extern const std::array<float, 256> kRgbeExponentScales;
+}  // namespace detail
+
+// One channel of an RGBE texel: mantissa · 2^(exponent − 136), as stb_image computes it
+// (an 8-bit mantissa times a power of two: exact in float).
+inline float rgbe_value(std::uint8_t mantissa, std::uint8_t exponent) {
+  return static_cast<float>(mantissa) * detail::kRgbeExponentScales[exponent];
+}
+
 // Whether channel `channel` of a `channels`-channel image is alpha (the 2nd of grey+alpha,
 // the 4th of RGBA), which is linear whatever the colour channels' encoding.
 constexpr bool is_alpha_channel(int channel, int channels) {
@@ -43,31 +56,43 @@ struct TextureImage {
   int width = 0, height = 0;
   int channels = 0;  // 1 to 4, interleaved
   // The texels, width × height × channels, row 0 at the top: `texels` for float images,
-  // `codes` (with `encoding`) for 8-bit ones. One of the two is empty.
+  // `codes` (with `encoding`) for 8-bit ones, `rgbe` (r, g, b mantissas and the shared
+  // exponent, 4 bytes per texel; channels = 3) for Radiance .hdr ones. Two are empty.
   std::vector<float> texels;
   std::vector<std::uint8_t> codes;
   TextureEncoding encoding = TextureEncoding::linear;  // of `codes`
+  std::vector<std::uint8_t> rgbe{};
   TextureWrap wrap_u = TextureWrap::repeat, wrap_v = TextureWrap::repeat;
   // KHR_texture_transform / pbrt uv mapping: uv' = offset + scale ⊙ rotate(uv)
   float offset_u = 0.0f, offset_v = 0.0f, scale_u = 1.0f, scale_v = 1.0f, rotation_radians = 0.0f;
 
   bool has_codes() const { return !codes.empty(); }
-  std::size_t sample_count() const { return has_codes() ? codes.size() : texels.size(); }
+  bool has_rgbe() const { return !rgbe.empty(); }
+  std::size_t sample_count() const {
+    return has_codes() ? codes.size() : has_rgbe() ? rgbe.size() / 4 * 3 : texels.size();
+  }
   // Sample i (texel i / channels, channel i % channels) as a linear value.
   float value(std::size_t i) const {
-    if (!has_codes()) return texels[i];
-    const bool alpha = is_alpha_channel(static_cast<int>(i % static_cast<std::size_t>(channels)), channels);
-    return code_values(alpha ? TextureEncoding::linear : encoding)[codes[i]];
+    if (has_codes()) {
+      const bool alpha = is_alpha_channel(static_cast<int>(i % static_cast<std::size_t>(channels)), channels);
+      return code_values(alpha ? TextureEncoding::linear : encoding)[codes[i]];
+    }
+    if (has_rgbe()) return rgbe_value(rgbe[i / 3 * 4 + i % 3], rgbe[i / 3 * 4 + 3]);
+    return texels[i];
   }
   // Every sample's linear value, in order (the float texels, or the codes decoded).
   std::vector<float> linear_values() const;
-  std::size_t memory_bytes() const { return texels.size() * sizeof(float) + codes.size(); }
+  std::size_t memory_bytes() const { return texels.size() * sizeof(float) + codes.size() + rgbe.size(); }
 };
 
 // Texel (x, y), row 0 at the top, as RGB: grey and grey+alpha images carry their value in
 // the first channel, which stands for all three (alpha is not colour).
 inline Vec3f texel_rgb(const TextureImage& t, int x, int y) {
-  const std::size_t i = (static_cast<std::size_t>(y) * t.width + x) * t.channels;
+  const std::size_t texel = static_cast<std::size_t>(y) * t.width + x, i = texel * t.channels;
+  if (t.has_rgbe()) {
+    const std::uint8_t* p = &t.rgbe[texel * 4];
+    return {rgbe_value(p[0], p[3]), rgbe_value(p[1], p[3]), rgbe_value(p[2], p[3])};
+  }
   if (!t.has_codes()) {
     const float* p = &t.texels[i];
     return t.channels >= 3 ? Vec3f(p[0], p[1], p[2]) : Vec3f(p[0]);

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <limits>
 #include <cmath>
 #include <cstdint>
@@ -56,13 +57,46 @@ std::optional<StbHeader> stb_header(std::span<const unsigned char> bytes) {
   return h;
 }
 
-// The texels stay (8-bit codes as they are, anything else as floats); the decoder's own
-// buffer of `decoded_bytes_per_sample` bytes per sample lives only while decoding.
+// The texels stay (8-bit codes as they are, Radiance texels as RGBE, 4 bytes per texel,
+// anything else as floats); the decoder's own buffer of `decoded_bytes_per_sample` bytes
+// per sample lives only while decoding.
 TextureMemoryNeed texel_memory(long width, long height, int channels, int decoded_bytes_per_sample) {
-  const std::uint64_t samples = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) *
-                                static_cast<std::uint64_t>(channels);
-  const std::uint64_t kept_bytes_per_sample = decoded_bytes_per_sample == 1 ? 1 : sizeof(float);
-  return {samples * kept_bytes_per_sample, samples * static_cast<std::uint64_t>(decoded_bytes_per_sample)};
+  const std::uint64_t texels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  const std::uint64_t samples = texels * static_cast<std::uint64_t>(channels);
+  const std::uint64_t kept_bytes = decoded_bytes_per_sample == 1   ? samples
+                                   : decoded_bytes_per_sample == 4 ? texels * 4  // RGBE (decode_with_stb)
+                                                                   : samples * sizeof(float);
+  return {kept_bytes, samples * static_cast<std::uint64_t>(decoded_bytes_per_sample)};
+}
+
+// The RGBE texels (r, g, b mantissas and a shared exponent) that decode (texture.h's
+// rgbe_value) to exactly `rgb`, three floats per texel as stb_image gave them from a .hdr
+// file; nothing when some texel has none (a float decoded from RGBE has one: its exponent
+// is that of the largest channel, normalised so that its mantissa is ≥ 128, which only
+// multiplies the other mantissas by powers of two). Checked by decoding every texel back.
+std::optional<std::vector<std::uint8_t>> rgbe_of(const float* rgb, std::size_t texels) {
+  std::vector<std::uint8_t> out(texels * 4);
+  for (std::size_t t = 0; t < texels; ++t) {
+    const float* p = rgb + 3 * t;
+    std::uint8_t* q = &out[4 * t];
+    const float largest = std::max({p[0], p[1], p[2]});
+    if (largest > 0.0f) {
+      int exponent = 0;
+      std::frexp(largest, &exponent);  // largest = f · 2^exponent, f ∈ [½, 1)
+      const int e = exponent + 128;    // mantissa = value / 2^(e − 136) = f · 256 ∈ [128, 256)
+      if (e < 1 || e > 255) return std::nullopt;
+      for (int k = 0; k < 3; ++k) {
+        const float m = p[k] / detail::kRgbeExponentScales[static_cast<std::size_t>(e)];
+        if (!(m >= 0.0f && m <= 255.0f)) return std::nullopt;
+        q[k] = static_cast<std::uint8_t>(m);
+      }
+      q[3] = static_cast<std::uint8_t>(e);
+    }
+    for (int k = 0; k < 3; ++k)
+      if (std::bit_cast<std::uint32_t>(rgbe_value(q[k], q[3])) != std::bit_cast<std::uint32_t>(p[k]))
+        return std::nullopt;
+  }
+  return out;
 }
 
 void reserve_texels(const TextureLimits& limits, long width, long height, int channels, int decoded_bytes_per_sample,
@@ -267,10 +301,19 @@ TextureImage decode_with_stb(std::span<const unsigned char> bytes, std::string_v
     if (input.ran_past_end()) throw IoError(fmt::format("cannot read image '{}': the file is truncated", name));
     image.width = width, image.height = height, image.channels = channels;
   };
-  if (decoded_bytes_per_sample == 4) {  // Radiance HDR: floats
+  if (decoded_bytes_per_sample == 4) {  // Radiance HDR: floats from stb_image, kept as RGBE
     const auto pixels = input.decode(&stbi_loadf_from_callbacks, width, height, channels);
     check(pixels.get());
-    image.texels.assign(pixels.get(), pixels.get() + static_cast<std::size_t>(width) * height * channels);
+    const std::size_t texels = static_cast<std::size_t>(width) * height;
+    if (auto rgbe = channels == 3 ? rgbe_of(pixels.get(), texels) : std::nullopt) {
+      image.rgbe = std::move(*rgbe);
+    } else {
+      // Not reached for stb_image's output; floats then, and the budget told of the difference.
+      if (limits.budget)
+        limits.budget->reserve(texels * channels * sizeof(float) - texels * 4, 0,
+                               fmt::format("texture '{}' ({}x{}, {} channels)", name, width, height, channels));
+      image.texels.assign(pixels.get(), pixels.get() + texels * channels);
+    }
   } else if (decoded_bytes_per_sample == 2) {
     const auto pixels = input.decode(&stbi_load_16_from_callbacks, width, height, channels);
     check(pixels.get());

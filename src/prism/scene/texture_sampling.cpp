@@ -69,12 +69,23 @@ struct CodedTexels {
   }
 };
 
+// RGB texels of a Radiance image: three mantissas and a shared exponent (texture.h).
+struct RgbeTexels {
+  const std::uint8_t* rgbe;
+  int width;
+  [[gnu::always_inline]] TexelRgba operator()(int xi, int yi) const {
+    const std::uint8_t* p = rgbe + (static_cast<std::size_t>(yi) * width + xi) * 4;
+    return {rgbe_value(p[0], p[3]), rgbe_value(p[1], p[3]), rgbe_value(p[2], p[3]), 1.0f};
+  }
+};
+
 // Calls f with the level's texel reader.
 template <class F>
 [[gnu::always_inline]] inline TexelRgba with_texels(const MipLevel& level, int channels, F&& f) {
   if (level.has_codes())
     return f(CodedTexels{level.code_data(), level.width, channels, level.colour_values,
                          code_values(TextureEncoding::linear).data()});
+  if (level.has_rgbe()) return f(RgbeTexels{level.borrowed_rgbe, level.width});
   return f(FloatTexels{level.data(), level.width, channels});
 }
 
@@ -84,6 +95,7 @@ template <class F>
   if (t.has_codes())
     return f(CodedTexels{t.codes.data(), t.width, t.channels, code_values(t.encoding).data(),
                          code_values(TextureEncoding::linear).data()});
+  if (t.has_rgbe()) return f(RgbeTexels{t.rgbe.data(), t.width});
   return f(FloatTexels{t.texels.data(), t.width, t.channels});
 }
 
@@ -228,6 +240,8 @@ MipPyramid base_level_pyramid(const TextureImage& texture) {
   if (texture.has_codes()) {
     base.borrowed_codes = texture.codes.data();
     base.colour_values = code_values(texture.encoding).data();
+  } else if (texture.has_rgbe()) {
+    base.borrowed_rgbe = texture.rgbe.data();
   } else {
     base.borrowed = texture.texels.data();
   }
@@ -241,12 +255,18 @@ MipPyramid build_mip_pyramid(const TextureImage& texture) {
   if (!texture.has_codes()) {
     while (pyramid.levels.back().width > 1 || pyramid.levels.back().height > 1) {
       const MipLevel& fine = pyramid.levels.back();
-      const float* values = fine.data();
       MipLevel coarse;
       coarse.width = std::max(1, fine.width / 2);
       coarse.height = std::max(1, fine.height / 2);
-      coarse.texels = box_filter_level([values, c](std::size_t t, int k) { return values[t * c + k]; }, fine.width,
-                                       fine.height, coarse.width, coarse.height, c);
+      if (fine.has_rgbe()) {  // level 0 of a Radiance image; float levels below it
+        const std::uint8_t* rgbe = fine.borrowed_rgbe;
+        coarse.texels = box_filter_level([rgbe](std::size_t t, int k) { return rgbe_value(rgbe[t * 4 + k], rgbe[t * 4 + 3]); },
+                                         fine.width, fine.height, coarse.width, coarse.height, c);
+      } else {
+        const float* values = fine.data();
+        coarse.texels = box_filter_level([values, c](std::size_t t, int k) { return values[t * c + k]; }, fine.width,
+                                         fine.height, coarse.width, coarse.height, c);
+      }
       pyramid.levels.push_back(std::move(coarse));
     }
     return pyramid;

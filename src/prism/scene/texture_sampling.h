@@ -21,7 +21,8 @@ using TexelRgba = std::array<float, 4>;
 
 // One level of a pyramid, in its image's storage: floats, or 8-bit codes (then
 // `colour_values` is set: the code → linear value table of its colour channels; alpha is
-// decoded linearly, as in TextureImage).
+// decoded linearly, as in TextureImage). Level 0 of a Radiance image is its RGBE texels
+// (borrowed_rgbe); its coarser levels are floats.
 struct MipLevel {
   int width = 0, height = 0;
   std::vector<float> texels;        // channels per texel, as in TextureImage; empty where borrowed
@@ -29,9 +30,11 @@ struct MipLevel {
   std::vector<std::uint8_t> codes;  // the same for 8-bit levels
   const std::uint8_t* borrowed_codes = nullptr;
   const float* colour_values = nullptr;
+  const std::uint8_t* borrowed_rgbe = nullptr;  // level 0 of an RGBE image: 4 bytes per texel
   const float* data() const { return borrowed != nullptr ? borrowed : texels.data(); }
   const std::uint8_t* code_data() const { return borrowed_codes != nullptr ? borrowed_codes : codes.data(); }
   bool has_codes() const { return colour_values != nullptr; }
+  bool has_rgbe() const { return borrowed_rgbe != nullptr; }
   // Bytes this level holds itself (a borrowed level 0 holds none).
   std::size_t owned_bytes() const { return texels.size() * sizeof(float) + codes.size(); }
 };

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "prism/core/error.h"
 #include "prism/io/exr.h"
 #include "prism/io/png.h"
@@ -49,6 +51,26 @@ TEST(TextureFile, RadianceHdrAndExrAreLinearFloats) {
   EXPECT_NEAR(h.value(0), 1.0f, 1e-6f);
   EXPECT_NEAR(h.value(1), 0.5f, 1e-6f);
   EXPECT_NEAR(h.value(2), 0.25f, 1e-6f);
+  // Kept as RGBE, 4 bytes per texel: texels with and without a normalised mantissa, black,
+  // the brightest and the dimmest exponents decode to stb_image's floats exactly (its
+  // formula, mantissa · 2^(e − 136); e = 1 gives subnormal floats).
+  std::string wide = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 6\n";
+  const unsigned char texels[6][4] = {{128, 64, 32, 129}, {3, 100, 7, 140}, {0, 0, 0, 0},
+                                      {255, 254, 1, 255}, {200, 9, 0, 1},   {0, 0, 0, 77}};
+  for (const auto& t : texels) wide.append(reinterpret_cast<const char*>(t), 4);
+  dir.write("b.hdr", wide);
+  const TextureImage rgbe = read_texture_file(dir / "b.hdr", TextureEncoding::srgb, 32768);
+  ASSERT_TRUE(rgbe.has_rgbe());
+  EXPECT_TRUE(rgbe.texels.empty());
+  EXPECT_EQ(rgbe.memory_bytes(), 6u * 4u);
+  for (int t = 0; t < 6; ++t)
+    for (int k = 0; k < 3; ++k) {
+      const float expected =
+          texels[t][3] == 0 ? 0.0f : texels[t][k] * static_cast<float>(std::ldexp(1.0f, texels[t][3] - 136));
+      EXPECT_EQ(rgbe.value(static_cast<std::size_t>(3 * t + k)), expected) << t << " " << k;
+      EXPECT_EQ(texel_rgb(rgbe, t, 0)[static_cast<std::size_t>(k)], expected) << t << " " << k;
+    }
+  EXPECT_EQ(rgbe.linear_values().size(), 18u);
   write_exr(dir / "a.exr", ImageRgbF{1, 1, {2.0f, 3.0f, 4.0f}}, kRec709);
   const TextureImage e = read_texture_file(dir / "a.exr", TextureEncoding::srgb, 32768);
   EXPECT_EQ(e.linear_values(), (std::vector<float>{2.0f, 3.0f, 4.0f}));

@@ -220,6 +220,18 @@ TextureImage as_floats(const TextureImage& coded) {
   return t;
 }
 
+// The floats an RGBE image decodes to, by stb_image's formula: mantissa · 2^(e − 136),
+// black for e = 0.
+TextureImage as_floats_of_rgbe(const TextureImage& rgbe) {
+  TextureImage t = rgbe;
+  t.rgbe.clear();
+  for (std::size_t i = 0; i < rgbe.rgbe.size(); i += 4)
+    for (std::size_t k = 0; k < 3; ++k)
+      t.texels.push_back(rgbe.rgbe[i + 3] == 0 ? 0.0f
+                                               : rgbe.rgbe[i + k] * static_cast<float>(std::ldexp(1.0f, rgbe.rgbe[i + 3] - 136)));
+  return t;
+}
+
 // Lookups in an image kept as 8-bit codes give bitwise what the floats they decode to give
 // (the decode tables are the load-time decoder's), colour channels through the sRGB EOTF
 // and alpha linearly.
@@ -248,6 +260,43 @@ TEST(TextureSampling, EightBitImagesSampleAsTheirDecodedFloats) {
             << n;
       }
     }
+}
+
+// A Radiance image kept as RGBE samples as the floats it decodes to, bitwise: at level 0
+// (borrowed, 4 bytes per texel) and through its float levels below.
+TEST(TextureSampling, RgbeImagesSampleAsTheirDecodedFloats) {
+  TextureImage rgbe;
+  rgbe.width = 9;
+  rgbe.height = 6;
+  rgbe.channels = 3;
+  std::uint32_t state = 3;
+  for (int t = 0; t < 9 * 6; ++t) {
+    for (int k = 0; k < 4; ++k) {
+      state = state * 1664525u + 1013904223u;
+      rgbe.rgbe.push_back(static_cast<std::uint8_t>(k < 3 ? state >> 24 : 120 + (state >> 28)));
+    }
+  }
+  rgbe.rgbe[3] = 0;  // a black texel: exponent 0
+  const TextureImage floats = as_floats_of_rgbe(rgbe);
+  ASSERT_EQ(floats.texels.size(), 9u * 6u * 3u);
+  EXPECT_EQ(floats.texels[0], 0.0f);
+  EXPECT_EQ(rgbe.memory_bytes(), 9u * 6u * 4u);
+  for (int y = 0; y < 6; ++y)
+    for (int x = 0; x < 9; ++x) ASSERT_EQ(texel_rgb(rgbe, x, y), texel_rgb(floats, x, y)) << x << " " << y;
+  const MipPyramid rgbe_pyramid = build_mip_pyramid(rgbe), float_pyramid = build_mip_pyramid(floats);
+  EXPECT_EQ(rgbe_pyramid.levels[0].borrowed_rgbe, rgbe.rgbe.data());  // borrowed, not copied
+  ASSERT_EQ(rgbe_pyramid.levels.size(), float_pyramid.levels.size());
+  for (std::size_t l = 1; l < rgbe_pyramid.levels.size(); ++l)
+    EXPECT_EQ(rgbe_pyramid.levels[l].texels, float_pyramid.levels[l].texels) << l;
+  for (int n = 0; n < 200; ++n) {
+    const Vec2f uv{static_cast<float>(n % 23) / 9.0f - 0.7f, static_cast<float>(n % 19) / 7.0f - 0.4f};
+    const float lod = static_cast<float>(n % 7) * 0.4f;
+    ASSERT_EQ(sample_bilinear(rgbe, uv), sample_bilinear(floats, uv)) << n;
+    ASSERT_EQ(sample_trilinear(rgbe_pyramid, uv, lod), sample_trilinear(float_pyramid, uv, lod)) << n;
+    ASSERT_EQ(texel_fetch(rgbe_pyramid.levels[0], 3, n % 11 - 1, n % 7, TextureWrap::repeat, TextureWrap::mirror),
+              texel_fetch(float_pyramid.levels[0], 3, n % 11 - 1, n % 7, TextureWrap::repeat, TextureWrap::mirror))
+        << n;
+  }
 }
 
 // The levels of an 8-bit image are 8-bit, level 0 borrowed from the image; every texel of

@@ -1,6 +1,7 @@
-// libFuzzer target: the texture image readers (PNG, JPEG, Radiance .hdr through stb_image;
-// OpenEXR through prism::read_exr, which needs a file). The size limit is lowered so that
-// headers claiming huge images are refused rather than exhausting the fuzzer's memory.
+// libFuzzer target: the texture image readers (PNG and JPEG through stb_image, Radiance .hdr
+// through scene/radiance_hdr.h, OpenEXR through prism::read_exr, which needs a file). The
+// size limit is lowered so that headers claiming huge images are refused rather than
+// exhausting the fuzzer's memory.
 #include <unistd.h>
 
 #include <cstddef>

@@ -4,8 +4,9 @@
 // or JPEG kept as they are and decoded at each lookup through a 256-entry table (the sRGB
 // EOTF for colour textures, code/255 for data textures and alpha), the values decoding
 // them to floats at load time gave, in a quarter of the memory; or the shared-exponent
-// texels of a Radiance .hdr file (Ward 1991, "Real Pixels", Graphics Gems II), 4 bytes per
-// RGB texel instead of 12, decoded at each lookup to exactly the floats stb_image gives.
+// texels of a Radiance .hdr file as it holds them (Ward 1991, "Real Pixels", Graphics Gems
+// II; scene/radiance_hdr.h), 4 bytes per RGB texel instead of 12, decoded at each lookup
+// to exactly the floats stb_image's reader gives.
 #include <array>
 #include <cstdint>
 #include <string>

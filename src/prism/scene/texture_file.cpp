@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <limits>
 #include <cmath>
 #include <cstdint>
@@ -21,6 +20,7 @@
 #include "prism/color/transfer_functions.h"
 #include "prism/core/error.h"
 #include "prism/io/exr.h"
+#include "prism/scene/radiance_hdr.h"
 
 namespace prism {
 namespace {
@@ -41,9 +41,9 @@ void check_dimensions(long width, long height, int max_dimension, std::string_vi
                               max_dimension, max_dimension));
 }
 
-// What stb reports of an image from its header: the size, channels and the bytes of each
-// decoded sample (4: Radiance HDR floats, 2: 16-bit PNG, 1: 8-bit). Nothing when the
-// header does not read (stbi_failure_reason says why) or the data is over 2 GiB.
+// What stb reports of a PNG or JPEG from its header: the size, channels and the bytes of
+// each decoded sample (2: 16-bit PNG, 1: 8-bit). Nothing when the header does not read
+// (stbi_failure_reason says why) or the data is over 2 GiB.
 struct StbHeader {
   int width = 0, height = 0, channels = 0, decoded_bytes_per_sample = 1;
 };
@@ -52,51 +52,22 @@ std::optional<StbHeader> stb_header(std::span<const unsigned char> bytes) {
   const int size = static_cast<int>(bytes.size());
   StbHeader h;
   if (!stbi_info_from_memory(bytes.data(), size, &h.width, &h.height, &h.channels)) return std::nullopt;
-  h.decoded_bytes_per_sample =
-      stbi_is_hdr_from_memory(bytes.data(), size) ? 4 : stbi_is_16_bit_from_memory(bytes.data(), size) ? 2 : 1;
+  h.decoded_bytes_per_sample = stbi_is_16_bit_from_memory(bytes.data(), size) ? 2 : 1;
   return h;
 }
 
-// The texels stay (8-bit codes as they are, Radiance texels as RGBE, 4 bytes per texel,
-// anything else as floats); the decoder's own buffer of `decoded_bytes_per_sample` bytes
-// per sample lives only while decoding.
+// The texels stay (8-bit codes as they are, anything else as floats); the decoder's own
+// buffer of `decoded_bytes_per_sample` bytes per sample lives only while decoding.
 TextureMemoryNeed texel_memory(long width, long height, int channels, int decoded_bytes_per_sample) {
-  const std::uint64_t texels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
-  const std::uint64_t samples = texels * static_cast<std::uint64_t>(channels);
-  const std::uint64_t kept_bytes = decoded_bytes_per_sample == 1   ? samples
-                                   : decoded_bytes_per_sample == 4 ? texels * 4  // RGBE (decode_with_stb)
-                                                                   : samples * sizeof(float);
-  return {kept_bytes, samples * static_cast<std::uint64_t>(decoded_bytes_per_sample)};
+  const std::uint64_t samples = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) *
+                                static_cast<std::uint64_t>(channels);
+  const std::uint64_t kept_bytes_per_sample = decoded_bytes_per_sample == 1 ? 1 : sizeof(float);
+  return {samples * kept_bytes_per_sample, samples * static_cast<std::uint64_t>(decoded_bytes_per_sample)};
 }
 
-// The RGBE texels (r, g, b mantissas and a shared exponent) that decode (texture.h's
-// rgbe_value) to exactly `rgb`, three floats per texel as stb_image gave them from a .hdr
-// file; nothing when some texel has none (a float decoded from RGBE has one: its exponent
-// is that of the largest channel, normalised so that its mantissa is ≥ 128, which only
-// multiplies the other mantissas by powers of two). Checked by decoding every texel back.
-std::optional<std::vector<std::uint8_t>> rgbe_of(const float* rgb, std::size_t texels) {
-  std::vector<std::uint8_t> out(texels * 4);
-  for (std::size_t t = 0; t < texels; ++t) {
-    const float* p = rgb + 3 * t;
-    std::uint8_t* q = &out[4 * t];
-    const float largest = std::max({p[0], p[1], p[2]});
-    if (largest > 0.0f) {
-      int exponent = 0;
-      std::frexp(largest, &exponent);  // largest = f · 2^exponent, f ∈ [½, 1)
-      const int e = exponent + 128;    // mantissa = value / 2^(e − 136) = f · 256 ∈ [128, 256)
-      if (e < 1 || e > 255) return std::nullopt;
-      for (int k = 0; k < 3; ++k) {
-        const float m = p[k] / detail::kRgbeExponentScales[static_cast<std::size_t>(e)];
-        if (!(m >= 0.0f && m <= 255.0f)) return std::nullopt;
-        q[k] = static_cast<std::uint8_t>(m);
-      }
-      q[3] = static_cast<std::uint8_t>(e);
-    }
-    for (int k = 0; k < 3; ++k)
-      if (std::bit_cast<std::uint32_t>(rgbe_value(q[k], q[3])) != std::bit_cast<std::uint32_t>(p[k]))
-        return std::nullopt;
-  }
-  return out;
+// A Radiance picture keeps its RGBE texels, 4 bytes each, read straight into place.
+TextureMemoryNeed radiance_memory(long width, long height) {
+  return {static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) * 4, 0};
 }
 
 void reserve_texels(const TextureLimits& limits, long width, long height, int channels, int decoded_bytes_per_sample,
@@ -276,6 +247,25 @@ std::optional<std::vector<unsigned char>> without_empty_idat_chunks(std::span<co
   return out;
 }
 
+// Radiance pictures keep their RGBE texels (texture.h), read by Prism's own reader
+// (radiance_hdr.h): linear whatever the encoding asked.
+TextureImage decode_radiance(std::span<const unsigned char> bytes, std::string_view name, const TextureLimits& limits) {
+  const RadianceHeader header = read_radiance_header(bytes, name);
+  check_dimensions(header.width, header.height, limits.max_dimension, name);
+  if (limits.budget) {
+    const TextureMemoryNeed need = radiance_memory(header.width, header.height);
+    limits.budget->reserve(need.texel_bytes, need.transient_bytes,
+                           fmt::format("texture '{}' ({}x{}, 3 channels)", name, header.width, header.height));
+  }
+  TextureImage image;
+  image.name = std::string(name);
+  image.rgbe = read_radiance_texels(bytes, header, name);
+  image.width = static_cast<int>(header.width);
+  image.height = static_cast<int>(header.height);
+  image.channels = 3;
+  return image;
+}
+
 TextureImage decode_with_stb(std::span<const unsigned char> bytes, std::string_view name, TextureEncoding encoding,
                              const TextureLimits& limits) {
   if (detect_image_format(bytes) == ImageFileFormat::jpeg) check_jpeg_huffman_tables(bytes, name);
@@ -301,20 +291,7 @@ TextureImage decode_with_stb(std::span<const unsigned char> bytes, std::string_v
     if (input.ran_past_end()) throw IoError(fmt::format("cannot read image '{}': the file is truncated", name));
     image.width = width, image.height = height, image.channels = channels;
   };
-  if (decoded_bytes_per_sample == 4) {  // Radiance HDR: floats from stb_image, kept as RGBE
-    const auto pixels = input.decode(&stbi_loadf_from_callbacks, width, height, channels);
-    check(pixels.get());
-    const std::size_t texels = static_cast<std::size_t>(width) * height;
-    if (auto rgbe = channels == 3 ? rgbe_of(pixels.get(), texels) : std::nullopt) {
-      image.rgbe = std::move(*rgbe);
-    } else {
-      // Not reached for stb_image's output; floats then, and the budget told of the difference.
-      if (limits.budget)
-        limits.budget->reserve(texels * channels * sizeof(float) - texels * 4, 0,
-                               fmt::format("texture '{}' ({}x{}, {} channels)", name, width, height, channels));
-      image.texels.assign(pixels.get(), pixels.get() + texels * channels);
-    }
-  } else if (decoded_bytes_per_sample == 2) {
+  if (decoded_bytes_per_sample == 2) {
     const auto pixels = input.decode(&stbi_load_16_from_callbacks, width, height, channels);
     check(pixels.get());
     decode_16_bit_codes(pixels.get(), image, encoding);
@@ -466,8 +443,9 @@ TextureImage decode_texture_memory(std::span<const unsigned char> bytes, std::st
   switch (detect_image_format(bytes)) {
     case ImageFileFormat::png:
     case ImageFileFormat::jpeg:
-    case ImageFileFormat::radiance_hdr:
       return decode_with_stb(bytes, name, encoding, limits);
+    case ImageFileFormat::radiance_hdr:
+      return decode_radiance(bytes, name, limits);
     case ImageFileFormat::openexr:
       throw IoError(fmt::format("cannot read image '{}': OpenEXR images are read from files only", name));
     case ImageFileFormat::unknown:
@@ -477,10 +455,18 @@ TextureImage decode_texture_memory(std::span<const unsigned char> bytes, std::st
 }
 
 std::optional<TextureMemoryNeed> texture_memory_need(std::span<const unsigned char> bytes) {
-  // The numbers decode_with_stb reserves, from the same header.
+  // The numbers decode_radiance and decode_with_stb reserve, from the same header.
   const ImageFileFormat format = detect_image_format(bytes);
-  if (format != ImageFileFormat::png && format != ImageFileFormat::jpeg && format != ImageFileFormat::radiance_hdr)
-    return std::nullopt;
+  if (format == ImageFileFormat::radiance_hdr) {
+    try {
+      const RadianceHeader header = read_radiance_header(bytes, "");
+      if (header.width < 1 || header.height < 1) return std::nullopt;
+      return radiance_memory(header.width, header.height);
+    } catch (const IoError&) {
+      return std::nullopt;
+    }
+  }
+  if (format != ImageFileFormat::png && format != ImageFileFormat::jpeg) return std::nullopt;
   const auto header = stb_header(bytes);
   if (!header) return std::nullopt;
   return texel_memory(header->width, header->height, header->channels, header->decoded_bytes_per_sample);

@@ -57,6 +57,8 @@ void PiecewiseConstant1D::build_guide_table() {
     while (static_cast<int>(i) + 1 < n && double(cdf_[i + 1]) <= u) ++i;
     guide_[g] = static_cast<std::uint16_t>(i);
   }
+  guide_cells_ = static_cast<double>(guide_.size());
+  last_guide_ = guide_.size() - 1;
 }
 
 float PiecewiseConstant1D::pmf(int index) const {

@@ -60,6 +60,8 @@ class PiecewiseConstant1D {
   // the wavelength lobes' three tables then fit the L1 cache beside the path state
   // (distributions of more than 65536 cells keep the binary search).
   std::vector<std::uint16_t> guide_;
+  double guide_cells_ = 0.0;     // guide_.size() as a double (a size_t's conversion is several instructions)
+  std::size_t last_guide_ = 0;   // guide_.size() − 1
   float integral_ = 0.0f;
   float min_ = 0.0f, max_ = 1.0f;
   float width_ = 1.0f;          // (max − min) / N
@@ -74,9 +76,9 @@ inline int PiecewiseConstant1D::cell(float x) const {
 
 inline int PiecewiseConstant1D::find_cell(float u) const {
   // Largest i with cdf_[i] ≤ u, skipping zero-width cells (they have f = 0).
-  if (!guide_.empty() && u >= 0.0f) {
+  if (guide_cells_ > 0.0 && u >= 0.0f) {
     // guide_[g] ≤ the answer for every u ≥ g / size, so walking forward finds it.
-    const std::size_t g = std::min(static_cast<std::size_t>(double(u) * double(guide_.size())), guide_.size() - 1);
+    const std::size_t g = std::min(static_cast<std::size_t>(double(u) * guide_cells_), last_guide_);
     int i = static_cast<int>(guide_[g]);
     // The guide is fine enough that one step forward is all it takes wherever cells have
     // mass (build_guide_table): that step without a branch, whose outcome is a coin flip,

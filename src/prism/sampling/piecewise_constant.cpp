@@ -83,13 +83,23 @@ float PiecewiseConstant1D::pdf(float x) const {
   return pmf(cell(x)) / width_;
 }
 
-PiecewiseConstant2D::PiecewiseConstant2D(std::span<const float> f, int nu, int nv) {
-  if (nu < 1 || nv < 1 || f.size() != static_cast<std::size_t>(nu) * static_cast<std::size_t>(nv))
-    throw UsageError("piecewise-constant 2D distribution: size does not match nu × nv");
+PiecewiseConstant2D::PiecewiseConstant2D(std::span<const float> f, int nu, int nv)
+    : PiecewiseConstant2D(nu, nv, [&](int v, std::span<float> row) {
+        if (f.size() != static_cast<std::size_t>(nu) * static_cast<std::size_t>(nv))
+          throw UsageError("piecewise-constant 2D distribution: size does not match nu × nv");
+        const auto first = f.begin() + static_cast<std::ptrdiff_t>(v) * nu;
+        std::copy(first, first + nu, row.begin());
+      }) {}
+
+PiecewiseConstant2D::PiecewiseConstant2D(int nu, int nv,
+                                         const std::function<void(int v, std::span<float> row)>& row_values) {
+  if (nu < 1 || nv < 1) throw UsageError("piecewise-constant 2D distribution: size does not match nu × nv");
   conditional_.reserve(static_cast<std::size_t>(nv));
   std::vector<float> row_integrals(static_cast<std::size_t>(nv));
+  std::vector<float> row(static_cast<std::size_t>(nu));
   for (int v = 0; v < nv; ++v) {
-    conditional_.emplace_back(f.subspan(static_cast<std::size_t>(v) * nu, static_cast<std::size_t>(nu)));
+    row_values(v, row);
+    conditional_.emplace_back(row);
     row_integrals[v] = conditional_.back().integral();
   }
   marginal_ = PiecewiseConstant1D(row_integrals);

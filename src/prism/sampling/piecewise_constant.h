@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -110,6 +111,9 @@ class PiecewiseConstant2D {
  public:
   PiecewiseConstant2D() = default;
   PiecewiseConstant2D(std::span<const float> f, int nu, int nv);
+  // The same, row by row: row_values(v, row) writes the nu values of row v (rows in order),
+  // so the whole grid never exists at once (an environment map's would be 4 bytes per texel).
+  PiecewiseConstant2D(int nu, int nv, const std::function<void(int v, std::span<float> row)>& row_values);
 
   struct Sample {
     Vec2f p;           // (u, v) in [0,1)²

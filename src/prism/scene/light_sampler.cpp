@@ -263,20 +263,19 @@ double LightSampler::build_environment_distribution(const Emitter& e) {
   if (!e.texture) return 1.0;
   const TextureImage& t = *e.texture;
   const Vec3d y_row = color::color_space("srgb").rgb_to_xyz.row(1);  // luminance weights
-  std::vector<float> f(static_cast<std::size_t>(t.width) * t.height);
   double weighted = 0.0, weight = 0.0;
-  for (int y = 0; y < t.height; ++y) {
+  // Row by row (rows in order, so the sums are those of one pass over the image).
+  environment_distribution_ = PiecewiseConstant2D(t.width, t.height, [&](int y, std::span<float> row) {
     for (int x = 0; x < t.width; ++x) {
       const Vec2f uv((x + 0.5f) / t.width, (y + 0.5f) / t.height);
       const double jacobian = environment_solid_angle_per_uv_area(e.mapping, uv);
       const Vec3f rgb = texel_rgb(t, uv);
       const double lum = std::max(0.0, dot(y_row, Vec3d(rgb)));
-      f[static_cast<std::size_t>(y) * t.width + x] = static_cast<float>(lum * jacobian);
+      row[static_cast<std::size_t>(x)] = static_cast<float>(lum * jacobian);
       weighted += lum * jacobian;
       weight += jacobian;
     }
-  }
-  environment_distribution_ = PiecewiseConstant2D(f, t.width, t.height);
+  });
   return weight > 0.0 ? weighted / weight : 0.0;
 }
 

@@ -116,6 +116,34 @@ TEST(PiecewiseConstant, TwoDimensionalMatchesPdf) {
   EXPECT_NEAR(d.pdf(Vec2f(0.01f, 0.01f)), f[0] / total * nu * nv, 1e-4);
 }
 
+// Built row by row (what environment maps use, so that their grid of weights never exists
+// whole), the distribution is the grid constructor's, bit for bit; rows are asked for once
+// each, in order (the light sampler accumulates its mean radiance in that order).
+TEST(PiecewiseConstant, TwoDimensionalRowByRowIsTheGridsDistribution) {
+  const int nu = 7, nv = 5;
+  std::vector<float> f(nu * nv);
+  for (int i = 0; i < nu * nv; ++i) f[i] = static_cast<float>((i * 11) % 6) * 0.3f;
+  std::vector<int> rows_asked;
+  const PiecewiseConstant2D rows(nu, nv, [&](int v, std::span<float> row) {
+    rows_asked.push_back(v);
+    ASSERT_EQ(row.size(), static_cast<std::size_t>(nu));
+    std::copy(f.begin() + v * nu, f.begin() + (v + 1) * nu, row.begin());
+  });
+  EXPECT_EQ(rows_asked, (std::vector<int>{0, 1, 2, 3, 4}));
+  const PiecewiseConstant2D grid(f, nu, nv);
+  EXPECT_EQ(rows.integral(), grid.integral());
+  Pcg32 rng(9, 2);
+  for (int i = 0; i < 1000; ++i) {
+    const Vec2f u(rng.next_float(), rng.next_float());
+    const auto a = rows.sample(u), b = grid.sample(u);
+    ASSERT_EQ(a.p.x, b.p.x);
+    ASSERT_EQ(a.p.y, b.p.y);
+    ASSERT_EQ(a.pdf, b.pdf);
+    ASSERT_EQ(rows.pdf(u), grid.pdf(u));
+  }
+  EXPECT_THROW(PiecewiseConstant2D(0, 3, [](int, std::span<float>) {}), UsageError);
+}
+
 TEST(Warps, UniformSphereMatchesItsPdf) {
   const auto h = test::spherical_histogram(
       [](Vec2f u, Vec3f& d) {

@@ -333,7 +333,9 @@ std::optional<std::int32_t> openexr_fixed_attribute_size(std::string_view type) 
   return std::nullopt;
 }
 
-void check_openexr_header(std::span<const unsigned char> bytes, int max_dimension, std::string_view name) {
+// Returns the first part's data window size (width, height), which read_openexr reads.
+std::pair<long, long> check_openexr_header(std::span<const unsigned char> bytes, int max_dimension,
+                                          std::string_view name) {
   const auto corrupt = [&](std::string_view why) {
     throw IoError(fmt::format("cannot read image '{}': corrupt or truncated OpenEXR header ({})", name, why));
   };
@@ -347,6 +349,7 @@ void check_openexr_header(std::span<const unsigned char> bytes, int max_dimensio
     pos += n + 1;
     return std::string_view(begin, n);
   };
+  std::pair<long, long> first{0, 0};
   for (int header = 0;; ++header) {
     long width = 0, height = 0, tile_x = 0, tile_y = 0;
     bool any = false;
@@ -376,16 +379,17 @@ void check_openexr_header(std::span<const unsigned char> bytes, int max_dimensio
     }
     if (!any) {
       if (header == 0) corrupt("empty header");
-      return;  // the empty header that ends a multi-part file's headers
+      return first;  // the empty header that ends a multi-part file's headers
     }
     check_dimensions(width, height, max_dimension, name);
+    if (header == 0) first = {width, height};
     if (tile_x > 0 && tile_y > 0) {
       const double tiles = std::ceil(static_cast<double>(width) / tile_x) * std::ceil(static_cast<double>(height) / tile_y);
       if (8.0 * tiles > static_cast<double>(bytes.size())) corrupt("more tiles than the file can hold");
     } else if (tile_x != 0 || tile_y != 0) {
       corrupt("zero tile size");
     }
-    if (!multipart) return;
+    if (!multipart) return first;
   }
 }
 
@@ -455,13 +459,21 @@ TextureImage decode_texture_memory(std::span<const unsigned char> bytes, std::st
 }
 
 std::optional<TextureMemoryNeed> texture_memory_need(std::span<const unsigned char> bytes) {
-  // The numbers decode_radiance and decode_with_stb reserve, from the same header.
+  // The numbers decode_radiance, read_openexr and decode_with_stb reserve, from the same header.
   const ImageFileFormat format = detect_image_format(bytes);
   if (format == ImageFileFormat::radiance_hdr) {
     try {
       const RadianceHeader header = read_radiance_header(bytes, "");
       if (header.width < 1 || header.height < 1) return std::nullopt;
       return radiance_memory(header.width, header.height);
+    } catch (const IoError&) {
+      return std::nullopt;
+    }
+  }
+  if (format == ImageFileFormat::openexr) {  // read_openexr's float RGB texels
+    try {
+      const auto [width, height] = check_openexr_header(bytes, std::numeric_limits<int>::max(), "");
+      return texel_memory(width, height, 3, 0);
     } catch (const IoError&) {
       return std::nullopt;
     }

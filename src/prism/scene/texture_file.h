@@ -36,16 +36,16 @@ TextureImage read_texture_file(const std::filesystem::path& path, TextureEncodin
 TextureImage decode_texture_memory(std::span<const unsigned char> bytes, std::string_view name,
                                    TextureEncoding encoding, const TextureLimits& limits);
 
-// What decode_texture_memory reserves from a budget for `bytes`, read from the header: the
-// texels as kept (a byte per sample of an 8-bit image, a float otherwise), and the
-// decoder's buffer, held only while it decodes. Nothing when the
-// header cannot be read (the decode then reports why).
+// What decode_texture_memory (or read_texture_file, for OpenEXR) reserves from a budget for
+// `bytes`, read from the header: the texels as kept (a byte per sample of an 8-bit image, 4
+// bytes per RGBE texel, a float otherwise), and the decoder's buffer, held only while it
+// decodes. Nothing when the header cannot be read (the decode then reports why).
 struct TextureMemoryNeed {
   std::uint64_t texel_bytes = 0, transient_bytes = 0;
 };
 std::optional<TextureMemoryNeed> texture_memory_need(std::span<const unsigned char> bytes);
-// The same for a PNG, JPEG or .hdr file; nothing for other files and for files that cannot
-// be read (read_texture_file then reports why).
+// The same for a file; nothing for files that cannot be read or whose header does not
+// read (read_texture_file then reports why).
 std::optional<TextureMemoryNeed> texture_file_memory_need(const std::filesystem::path& path);
 
 }  // namespace prism

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "prism/core/error.h"
+#include "prism/io/exr.h"
 #include "prism/io/png.h"
 #include "prism/scene/loaders/texture_cache.h"
 #include "prism/scene/texture_file.h"
@@ -84,6 +85,25 @@ TEST(TextureCache, ImagesThatFitOnlyOneAtATimeAreDecodedOneAtATime) {
     for (std::size_t i = 0; i < files.size(); ++i)
       EXPECT_EQ(scene.textures[i].codes, read_texture_file(files[i], TextureEncoding::srgb, 32768).codes);
   }
+}
+
+// OpenEXR images count in the budget check too (their size from the header the reader
+// walks first): a batch with one is still decoded together when it all fits.
+TEST(TextureCache, OpenExrImagesJoinTheBatch) {
+  test::ScratchFolder dir;
+  const auto files = four_images(dir);
+  write_exr(dir / "sky.exr", ImageRgbF{8, 4, std::vector<float>(8 * 4 * 3, 0.5f)},
+            ExrChromaticities{0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f});
+  EXPECT_EQ(texture_file_memory_need(dir / "sky.exr")->texel_bytes, 8u * 4u * 3u * sizeof(float));
+  MemoryBudget budget(1u << 20);
+  Scene scene;
+  loaders::TextureCache cache(scene, LoadOptions{.memory_budget = &budget});
+  cache.load(files[0], TextureEncoding::srgb);
+  const int sky = cache.load(dir / "sky.exr", TextureEncoding::srgb);
+  cache.finish();
+  EXPECT_EQ(cache.parallel_batches(), 1u);
+  EXPECT_EQ(scene.textures[static_cast<std::size_t>(sky)].linear_values(), std::vector<float>(8 * 4 * 3, 0.5f));
+  EXPECT_EQ(budget.used_bytes(), 16u * 16u * 3u + 8u * 4u * 3u * sizeof(float));
 }
 
 // Errors are those of decoding one image after another: the first bad image in request

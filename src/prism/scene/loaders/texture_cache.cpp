@@ -50,7 +50,7 @@ bool TextureCache::fits_together(const std::vector<Request>& batch) const {
   std::uint64_t together = 0;
   for (const Request& r : batch) {
     const auto need = texture_file_memory_need(r.path);
-    if (!need) return false;  // OpenEXR, or a header that does not read: one at a time
+    if (!need) return false;  // a header that does not read: one at a time
     together += need->texel_bytes + need->transient_bytes;
   }
   return budget->used_bytes() + together <= budget->limit_bytes();

@@ -53,7 +53,7 @@ class TextureCache {
   [[noreturn]] void rethrow_first_error(std::exception_ptr error);
 
   std::size_t files_read() const { return files_read_; }
-  // Syncs that decoded more than one image on several threads (for tests).
+  // Syncs that decoded their images together, split across the threads (for tests).
   std::size_t parallel_batches() const { return parallel_batches_; }
 
  private:

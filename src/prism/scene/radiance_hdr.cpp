@@ -105,11 +105,20 @@ RadianceHeader read_radiance_header(std::span<const unsigned char> bytes, std::s
 std::vector<std::uint8_t> read_radiance_texels(std::span<const unsigned char> bytes, const RadianceHeader& header,
                                                std::string_view name) {
   const auto width = static_cast<std::size_t>(header.width), height = static_cast<std::size_t>(header.height);
+  // The fewest bytes any file of this size holds: 4 per texel flat; run-length, a scanline's
+  // marker and, per component, a run (2 bytes) per 127 texels. A header that claims more
+  // texels than its file could hold is refused before the texels are allocated (a 40-byte
+  // file can claim 32768² texels: 4 GiB).
+  const bool run_length = width >= 8 && width < 32768;
+  const std::size_t least = run_length ? height * (4 + 8 * ((width + 126) / 127)) : width * height * 4;
+  if (bytes.size() < header.data_offset || bytes.size() - header.data_offset < least)
+    fail(name, fmt::format("the file is truncated ({} bytes of texels for {}x{}, at least {} needed)",
+                           bytes.size() - std::min(bytes.size(), header.data_offset), width, height, least));
   std::vector<std::uint8_t> texels(width * height * 4);
   ByteReader in(bytes, header.data_offset, name);
   // Flat texels from texel `first` to the end of the image.
   const auto flat = [&](std::size_t first) { in.copy(texels.data() + 4 * first, texels.size() - 4 * first); };
-  if (width < 8 || width >= 32768) {  // too narrow or too wide to be run-length encoded
+  if (!run_length) {  // too narrow or too wide to be run-length encoded
     flat(0);
     return texels;
   }

@@ -114,6 +114,7 @@ TEST(RadianceHdr, CorruptFilesAreOneLineErrors) {
   EXPECT_NE(texel_error(wrong_length).find("scanline of 9 texels"), std::string::npos);
   std::string long_run = rle.substr(0, header.data_offset + 4);
   long_run += std::string{static_cast<char>(128 + 9), 1};  // a run of 9 in a scanline of 8
+  long_run += std::string(16, '\0');                         // (and bytes enough for a whole image)
   EXPECT_NE(texel_error(long_run).find("run past the end"), std::string::npos);
   const auto header_error = [](const std::string& file) {
     return error_of<IoError>([&] { read_radiance_header(as_bytes(file), "h.hdr"); });
@@ -138,6 +139,11 @@ TEST(RadianceHdr, TexturesKeepTheirRgbeTexelsAndTheBudgetCountsThem) {
   EXPECT_EQ(budget.used_bytes(), 64u * 16u * 4u);
   EXPECT_EQ(texture_memory_need(as_bytes(test::read_bytes(dir / "sky.hdr")))->texel_bytes, 64u * 16u * 4u);
   EXPECT_NE(error_of<IoError>([&] { read_texture_file(dir / "sky.hdr", TextureEncoding::srgb, 32); }).find("exceeds"),
+            std::string::npos);
+  // A 50-byte file claiming 30000² texels (3.4 GiB) is refused before they are allocated.
+  dir.write("huge.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 30000 +X 30000\n" + std::string(8, '\2'));
+  EXPECT_NE(error_of<IoError>([&] { read_texture_file(dir / "huge.hdr", TextureEncoding::srgb, 32768); })
+                .find("at least"),
             std::string::npos);
   dir.write("empty.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 0 +X 4\n");
   EXPECT_NE(error_of<IoError>([&] { read_texture_file(dir / "empty.hdr", TextureEncoding::srgb, 32768); })

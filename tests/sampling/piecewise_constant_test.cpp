@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -56,31 +57,64 @@ TEST(PiecewiseConstant, OneDimensionalDiscreteMatchesPmf) {
   EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
 }
 
-// The guide table (build_guide_table) must find exactly the cells the binary search
-// finds: for random u, for u at and just below/above every CDF step (where an off-by-one
-// would show), across zero-mass cells, and at 0 and 1; sample_continuous then agrees bit
-// for bit. Also with a tiny cell, where the guide needs more entries than 4 per cell.
-TEST(PiecewiseConstant, GuideTableFindsTheSameCellsAsTheSearch) {
+// A guide table must find exactly the cells the binary search finds: for random u, for u
+// at and just below/above every CDF step (where an off-by-one would show) and every guide
+// entry's boundary g / G, across zero-mass cells and runs of them, and at 0 and 1;
+// sample_continuous then agrees bit for bit. The fine table (build_guide_table) also with a
+// tiny cell, where it needs more entries than 4 per cell; the coarse one
+// (build_coarse_guide_table, environment-map rows) on sizes that are not a multiple of its
+// entry spacing and on a long row with a spike and long dark runs, where a bracket spans
+// many cells.
+std::vector<std::vector<float>> guide_test_distributions() {
   std::vector<float> tiny = kF;
   tiny[3] = 1e-6f;
-  for (const std::vector<float>& f : {kF, tiny}) {
+  std::vector<float> row(1000);
+  Pcg32 rng(11, 12);
+  for (std::size_t i = 0; i < row.size(); ++i) row[i] = (i / 100) % 3 == 1 ? 0.0f : rng.next_float();
+  row[517] = 5000.0f;  // a sun
+  std::vector<float> nine = {1, 0, 2, 0, 0, 3, 1, 1, 4};
+  return {kF, tiny, std::vector<float>{2.0f}, nine, row};
+}
+
+void expect_same_cells(const PiecewiseConstant1D& searched, const PiecewiseConstant1D& guided, int guide_entries) {
+  std::vector<float> us = {0.0f, 1.0f, std::nextafter(1.0f, 0.0f), 0.5f};
+  for (int i = 0; i <= searched.size(); ++i) {
+    const float c = searched.cdf(i);
+    us.insert(us.end(), {c, std::nextafter(c, 0.0f), std::nextafter(c, 1.0f)});
+  }
+  for (int g = 0; g <= guide_entries; ++g) {
+    const float b = static_cast<float>(g) / static_cast<float>(guide_entries);
+    us.insert(us.end(), {b, std::nextafter(b, 0.0f), std::nextafter(b, 1.0f)});
+  }
+  Pcg32 rng(5, 6);
+  for (int i = 0; i < 100000; ++i) us.push_back(rng.next_float());
+  for (const float u : us) {
+    if (u < 0.0f || u > 1.0f) continue;
+    const auto a = searched.sample_continuous(u), b = guided.sample_continuous(u);
+    ASSERT_EQ(a.index, b.index) << u;
+    ASSERT_EQ(a.x, b.x) << u;
+    ASSERT_EQ(a.pdf, b.pdf) << u;
+    ASSERT_EQ(searched.sample_discrete(u).index, guided.sample_discrete(u).index) << u;
+  }
+}
+
+TEST(PiecewiseConstant, GuideTableFindsTheSameCellsAsTheSearch) {
+  for (const std::vector<float>& f : guide_test_distributions()) {
     const PiecewiseConstant1D searched(f, 380.0f, 780.0f);
     PiecewiseConstant1D guided = searched;
     guided.build_guide_table();
-    std::vector<float> us = {0.0f, 1.0f, std::nextafter(1.0f, 0.0f), 0.5f};
-    for (int i = 0; i <= searched.size(); ++i) {
-      const float c = searched.cdf(i);
-      us.insert(us.end(), {c, std::nextafter(c, 0.0f), std::nextafter(c, 1.0f)});
-    }
-    Pcg32 rng(5, 6);
-    for (int i = 0; i < 100000; ++i) us.push_back(rng.next_float());
-    for (const float u : us) {
-      const auto a = searched.sample_continuous(u), b = guided.sample_continuous(u);
-      ASSERT_EQ(a.index, b.index) << u;
-      ASSERT_EQ(a.x, b.x) << u;
-      ASSERT_EQ(a.pdf, b.pdf) << u;
-      ASSERT_EQ(searched.sample_discrete(u).index, guided.sample_discrete(u).index) << u;
-    }
+    expect_same_cells(searched, guided, 4 * searched.size());
+  }
+}
+
+TEST(PiecewiseConstant, CoarseGuideTableFindsTheSameCellsAsTheSearch) {
+  for (const std::vector<float>& f : guide_test_distributions()) {
+    const PiecewiseConstant1D searched(f, 380.0f, 780.0f);
+    PiecewiseConstant1D guided = searched;
+    guided.build_coarse_guide_table();
+    const int per_entry = PiecewiseConstant1D::kCellsPerCoarseGuideEntry;
+    const int entries = static_cast<int>(std::bit_ceil(static_cast<unsigned>((searched.size() + per_entry - 1) / per_entry)));
+    expect_same_cells(searched, guided, entries);
   }
 }
 

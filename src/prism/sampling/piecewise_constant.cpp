@@ -1,6 +1,7 @@
 #include "prism/sampling/piecewise_constant.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -59,6 +60,24 @@ void PiecewiseConstant1D::build_guide_table() {
   }
   guide_cells_ = static_cast<double>(guide_.size());
   last_guide_ = guide_.size() - 1;
+  coarse_guide_ = false;
+}
+
+void PiecewiseConstant1D::build_coarse_guide_table() {
+  const int n = size();
+  if (n > 65536) return;  // cell indices would not fit the 16-bit entries
+  // A power of two of entries: g / size is then exact in double, so the comparisons below
+  // bracket exactly the cells find_cell's full search would find.
+  guide_.resize(std::bit_ceil(static_cast<std::size_t>((n + kCellsPerCoarseGuideEntry - 1) / kCellsPerCoarseGuideEntry)));
+  std::uint32_t i = 0;
+  for (std::size_t g = 0; g < guide_.size(); ++g) {
+    const double u = double(g) / double(guide_.size());
+    while (static_cast<int>(i) + 1 < n && double(cdf_[i + 1]) <= u) ++i;
+    guide_[g] = static_cast<std::uint16_t>(i);
+  }
+  guide_cells_ = static_cast<double>(guide_.size());
+  last_guide_ = guide_.size() - 1;
+  coarse_guide_ = true;
 }
 
 float PiecewiseConstant1D::pmf(int index) const {
@@ -100,9 +119,11 @@ PiecewiseConstant2D::PiecewiseConstant2D(int nu, int nv,
   for (int v = 0; v < nv; ++v) {
     row_values(v, row);
     conditional_.emplace_back(row);
+    conditional_.back().build_coarse_guide_table();
     row_integrals[v] = conditional_.back().integral();
   }
   marginal_ = PiecewiseConstant1D(row_integrals);
+  marginal_.build_coarse_guide_table();
 }
 
 PiecewiseConstant2D::Sample PiecewiseConstant2D::sample(Vec2f u) const {

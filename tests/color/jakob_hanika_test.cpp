@@ -16,6 +16,7 @@
 #include "prism/color/jakob_hanika_fit.h"
 #include "prism/color/jakob_hanika_table.h"
 #include "prism/color/sigmoid_polynomial.h"
+#include "prism/core/pcg32.h"
 
 namespace prism::color {
 namespace {
@@ -154,6 +155,34 @@ TEST(JakobHanikaTable, GreysAreExactAndUnknownSpacesAreRejected) {
   EXPECT_DOUBLE_EQ(JakobHanikaTable::get("srgb").lookup({1, 1, 1})(550.0), 1.0);
   EXPECT_THROW(JakobHanikaTable::get("display-p3"), UsageError);
   EXPECT_THROW(JakobHanikaTable::get("nonsense"), UsageError);
+}
+
+// The cells a lookup interpolates in are std::upper_bound's over the axis' nodes (the
+// guide tables only skip the search): at, just below and just above every node, between
+// nodes, at the ends, and for random values, along both kinds of axis of every table.
+TEST(JakobHanikaTable, GuidedCellsAreTheSearchsCells) {
+  for (const std::string name : {"srgb", "acescg", "rec2020"}) {
+    const JakobHanikaTable& table = JakobHanikaTable::get(name);
+    const int res = table.resolution();
+    for (const bool chroma : {true, false}) {
+      const std::vector<float>& nodes = chroma ? table.chroma_nodes() : table.scale_nodes();
+      ASSERT_EQ(nodes.size(), static_cast<std::size_t>(res));
+      std::vector<double> vs = {0.0, 1.0, -0.5, 2.0, 1e-9, 0.999999};
+      for (const float n : nodes) {
+        vs.insert(vs.end(), {n, std::nextafter(n, 0.0f), std::nextafter(n, 2.0f), double(n) + 1e-12});
+      }
+      for (int i = 0; i + 1 < res; ++i) vs.push_back(0.5 * (double(nodes[i]) + nodes[i + 1]));
+      for (int g = 0; g <= 4096; ++g) vs.push_back(g / 4096.0);
+      Pcg32 rng(17, 18);
+      for (int i = 0; i < 20000; ++i) vs.push_back(rng.next_double());
+      for (const double v : vs) {
+        const int expected =
+            std::clamp(static_cast<int>(std::upper_bound(nodes.begin(), nodes.end(), float(v)) - nodes.begin()) - 1, 0,
+                       res - 2);
+        ASSERT_EQ(chroma ? table.chroma_cell(v) : table.scale_cell(v), expected) << name << " " << chroma << " " << v;
+      }
+    }
+  }
 }
 
 // The renderer's single-precision sigmoid against the definition in long double, written

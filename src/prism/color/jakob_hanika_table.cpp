@@ -42,6 +42,38 @@ JakobHanikaTable::JakobHanikaTable(std::string space, std::span<const unsigned c
   std::memcpy(coefficients_.data(), bytes.data() + scale_.size() * sizeof(float),
               coefficients_.size() * sizeof(float));
   for (int i = 0; i < resolution; ++i) chroma_.push_back(static_cast<float>(jakob_hanika_chroma_node(i, resolution)));
+  if (resolution < 2 || resolution > 256) throw Error("Jakob-Hanika tables need 2 to 256 nodes per axis");
+  for (std::size_t k = 0; k + 1 < scale_.size(); ++k)
+    if (!(scale_[k] < scale_[k + 1]) || !(chroma_[k] < chroma_[k + 1]))
+      throw Error("embedded Jakob-Hanika table for '" + space_ + "': nodes not increasing");
+  chroma_guide_ = node_guide(chroma_);
+  scale_guide_ = node_guide(scale_);
+}
+
+std::vector<std::uint8_t> JakobHanikaTable::node_guide(const std::vector<float>& nodes) {
+  // Entry g: the last node at or below g / kNodeGuideCells, which is at or below every v
+  // with ⌊v · kNodeGuideCells⌋ = g (a power of two: the product is exact in float), so the
+  // walk forward from it finds std::upper_bound's node.
+  std::vector<std::uint8_t> guide(kNodeGuideCells);
+  std::size_t i = 0;
+  for (int g = 0; g < kNodeGuideCells; ++g) {
+    const float u = static_cast<float>(g) / kNodeGuideCells;
+    while (i + 1 < nodes.size() && nodes[i + 1] <= u) ++i;
+    guide[static_cast<std::size_t>(g)] = static_cast<std::uint8_t>(i);
+  }
+  return guide;
+}
+
+// std::upper_bound's node, found from the axis' guide and a forward walk that rarely steps:
+// a search's halving steps were coin-flip branches or, without branches, a chain of
+// dependent loads, at every textured shading point and every environment-map radiance.
+int JakobHanikaTable::cell(const std::vector<float>& nodes, const std::vector<std::uint8_t>& guide, double v) {
+  const float fv = float(v);  // compared as std::upper_bound(nodes, float(v)) did
+  const int n = static_cast<int>(nodes.size());
+  const int g = fv > 0.0f ? (fv < 1.0f ? static_cast<int>(fv * kNodeGuideCells) : kNodeGuideCells - 1) : 0;
+  int i = guide[static_cast<std::size_t>(g)];
+  while (i + 1 < n && nodes[static_cast<std::size_t>(i) + 1] <= fv) ++i;
+  return std::clamp(i, 0, n - 2);
 }
 
 float JakobHanikaTable::coefficient(int l, int k, int j, int i, int c) const {
@@ -56,17 +88,15 @@ SigmoidPolynomial JakobHanikaTable::lookup(Vec3d rgb) const {
 
   const int l = rgb.x >= rgb.y ? (rgb.x >= rgb.z ? 0 : 2) : (rgb.y >= rgb.z ? 1 : 2);
   const double z = rgb[l];
-  const int res = resolution_;
   // The cell along each axis and the position in it, linear between the two nodes.
-  auto locate = [res](const std::vector<float>& nodes, double v, double& t) {
-    const int at = std::clamp(static_cast<int>(std::upper_bound(nodes.begin(), nodes.end(), float(v)) -
-                                               nodes.begin()) - 1, 0, res - 2);
+  auto locate = [](const std::vector<float>& nodes, int at, double v, double& t) {
     t = (v - nodes[at]) / (nodes[at + 1] - nodes[at]);
     return at;
   };
   double dx, dy, dz;
-  const int xi = locate(chroma_, rgb[(l + 1) % 3] / z, dx), yi = locate(chroma_, rgb[(l + 2) % 3] / z, dy);
-  const int zi = locate(scale_, z, dz);
+  const double x = rgb[(l + 1) % 3] / z, y = rgb[(l + 2) % 3] / z;
+  const int xi = locate(chroma_, chroma_cell(x), x, dx), yi = locate(chroma_, chroma_cell(y), y, dy);
+  const int zi = locate(scale_, scale_cell(z), z, dz);
 
   double c[3];
   for (int n = 0; n < 3; ++n) {

@@ -7,6 +7,7 @@
 // The tables describe reflectances in [0, 1]³: the spectrum s(λ), seen under the space's
 // white illuminant (D65 for srgb and rec2020; for acescg an SPD with the ACES white, see
 // illuminant_for_white), reproduces the RGB.
+#include <cstdint>
 #include <span>
 #include <string>
 #include <string_view>
@@ -27,18 +28,33 @@ class JakobHanikaTable {
   // Coefficients for a reflectance; components are clamped to [0, 1].
   SigmoidPolynomial lookup(Vec3d rgb) const;
 
+  // The interval [node i, node i + 1] a value falls in along the chroma (x, y) or the
+  // scale (z) axis: the last node at or below the value (compared in float), kept within
+  // [0, resolution − 2]; what lookup interpolates between. v must not be NaN.
+  int chroma_cell(double v) const { return cell(chroma_, chroma_guide_, v); }
+  int scale_cell(double v) const { return cell(scale_, scale_guide_, v); }
+  const std::vector<float>& chroma_nodes() const { return chroma_; }
+  const std::vector<float>& scale_nodes() const { return scale_; }
+
   const std::string& space() const { return space_; }
   int resolution() const { return resolution_; }
 
  private:
   JakobHanikaTable(std::string space, std::span<const unsigned char> bytes, int resolution);
   float coefficient(int l, int k, int j, int i, int c) const;
+  // Per axis, the last node at or below each of kNodeGuideCells equal steps of [0, 1]: a
+  // lookup starts there and walks forward, which at 4096 steps for 64 nodes is almost
+  // never a step, except past the densest nodes at the ends (smoothstep spacing).
+  static constexpr int kNodeGuideCells = 4096;
+  static std::vector<std::uint8_t> node_guide(const std::vector<float>& nodes);
+  static int cell(const std::vector<float>& nodes, const std::vector<std::uint8_t>& guide, double v);
 
   std::string space_;
   int resolution_ = 0;
   std::vector<float> scale_;   // z of each slice (stored in the table)
   std::vector<float> chroma_;  // x, y of each node (jakob_hanika_chroma_node)
   std::vector<float> coefficients_;
+  std::vector<std::uint8_t> chroma_guide_, scale_guide_;
 };
 
 namespace detail {

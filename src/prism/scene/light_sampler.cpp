@@ -281,13 +281,15 @@ double LightSampler::build_environment_distribution(const Emitter& e) {
 
 Vec3f LightSampler::environment_rgb(const Emitter& e, const Vec3f& d) const {
   if (!e.texture) return Vec3f(e.intensity_nits);
-  return texel_rgb(*e.texture, environment_direction_to_uv(e.mapping, map_direction(e, d))) * e.intensity_nits;
+  return environment_rgb_at(e, environment_direction_to_uv(e.mapping, map_direction(e, d)));
 }
 
-float LightSampler::environment_pdf(const Emitter& e, const Vec3f& d) const {
-  if (!e.texture) return uniform_sphere_pdf();
-  const Vec2f uv = environment_direction_to_uv(e.mapping, map_direction(e, d));
-  const float jacobian = environment_solid_angle_per_uv_area(e.mapping, uv);
+Vec3f LightSampler::environment_rgb_at(const Emitter& e, Vec2f uv) {
+  return texel_rgb(*e.texture, uv) * e.intensity_nits;
+}
+
+float LightSampler::environment_pdf_at(EnvironmentMapping mapping, Vec2f uv) const {
+  const float jacobian = environment_solid_angle_per_uv_area(mapping, uv);
   if (!(jacobian > 0.0f)) return 0.0f;
   return environment_distribution_.pdf(uv) / jacobian;
 }
@@ -411,8 +413,14 @@ float LightSampler::pdf_triangle(std::uint32_t mesh, std::uint32_t triangle, con
 
 std::optional<LightSampler::EscapedHit> LightSampler::escaped_hit(std::uint32_t index, const Vec3f& wi) const {
   const Emitter& e = emitters_[index];
-  if (e.kind == Kind::environment)
-    return EscapedHit{e.emitter, 1.0f, selection_pmf_[index] * environment_pdf(e, wi), true, environment_rgb(e, wi)};
+  if (e.kind == Kind::environment) {
+    // The direction's texel coordinates once, for both its pdf and its radiance.
+    if (!e.texture)
+      return EscapedHit{e.emitter, 1.0f, selection_pmf_[index] * uniform_sphere_pdf(), true, Vec3f(e.intensity_nits)};
+    const Vec2f uv = environment_direction_to_uv(e.mapping, map_direction(e, wi));
+    return EscapedHit{e.emitter, 1.0f, selection_pmf_[index] * environment_pdf_at(e.mapping, uv), true,
+                      environment_rgb_at(e, uv)};
+  }
   if (e.kind != Kind::directional || e.cos_max >= 1.0f || dot(wi, -e.axis) < e.cos_max) return std::nullopt;
   return EscapedHit{e.emitter, e.disc_radiance_scale, selection_pmf_[index] * uniform_cone_pdf(e.cos_max), false,
                     Vec3f(0.0f)};

@@ -132,7 +132,10 @@ class LightSampler {
   bool environment_built_ = false;
   // Environment radiance (linear Rec.709, nits) seen in world direction `d`.
   Vec3f environment_rgb(const Emitter& e, const Vec3f& d) const;
-  float environment_pdf(const Emitter& e, const Vec3f& d) const;
+  // The same at the map's texel coordinates of a direction (escaped rays find them once
+  // for both): the texel's radiance, and the solid-angle pdf of sampling that direction.
+  static Vec3f environment_rgb_at(const Emitter& e, Vec2f uv);
+  float environment_pdf_at(EnvironmentMapping mapping, Vec2f uv) const;
   static Vec3f map_direction(const Emitter& e, const Vec3f& world_direction);  // unit, in the map's frame
   PiecewiseConstant2D environment_distribution_;
   // The sample on emitter `index`, its pdf times the selection probability.

@@ -16,7 +16,8 @@ Vec3f environment_uv_to_direction(EnvironmentMapping mapping, Vec2f uv);
 
 // dω / d(u v): steradians per unit of image area at uv. Equirectangular: 2π² sin θ
 // (θ = π v); equal-area octahedral: 4π everywhere. A density p_uv over the image is
-// p_ω = p_uv / this over the sphere.
+// p_ω = p_uv / this over the sphere. A function of uv.y alone in both mappings (callers
+// may evaluate it once per image row).
 float environment_solid_angle_per_uv_area(EnvironmentMapping mapping, Vec2f uv);
 
 }  // namespace prism

@@ -266,10 +266,11 @@ double LightSampler::build_environment_distribution(const Emitter& e) {
   double weighted = 0.0, weight = 0.0;
   // Row by row (rows in order, so the sums are those of one pass over the image).
   environment_distribution_ = PiecewiseConstant2D(t.width, t.height, [&](int y, std::span<float> row) {
+    // The Jacobian is a function of v alone (environment_mapping.h): once per row, not a
+    // sine per texel.
+    const double jacobian = environment_solid_angle_per_uv_area(e.mapping, Vec2f(0.5f, (y + 0.5f) / t.height));
     for (int x = 0; x < t.width; ++x) {
-      const Vec2f uv((x + 0.5f) / t.width, (y + 0.5f) / t.height);
-      const double jacobian = environment_solid_angle_per_uv_area(e.mapping, uv);
-      const Vec3f rgb = texel_rgb(t, uv);
+      const Vec3f rgb = texel_rgb(t, x, y);  // the texel whose centre is ((x + ½)/width, (y + ½)/height)
       const double lum = std::max(0.0, dot(y_row, Vec3d(rgb)));
       row[static_cast<std::size_t>(x)] = static_cast<float>(lum * jacobian);
       weighted += lum * jacobian;

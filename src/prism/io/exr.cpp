@@ -140,6 +140,59 @@ ExrFile read_exr(const std::filesystem::path& path) {
   return result;
 }
 
+namespace {
+
+bool rgb_channels_are_half(const Imf::Header& header) {
+  for (const char* name : {"R", "G", "B"}) {
+    const Imf::Channel* c = header.channels().findChannel(name);
+    if (c == nullptr || c->type != Imf::HALF || c->xSampling != 1 || c->ySampling != 1) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+bool exr_rgb_is_half(const std::filesystem::path& path) {
+  try {
+    Imf::InputFile in(path.c_str());
+    return rgb_channels_are_half(in.header());
+  } catch (const std::exception& e) {
+    throw IoError(fmt::format("cannot read '{}': {}", path.string(), e.what()));
+  }
+}
+
+std::optional<ExrRgbHalves> read_exr_rgb_halves(const std::filesystem::path& path) {
+  try {
+    Imf::InputFile in(path.c_str());
+    const Imf::Header& header = in.header();
+    if (!rgb_channels_are_half(header)) return std::nullopt;
+    const Imath::Box2i dw = header.dataWindow();
+    const long width = static_cast<long>(dw.max.x) - dw.min.x + 1, height = static_cast<long>(dw.max.y) - dw.min.y + 1;
+    constexpr long kMaxSide = 32768;  // the same limit as read_exr
+    if (width <= 0 || height <= 0 || width > kMaxSide || height > kMaxSide)
+      throw IoError(fmt::format("image size {}x{} is out of range", width, height));
+    ExrRgbHalves result;
+    result.width = static_cast<int>(width);
+    result.height = static_cast<int>(height);
+    result.rgb.assign(3u * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
+    // Imath's half is its 16 bits (a trivially copyable wrapper of imath_half_bits_t).
+    static_assert(sizeof(half) == sizeof(std::uint16_t));
+    const std::size_t x_stride = 3 * sizeof(std::uint16_t), y_stride = x_stride * static_cast<std::size_t>(width);
+    char* origin = reinterpret_cast<char*>(result.rgb.data()) -
+                   static_cast<std::ptrdiff_t>(dw.min.x) * static_cast<std::ptrdiff_t>(x_stride) -
+                   static_cast<std::ptrdiff_t>(dw.min.y) * static_cast<std::ptrdiff_t>(y_stride);
+    Imf::FrameBuffer fb;
+    const char* names[3] = {"R", "G", "B"};
+    for (int c = 0; c < 3; ++c)
+      fb.insert(names[c], Imf::Slice(Imf::HALF, origin + c * sizeof(std::uint16_t), x_stride, y_stride));
+    in.setFrameBuffer(fb);
+    in.readPixels(dw.min.y, dw.max.y);
+    return result;
+  } catch (const std::exception& e) {
+    throw IoError(fmt::format("cannot read '{}': {}", path.string(), e.what()));
+  }
+}
+
 std::optional<std::vector<float>> read_exr_channels(const std::filesystem::path& path,
                                                     const std::vector<std::string>& names) {
   try {

@@ -1,6 +1,7 @@
 #pragma once
 // OpenEXR read/write of 32-bit float RGB with the `chromaticities` attribute and
 // Prism's own metadata.
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -53,6 +54,16 @@ struct ExrFile {
 
 // Reads R, G, B channels (missing channels read as 0). Throws IoError on any failure.
 ExrFile read_exr(const std::filesystem::path& path);
+
+// R, G and B when all three are stored as HALF at full resolution: their IEEE binary16
+// bits, interleaved (3 × width × height), exactly as stored; nothing for any other file
+// (read_exr then reads it as floats). Throws IoError.
+struct ExrRgbHalves {
+  int width = 0, height = 0;
+  std::vector<std::uint16_t> rgb;
+};
+bool exr_rgb_is_half(const std::filesystem::path& path);
+std::optional<ExrRgbHalves> read_exr_rgb_halves(const std::filesystem::path& path);
 
 // The channels `names` (full names), interleaved as ExrChannelGroup::pixels, or nothing when
 // the file lacks any of them. Throws IoError.

@@ -50,13 +50,15 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderSettings& 
   // The loaded texels, the prepared scene's copy of them unless the scene is handed over,
   // and the mip levels above level 0 of the textures materials use (1/3 of the image; level
   // 0 is the texels themselves; environment maps have none; a Radiance image's levels are
-  // floats, 12 bytes per texel against its 4).
+  // floats, 12 bytes per texel against its 4, and a half-float image's 4 bytes per sample
+  // against its 2).
   const bool copied = handover == SceneHandover::copied;
   const std::vector<bool> filtered = textures_used_by_materials(scene);
   std::uint64_t texels = 0, mip_levels = 0;
   for (std::size_t t = 0; t < scene.textures.size(); ++t) {
     texels += scene.textures[t].memory_bytes();
-    if (filtered[t]) mip_levels += scene.textures[t].memory_bytes() * (scene.textures[t].has_rgbe() ? 3 : 1) / 3;
+    const TextureImage& image = scene.textures[t];
+    if (filtered[t]) mip_levels += image.memory_bytes() * (image.has_rgbe() ? 3 : image.has_halves() ? 2 : 1) / 3;
   }
   e.textures = texels * (copied ? 2 : 1) + mip_levels;
 

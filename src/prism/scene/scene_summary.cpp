@@ -80,6 +80,7 @@ std::string format_scene_summary(const Scene& scene) {
   out += fmt::format("textures {} ({})\n", s.textures, mebibytes(s.texture_bytes));
   for (const auto& t : scene.textures) {
     const char* storage = t.has_rgbe()                          ? "RGBE"
+                          : t.has_halves()                      ? "half"
                           : !t.has_codes()                        ? "float"
                           : t.encoding == TextureEncoding::srgb ? "8-bit sRGB"
                                                                 : "8-bit linear";

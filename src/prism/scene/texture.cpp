@@ -33,7 +33,7 @@ const std::array<float, 256> kRgbeExponentScales = make_rgbe_exponent_scales();
 }  // namespace detail
 
 std::vector<float> TextureImage::linear_values() const {
-  if (!has_codes() && !has_rgbe()) return texels;
+  if (!has_codes() && !has_rgbe() && !has_halves()) return texels;
   std::vector<float> values(sample_count());
   for (std::size_t i = 0; i < values.size(); ++i) values[i] = value(i);
   return values;

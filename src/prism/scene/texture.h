@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "prism/core/half_float.h"
 #include "prism/core/vec.h"
 
 namespace prism {
@@ -58,19 +59,22 @@ struct TextureImage {
   int channels = 0;  // 1 to 4, interleaved
   // The texels, width × height × channels, row 0 at the top: `texels` for float images,
   // `codes` (with `encoding`) for 8-bit ones, `rgbe` (r, g, b mantissas and the shared
-  // exponent, 4 bytes per texel; channels = 3) for Radiance .hdr ones. Two are empty.
+  // exponent, 4 bytes per texel; channels = 3) for Radiance .hdr ones, `halves` (IEEE
+  // binary16 bits, linear) for OpenEXR images stored in half floats. Three are empty.
   std::vector<float> texels;
   std::vector<std::uint8_t> codes;
   TextureEncoding encoding = TextureEncoding::linear;  // of `codes`
   std::vector<std::uint8_t> rgbe{};
+  std::vector<std::uint16_t> halves{};
   TextureWrap wrap_u = TextureWrap::repeat, wrap_v = TextureWrap::repeat;
   // KHR_texture_transform / pbrt uv mapping: uv' = offset + scale ⊙ rotate(uv)
   float offset_u = 0.0f, offset_v = 0.0f, scale_u = 1.0f, scale_v = 1.0f, rotation_radians = 0.0f;
 
   bool has_codes() const { return !codes.empty(); }
   bool has_rgbe() const { return !rgbe.empty(); }
+  bool has_halves() const { return !halves.empty(); }
   std::size_t sample_count() const {
-    return has_codes() ? codes.size() : has_rgbe() ? rgbe.size() / 4 * 3 : texels.size();
+    return has_codes() ? codes.size() : has_rgbe() ? rgbe.size() / 4 * 3 : has_halves() ? halves.size() : texels.size();
   }
   // Sample i (texel i / channels, channel i % channels) as a linear value.
   float value(std::size_t i) const {
@@ -79,11 +83,14 @@ struct TextureImage {
       return code_values(alpha ? TextureEncoding::linear : encoding)[codes[i]];
     }
     if (has_rgbe()) return rgbe_value(rgbe[i / 3 * 4 + i % 3], rgbe[i / 3 * 4 + 3]);
+    if (has_halves()) return half_bits_to_float(halves[i]);
     return texels[i];
   }
   // Every sample's linear value, in order (the float texels, or the codes decoded).
   std::vector<float> linear_values() const;
-  std::size_t memory_bytes() const { return texels.size() * sizeof(float) + codes.size() + rgbe.size(); }
+  std::size_t memory_bytes() const {
+    return texels.size() * sizeof(float) + codes.size() + rgbe.size() + halves.size() * sizeof(std::uint16_t);
+  }
 };
 
 // Texel (x, y), row 0 at the top, as RGB: grey and grey+alpha images carry their value in
@@ -93,6 +100,11 @@ inline Vec3f texel_rgb(const TextureImage& t, int x, int y) {
   if (t.has_rgbe()) {
     const std::uint8_t* p = &t.rgbe[texel * 4];
     return {rgbe_value(p[0], p[3]), rgbe_value(p[1], p[3]), rgbe_value(p[2], p[3])};
+  }
+  if (t.has_halves()) {
+    const std::uint16_t* p = &t.halves[i];
+    return t.channels >= 3 ? Vec3f(half_bits_to_float(p[0]), half_bits_to_float(p[1]), half_bits_to_float(p[2]))
+                           : Vec3f(half_bits_to_float(p[0]));
   }
   if (!t.has_codes()) {
     const float* p = &t.texels[i];

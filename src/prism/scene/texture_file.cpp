@@ -70,6 +70,13 @@ TextureMemoryNeed radiance_memory(long width, long height) {
   return {static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) * 4, 0};
 }
 
+// An OpenEXR texture keeps RGB, as halves (2 bytes per sample) where the file stores R, G, B
+// as HALF, as floats otherwise, read straight into place.
+TextureMemoryNeed openexr_memory(long width, long height, bool rgb_half) {
+  const std::uint64_t samples = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) * 3;
+  return {samples * (rgb_half ? sizeof(std::uint16_t) : sizeof(float)), 0};
+}
+
 void reserve_texels(const TextureLimits& limits, long width, long height, int channels, int decoded_bytes_per_sample,
                     std::string_view name) {
   if (!limits.budget) return;
@@ -333,9 +340,35 @@ std::optional<std::int32_t> openexr_fixed_attribute_size(std::string_view type) 
   return std::nullopt;
 }
 
-// Returns the first part's data window size (width, height), which read_openexr reads.
-std::pair<long, long> check_openexr_header(std::span<const unsigned char> bytes, int max_dimension,
-                                          std::string_view name) {
+// What read_openexr reads of the first part: its data window's size, and whether R, G and
+// B are all HALF channels at full resolution (then kept as halves).
+struct OpenExrFirstPart {
+  long width = 0, height = 0;
+  bool rgb_half = false;
+};
+
+// Whether a "chlist" attribute's value lists R, G and B as HALF (pixel type 1) at sampling
+// 1 × 1. Entries: a name, then pixel type, pLinear and 3 reserved bytes, x and y sampling
+// (OpenEXR file layout, "chlist"); a list that does not parse says no.
+bool openexr_channel_list_rgb_half(const unsigned char* value, std::size_t size) {
+  int half_rgb = 0;
+  std::size_t pos = 0;
+  while (pos < size && value[pos] != 0) {
+    const auto* entry = reinterpret_cast<const char*>(value + pos);
+    const std::size_t n = ::strnlen(entry, size - pos);
+    if (pos + n + 1 + 16 > size) return false;
+    const std::string_view channel(entry, n);
+    const unsigned char* fields = value + pos + n + 1;
+    if ((channel == "R" || channel == "G" || channel == "B") && read_le32(fields) == 1 && read_le32(fields + 8) == 1 &&
+        read_le32(fields + 12) == 1)
+      ++half_rgb;
+    pos += n + 1 + 16;
+  }
+  return half_rgb == 3;
+}
+
+OpenExrFirstPart check_openexr_header(std::span<const unsigned char> bytes, int max_dimension,
+                                      std::string_view name) {
   const auto corrupt = [&](std::string_view why) {
     throw IoError(fmt::format("cannot read image '{}': corrupt or truncated OpenEXR header ({})", name, why));
   };
@@ -349,10 +382,10 @@ std::pair<long, long> check_openexr_header(std::span<const unsigned char> bytes,
     pos += n + 1;
     return std::string_view(begin, n);
   };
-  std::pair<long, long> first{0, 0};
+  OpenExrFirstPart first;
   for (int header = 0;; ++header) {
     long width = 0, height = 0, tile_x = 0, tile_y = 0;
-    bool any = false;
+    bool any = false, rgb_half = false;
     for (;;) {
       if (pos >= bytes.size()) corrupt("no end of header");
       const std::string_view attribute = read_string();
@@ -371,6 +404,8 @@ std::pair<long, long> check_openexr_header(std::span<const unsigned char> bytes,
         width = static_cast<long>(read_le32(value + 8)) - read_le32(value) + 1;
         height = static_cast<long>(read_le32(value + 12)) - read_le32(value + 4) + 1;
       }
+      if (attribute == "channels" && type == "chlist")
+        rgb_half = openexr_channel_list_rgb_half(value, static_cast<std::size_t>(size));
       if (attribute == "tiles" && type == "tiledesc" && size >= 8) {
         tile_x = static_cast<std::uint32_t>(read_le32(value));
         tile_y = static_cast<std::uint32_t>(read_le32(value + 4));
@@ -382,7 +417,7 @@ std::pair<long, long> check_openexr_header(std::span<const unsigned char> bytes,
       return first;  // the empty header that ends a multi-part file's headers
     }
     check_dimensions(width, height, max_dimension, name);
-    if (header == 0) first = {width, height};
+    if (header == 0) first = {width, height, rgb_half};
     if (tile_x > 0 && tile_y > 0) {
       const double tiles = std::ceil(static_cast<double>(width) / tile_x) * std::ceil(static_cast<double>(height) / tile_y);
       if (8.0 * tiles > static_cast<double>(bytes.size())) corrupt("more tiles than the file can hold");
@@ -398,24 +433,40 @@ TextureImage read_openexr(const std::filesystem::path& path, std::span<const uns
   const std::string name = path.string();
   const int max_dimension = limits.max_dimension;
   check_openexr_header(bytes, max_dimension, name);
+  bool rgb_half = false;
   try {
     // Size check from the header alone; read_exr then reads the pixels.
     Imf::InputFile in(path.c_str());
     const Imath::Box2i dw = in.header().dataWindow();
     const long width = static_cast<long>(dw.max.x) - dw.min.x + 1, height = static_cast<long>(dw.max.y) - dw.min.y + 1;
     check_dimensions(width, height, max_dimension, name);
-    reserve_texels(limits, width, height, 3, 0, name);  // read_exr writes the float RGB texels directly
+    // RGB stored as HALF stays half (read straight into place, 6 bytes per texel; lookups
+    // decode each exactly, core/half_float.h); anything else becomes float RGB texels.
+    rgb_half = exr_rgb_is_half(path);
+    if (limits.budget) {
+      const TextureMemoryNeed need = openexr_memory(width, height, rgb_half);
+      limits.budget->reserve(need.texel_bytes, need.transient_bytes,
+                             fmt::format("texture '{}' ({}x{}, 3 channels)", name, width, height));
+    }
   } catch (const Error&) {
     throw;
   } catch (const std::exception& e) {
     throw IoError(fmt::format("cannot read image '{}': {}", name, e.what()));
   }
-  ExrFile exr = read_exr(path);
   TextureImage image;
   image.name = name;
+  image.channels = 3;
+  if (rgb_half) {
+    if (auto halves = read_exr_rgb_halves(path)) {
+      image.width = halves->width;
+      image.height = halves->height;
+      image.halves = std::move(halves->rgb);
+      return image;
+    }
+  }
+  ExrFile exr = read_exr(path);
   image.width = exr.image.width;
   image.height = exr.image.height;
-  image.channels = 3;
   image.texels = std::move(exr.image.rgb);
   return image;
 }
@@ -470,10 +521,10 @@ std::optional<TextureMemoryNeed> texture_memory_need(std::span<const unsigned ch
       return std::nullopt;
     }
   }
-  if (format == ImageFileFormat::openexr) {  // read_openexr's float RGB texels
+  if (format == ImageFileFormat::openexr) {  // read_openexr's half or float RGB texels
     try {
-      const auto [width, height] = check_openexr_header(bytes, std::numeric_limits<int>::max(), "");
-      return texel_memory(width, height, 3, 0);
+      const OpenExrFirstPart part = check_openexr_header(bytes, std::numeric_limits<int>::max(), "");
+      return openexr_memory(part.width, part.height, part.rgb_half);
     } catch (const IoError&) {
       return std::nullopt;
     }

@@ -79,6 +79,22 @@ struct RgbeTexels {
   }
 };
 
+// Half-float texels (OpenEXR HALF channels), decoded exactly at each read.
+struct HalfTexels {
+  const std::uint16_t* halves;
+  int width, channels;
+  [[gnu::always_inline]] TexelRgba operator()(int xi, int yi) const {
+    const std::uint16_t* p = halves + (static_cast<std::size_t>(yi) * width + xi) * channels;
+    switch (channels) {
+      case 1: { const float v = half_bits_to_float(p[0]); return {v, v, v, 1.0f}; }
+      case 2: { const float v = half_bits_to_float(p[0]); return {v, v, v, half_bits_to_float(p[1])}; }
+      case 3: return {half_bits_to_float(p[0]), half_bits_to_float(p[1]), half_bits_to_float(p[2]), 1.0f};
+      default:
+        return {half_bits_to_float(p[0]), half_bits_to_float(p[1]), half_bits_to_float(p[2]), half_bits_to_float(p[3])};
+    }
+  }
+};
+
 // Calls f with the level's texel reader.
 template <class F>
 [[gnu::always_inline]] inline TexelRgba with_texels(const MipLevel& level, int channels, F&& f) {
@@ -86,6 +102,7 @@ template <class F>
     return f(CodedTexels{level.code_data(), level.width, channels, level.colour_values,
                          code_values(TextureEncoding::linear).data()});
   if (level.has_rgbe()) return f(RgbeTexels{level.borrowed_rgbe, level.width});
+  if (level.has_halves()) return f(HalfTexels{level.borrowed_halves, level.width, channels});
   return f(FloatTexels{level.data(), level.width, channels});
 }
 
@@ -96,6 +113,7 @@ template <class F>
     return f(CodedTexels{t.codes.data(), t.width, t.channels, code_values(t.encoding).data(),
                          code_values(TextureEncoding::linear).data()});
   if (t.has_rgbe()) return f(RgbeTexels{t.rgbe.data(), t.width});
+  if (t.has_halves()) return f(HalfTexels{t.halves.data(), t.width, t.channels});
   return f(FloatTexels{t.texels.data(), t.width, t.channels});
 }
 
@@ -242,6 +260,8 @@ MipPyramid base_level_pyramid(const TextureImage& texture) {
     base.colour_values = code_values(texture.encoding).data();
   } else if (texture.has_rgbe()) {
     base.borrowed_rgbe = texture.rgbe.data();
+  } else if (texture.has_halves()) {
+    base.borrowed_halves = texture.halves.data();
   } else {
     base.borrowed = texture.texels.data();
   }
@@ -261,6 +281,10 @@ MipPyramid build_mip_pyramid(const TextureImage& texture) {
       if (fine.has_rgbe()) {  // level 0 of a Radiance image; float levels below it
         const std::uint8_t* rgbe = fine.borrowed_rgbe;
         coarse.texels = box_filter_level([rgbe](std::size_t t, int k) { return rgbe_value(rgbe[t * 4 + k], rgbe[t * 4 + 3]); },
+                                         fine.width, fine.height, coarse.width, coarse.height, c);
+      } else if (fine.has_halves()) {  // level 0 of a half-float image; float levels below it
+        const std::uint16_t* halves = fine.borrowed_halves;
+        coarse.texels = box_filter_level([halves, c](std::size_t t, int k) { return half_bits_to_float(halves[t * c + k]); },
                                          fine.width, fine.height, coarse.width, coarse.height, c);
       } else {
         const float* values = fine.data();

@@ -22,7 +22,8 @@ using TexelRgba = std::array<float, 4>;
 // One level of a pyramid, in its image's storage: floats, or 8-bit codes (then
 // `colour_values` is set: the code → linear value table of its colour channels; alpha is
 // decoded linearly, as in TextureImage). Level 0 of a Radiance image is its RGBE texels
-// (borrowed_rgbe); its coarser levels are floats.
+// (borrowed_rgbe), level 0 of a half-float image its halves (borrowed_halves); their
+// coarser levels are floats.
 struct MipLevel {
   int width = 0, height = 0;
   std::vector<float> texels;        // channels per texel, as in TextureImage; empty where borrowed
@@ -31,10 +32,12 @@ struct MipLevel {
   const std::uint8_t* borrowed_codes = nullptr;
   const float* colour_values = nullptr;
   const std::uint8_t* borrowed_rgbe = nullptr;  // level 0 of an RGBE image: 4 bytes per texel
+  const std::uint16_t* borrowed_halves = nullptr;  // level 0 of a half-float image: channels per texel
   const float* data() const { return borrowed != nullptr ? borrowed : texels.data(); }
   const std::uint8_t* code_data() const { return borrowed_codes != nullptr ? borrowed_codes : codes.data(); }
   bool has_codes() const { return colour_values != nullptr; }
   bool has_rgbe() const { return borrowed_rgbe != nullptr; }
+  bool has_halves() const { return borrowed_halves != nullptr; }
   // Bytes this level holds itself (a borrowed level 0 holds none).
   std::size_t owned_bytes() const { return texels.size() * sizeof(float) + codes.size(); }
 };

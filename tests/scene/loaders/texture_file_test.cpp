@@ -76,6 +76,37 @@ TEST(TextureFile, RadianceHdrAndExrAreLinearFloats) {
   EXPECT_EQ(e.linear_values(), (std::vector<float>{2.0f, 3.0f, 4.0f}));
 }
 
+// An OpenEXR file whose R, G, B are HALF is kept as its halves (6 bytes per texel, the
+// budget's figure too), each decoding to the float OpenEXR itself converts it to; a FLOAT
+// file stays float (12 bytes per texel).
+TEST(TextureFile, HalfFloatOpenExrKeepsItsHalves) {
+  test::ScratchFolder dir;
+  const std::vector<float> values = {0.0f, 1.0f, -2.5f, 65504.0f, 1e-7f, 0.1f, 3.14159f, 1e5f, 0.33333f,
+                                     1024.5f, 6e-5f, 7.0f, 0.5f, 0.25f, 12.0f, 100.0f, 0.001f, 2.0f};
+  ExrWriteOptions half_options;
+  half_options.pixel_type = ExrPixelType::half;
+  write_exr(dir / "half.exr", ImageRgbF{3, 2, values}, kRec709, {}, half_options);
+  const TextureImage h = read_texture_file(dir / "half.exr", TextureEncoding::srgb, 32768);
+  ASSERT_TRUE(h.has_halves());
+  EXPECT_TRUE(h.texels.empty());
+  EXPECT_EQ(h.channels, 3);
+  EXPECT_EQ(h.memory_bytes(), 3u * 2u * 6u);
+  const ExrFile as_floats = read_exr(dir / "half.exr");  // OpenEXR's own half → float
+  EXPECT_EQ(h.linear_values(), as_floats.image.rgb);
+  EXPECT_NE(h.linear_values(), values);  // the file holds halves: 0.1 and 1e5 did not survive
+  const auto half_need = texture_file_memory_need(dir / "half.exr");
+  ASSERT_TRUE(half_need);
+  EXPECT_EQ(half_need->texel_bytes, 3u * 2u * 6u);
+
+  write_exr(dir / "float.exr", ImageRgbF{3, 2, values}, kRec709);
+  const TextureImage f = read_texture_file(dir / "float.exr", TextureEncoding::srgb, 32768);
+  EXPECT_FALSE(f.has_halves());
+  EXPECT_EQ(f.texels, values);
+  const auto float_need = texture_file_memory_need(dir / "float.exr");
+  ASSERT_TRUE(float_need);
+  EXPECT_EQ(float_need->texel_bytes, 3u * 4u * 6u);
+}
+
 TEST(TextureFile, RefusesImagesLargerThanTheLimitBeforeDecoding) {
   test::ScratchFolder dir;
   write_png(dir / "a.png", EncodedImage{8, 8, 3, 8, std::vector<std::uint16_t>(8 * 8 * 3, 7)});

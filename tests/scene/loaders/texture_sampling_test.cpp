@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include "prism/core/half_float.h"
+
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -296,6 +298,50 @@ TEST(TextureSampling, RgbeImagesSampleAsTheirDecodedFloats) {
     ASSERT_EQ(texel_fetch(rgbe_pyramid.levels[0], 3, n % 11 - 1, n % 7, TextureWrap::repeat, TextureWrap::mirror),
               texel_fetch(float_pyramid.levels[0], 3, n % 11 - 1, n % 7, TextureWrap::repeat, TextureWrap::mirror))
         << n;
+  }
+}
+
+// A half-float image (OpenEXR HALF channels) samples bitwise as the floats its halves are
+// (half_bits_to_float, checked against Imath in half_float_test), with 1 to 4 channels:
+// level 0 borrowed as halves, its coarser levels the float image's levels, and every
+// lookup equal, subnormal, negative and large halves included.
+TEST(TextureSampling, HalfFloatImagesSampleAsTheirFloats) {
+  for (int channels = 1; channels <= 4; ++channels) {
+    TextureImage halves;
+    halves.width = 9;
+    halves.height = 6;
+    halves.channels = channels;
+    std::uint32_t state = 11u + static_cast<std::uint32_t>(channels);
+    for (int i = 0; i < 9 * 6 * channels; ++i) {
+      state = state * 1664525u + 1013904223u;
+      halves.halves.push_back(static_cast<std::uint16_t>(state >> 17));  // every exponent, both signs
+    }
+    halves.halves[0] = 0x0001;  // the smallest subnormal
+    halves.halves[1] = 0x7bff;  // the largest finite half
+    TextureImage floats = halves;
+    floats.halves.clear();
+    for (const std::uint16_t h : halves.halves) floats.texels.push_back(half_bits_to_float(h));
+    // NaN and infinite samples would make the equality checks below vacuous: keep finite ones.
+    for (std::size_t i = 0; i < floats.texels.size(); ++i)
+      if (!std::isfinite(floats.texels[i])) halves.halves[i] = 0x3c00, floats.texels[i] = 1.0f;
+    EXPECT_EQ(halves.memory_bytes(), 9u * 6u * 2u * static_cast<std::size_t>(channels));
+    EXPECT_EQ(halves.linear_values(), floats.texels);
+    for (int y = 0; y < 6; ++y)
+      for (int x = 0; x < 9; ++x) ASSERT_EQ(texel_rgb(halves, x, y), texel_rgb(floats, x, y)) << x << " " << y;
+    const MipPyramid half_pyramid = build_mip_pyramid(halves), float_pyramid = build_mip_pyramid(floats);
+    EXPECT_EQ(half_pyramid.levels[0].borrowed_halves, halves.halves.data());  // borrowed, not copied
+    ASSERT_EQ(half_pyramid.levels.size(), float_pyramid.levels.size());
+    for (std::size_t l = 1; l < half_pyramid.levels.size(); ++l)
+      EXPECT_EQ(half_pyramid.levels[l].texels, float_pyramid.levels[l].texels) << l;
+    for (int n = 0; n < 200; ++n) {
+      const Vec2f uv{static_cast<float>(n % 23) / 9.0f - 0.7f, static_cast<float>(n % 19) / 7.0f - 0.4f};
+      const float lod = static_cast<float>(n % 7) * 0.4f;
+      ASSERT_EQ(sample_bilinear(halves, uv), sample_bilinear(floats, uv)) << n;
+      ASSERT_EQ(sample_trilinear(half_pyramid, uv, lod), sample_trilinear(float_pyramid, uv, lod)) << n;
+      ASSERT_EQ(texel_fetch(half_pyramid.levels[0], channels, n % 11 - 1, n % 7, TextureWrap::repeat, TextureWrap::mirror),
+                texel_fetch(float_pyramid.levels[0], channels, n % 11 - 1, n % 7, TextureWrap::repeat, TextureWrap::mirror))
+          << n;
+    }
   }
 }
 

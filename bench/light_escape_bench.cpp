@@ -15,6 +15,17 @@
 
 namespace {
 
+// Rays leaving the scene in 4096 uniform directions, taken in turn.
+void run_escapes(benchmark::State& state, const prism::Scene& scene) {
+  const prism::LightSampler lights(scene, prism::scene_bounds(scene));
+  prism::Pcg32 rng(3, 4);
+  std::vector<prism::Vec3f> directions(4096);
+  for (auto& d : directions) d = prism::sample_uniform_sphere(prism::Vec2f(rng.next_float(), rng.next_float()));
+  std::size_t i = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(lights.escaped(directions[i++ & 4095]));
+  state.SetItemsProcessed(state.iterations());
+}
+
 void BM_LightEscaped(benchmark::State& state) {
   prism::Scene scene;
   const int rings = static_cast<int>(state.range(0));
@@ -26,13 +37,7 @@ void BM_LightEscaped(benchmark::State& state) {
   prism::Light sky;
   sky.type = prism::LightType::environment;
   scene.lights.push_back(sky);
-  const prism::LightSampler lights(scene, prism::scene_bounds(scene));
-  prism::Pcg32 rng(3, 4);
-  std::vector<prism::Vec3f> directions(4096);
-  for (auto& d : directions) d = prism::sample_uniform_sphere(prism::Vec2f(rng.next_float(), rng.next_float()));
-  std::size_t i = 0;
-  for (auto _ : state) benchmark::DoNotOptimize(lights.escaped(directions[i++ & 4095]));
-  state.SetItemsProcessed(state.iterations());
+  run_escapes(state, scene);
   state.counters["emissive_triangles"] = static_cast<double>(scene.meshes[0].triangle_count());
 }
 BENCHMARK(BM_LightEscaped)->Arg(4)->Arg(32)->Arg(128);
@@ -53,13 +58,7 @@ void BM_LightEscapedTexturedSky(benchmark::State& state) {
   sky.type = prism::LightType::environment;
   sky.environment_texture = 0;
   scene.lights.push_back(sky);
-  const prism::LightSampler lights(scene, prism::scene_bounds(scene));
-  prism::Pcg32 rng(3, 4);
-  std::vector<prism::Vec3f> directions(4096);
-  for (auto& d : directions) d = prism::sample_uniform_sphere(prism::Vec2f(rng.next_float(), rng.next_float()));
-  std::size_t i = 0;
-  for (auto _ : state) benchmark::DoNotOptimize(lights.escaped(directions[i++ & 4095]));
-  state.SetItemsProcessed(state.iterations());
+  run_escapes(state, scene);
 }
 BENCHMARK(BM_LightEscapedTexturedSky)->Arg(1024);
 

@@ -49,7 +49,21 @@ void PiecewiseConstant1D::build_guide_table() {
   for (int i = 0; i < n; ++i)
     if (cdf_[i + 1] > cdf_[i]) smallest = std::min(smallest, cdf_[i + 1] - cdf_[i]);
   const double cells = std::min(double(1 << 20), std::max(4.0 * n, std::ceil(1.0 / double(smallest)) + 1.0));
-  guide_.resize(static_cast<std::size_t>(cells));
+  fill_guide(static_cast<std::size_t>(cells), false);
+}
+
+void PiecewiseConstant1D::build_coarse_guide_table() {
+  const int n = size();
+  if (n > 65536) return;  // cell indices would not fit the 16-bit entries
+  // A power of two of entries: g / size is then exact in double, so the comparisons in
+  // fill_guide bracket exactly the cells find_cell's full search would find.
+  fill_guide(std::bit_ceil(static_cast<std::size_t>((n + kCellsPerCoarseGuideEntry - 1) / kCellsPerCoarseGuideEntry)),
+             true);
+}
+
+void PiecewiseConstant1D::fill_guide(std::size_t entries, bool coarse) {
+  const int n = size();
+  guide_.resize(entries);
   std::uint32_t i = 0;
   for (std::size_t g = 0; g < guide_.size(); ++g) {
     // Compared in double: a float u with g = ⌊u · size⌋ is ≥ g / size up to the product's
@@ -60,24 +74,7 @@ void PiecewiseConstant1D::build_guide_table() {
   }
   guide_cells_ = static_cast<double>(guide_.size());
   last_guide_ = guide_.size() - 1;
-  coarse_guide_ = false;
-}
-
-void PiecewiseConstant1D::build_coarse_guide_table() {
-  const int n = size();
-  if (n > 65536) return;  // cell indices would not fit the 16-bit entries
-  // A power of two of entries: g / size is then exact in double, so the comparisons below
-  // bracket exactly the cells find_cell's full search would find.
-  guide_.resize(std::bit_ceil(static_cast<std::size_t>((n + kCellsPerCoarseGuideEntry - 1) / kCellsPerCoarseGuideEntry)));
-  std::uint32_t i = 0;
-  for (std::size_t g = 0; g < guide_.size(); ++g) {
-    const double u = double(g) / double(guide_.size());
-    while (static_cast<int>(i) + 1 < n && double(cdf_[i + 1]) <= u) ++i;
-    guide_[g] = static_cast<std::uint16_t>(i);
-  }
-  guide_cells_ = static_cast<double>(guide_.size());
-  last_guide_ = guide_.size() - 1;
-  coarse_guide_ = true;
+  coarse_guide_ = coarse;
 }
 
 float PiecewiseConstant1D::pmf(int index) const {

@@ -59,6 +59,8 @@ class PiecewiseConstant1D {
 
  private:
   int find_cell(float u) const;
+  // guide_[g] for `entries` entries: the last cell whose CDF is at or below g / entries.
+  void fill_guide(std::size_t entries, bool coarse);
 
   int size_ = 0;            // N, the number of cells
   std::vector<float> cdf_;  // size N + 1, cdf_[0] = 0, cdf_[N] = 1

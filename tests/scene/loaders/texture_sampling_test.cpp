@@ -264,6 +264,28 @@ TEST(TextureSampling, EightBitImagesSampleAsTheirDecodedFloats) {
     }
 }
 
+// Every lookup in `stored` (texels kept in a compact form) equals the lookup in `floats`
+// (the same image as the floats that form decodes to): texel_rgb, the coarser mip levels,
+// bilinear, trilinear and texel_fetch at wrapped and mirrored coordinates.
+void expect_lookups_as_floats(const TextureImage& stored, const TextureImage& floats) {
+  for (int y = 0; y < stored.height; ++y)
+    for (int x = 0; x < stored.width; ++x) ASSERT_EQ(texel_rgb(stored, x, y), texel_rgb(floats, x, y)) << x << " " << y;
+  const MipPyramid stored_pyramid = build_mip_pyramid(stored), float_pyramid = build_mip_pyramid(floats);
+  ASSERT_EQ(stored_pyramid.levels.size(), float_pyramid.levels.size());
+  for (std::size_t l = 1; l < stored_pyramid.levels.size(); ++l)
+    EXPECT_EQ(stored_pyramid.levels[l].texels, float_pyramid.levels[l].texels) << l;
+  const int c = stored.channels;
+  for (int n = 0; n < 200; ++n) {
+    const Vec2f uv{static_cast<float>(n % 23) / 9.0f - 0.7f, static_cast<float>(n % 19) / 7.0f - 0.4f};
+    const float lod = static_cast<float>(n % 7) * 0.4f;
+    ASSERT_EQ(sample_bilinear(stored, uv), sample_bilinear(floats, uv)) << n;
+    ASSERT_EQ(sample_trilinear(stored_pyramid, uv, lod), sample_trilinear(float_pyramid, uv, lod)) << n;
+    ASSERT_EQ(texel_fetch(stored_pyramid.levels[0], c, n % 11 - 1, n % 7, TextureWrap::repeat, TextureWrap::mirror),
+              texel_fetch(float_pyramid.levels[0], c, n % 11 - 1, n % 7, TextureWrap::repeat, TextureWrap::mirror))
+        << n;
+  }
+}
+
 // A Radiance image kept as RGBE samples as the floats it decodes to, bitwise: at level 0
 // (borrowed, 4 bytes per texel) and through its float levels below.
 TEST(TextureSampling, RgbeImagesSampleAsTheirDecodedFloats) {
@@ -283,22 +305,8 @@ TEST(TextureSampling, RgbeImagesSampleAsTheirDecodedFloats) {
   ASSERT_EQ(floats.texels.size(), 9u * 6u * 3u);
   EXPECT_EQ(floats.texels[0], 0.0f);
   EXPECT_EQ(rgbe.memory_bytes(), 9u * 6u * 4u);
-  for (int y = 0; y < 6; ++y)
-    for (int x = 0; x < 9; ++x) ASSERT_EQ(texel_rgb(rgbe, x, y), texel_rgb(floats, x, y)) << x << " " << y;
-  const MipPyramid rgbe_pyramid = build_mip_pyramid(rgbe), float_pyramid = build_mip_pyramid(floats);
-  EXPECT_EQ(rgbe_pyramid.levels[0].borrowed_rgbe, rgbe.rgbe.data());  // borrowed, not copied
-  ASSERT_EQ(rgbe_pyramid.levels.size(), float_pyramid.levels.size());
-  for (std::size_t l = 1; l < rgbe_pyramid.levels.size(); ++l)
-    EXPECT_EQ(rgbe_pyramid.levels[l].texels, float_pyramid.levels[l].texels) << l;
-  for (int n = 0; n < 200; ++n) {
-    const Vec2f uv{static_cast<float>(n % 23) / 9.0f - 0.7f, static_cast<float>(n % 19) / 7.0f - 0.4f};
-    const float lod = static_cast<float>(n % 7) * 0.4f;
-    ASSERT_EQ(sample_bilinear(rgbe, uv), sample_bilinear(floats, uv)) << n;
-    ASSERT_EQ(sample_trilinear(rgbe_pyramid, uv, lod), sample_trilinear(float_pyramid, uv, lod)) << n;
-    ASSERT_EQ(texel_fetch(rgbe_pyramid.levels[0], 3, n % 11 - 1, n % 7, TextureWrap::repeat, TextureWrap::mirror),
-              texel_fetch(float_pyramid.levels[0], 3, n % 11 - 1, n % 7, TextureWrap::repeat, TextureWrap::mirror))
-        << n;
-  }
+  EXPECT_EQ(build_mip_pyramid(rgbe).levels[0].borrowed_rgbe, rgbe.rgbe.data());  // borrowed, not copied
+  expect_lookups_as_floats(rgbe, floats);
 }
 
 // A half-float image (OpenEXR HALF channels) samples bitwise as the floats its halves are
@@ -326,22 +334,8 @@ TEST(TextureSampling, HalfFloatImagesSampleAsTheirFloats) {
       if (!std::isfinite(floats.texels[i])) halves.halves[i] = 0x3c00, floats.texels[i] = 1.0f;
     EXPECT_EQ(halves.memory_bytes(), 9u * 6u * 2u * static_cast<std::size_t>(channels));
     EXPECT_EQ(halves.linear_values(), floats.texels);
-    for (int y = 0; y < 6; ++y)
-      for (int x = 0; x < 9; ++x) ASSERT_EQ(texel_rgb(halves, x, y), texel_rgb(floats, x, y)) << x << " " << y;
-    const MipPyramid half_pyramid = build_mip_pyramid(halves), float_pyramid = build_mip_pyramid(floats);
-    EXPECT_EQ(half_pyramid.levels[0].borrowed_halves, halves.halves.data());  // borrowed, not copied
-    ASSERT_EQ(half_pyramid.levels.size(), float_pyramid.levels.size());
-    for (std::size_t l = 1; l < half_pyramid.levels.size(); ++l)
-      EXPECT_EQ(half_pyramid.levels[l].texels, float_pyramid.levels[l].texels) << l;
-    for (int n = 0; n < 200; ++n) {
-      const Vec2f uv{static_cast<float>(n % 23) / 9.0f - 0.7f, static_cast<float>(n % 19) / 7.0f - 0.4f};
-      const float lod = static_cast<float>(n % 7) * 0.4f;
-      ASSERT_EQ(sample_bilinear(halves, uv), sample_bilinear(floats, uv)) << n;
-      ASSERT_EQ(sample_trilinear(half_pyramid, uv, lod), sample_trilinear(float_pyramid, uv, lod)) << n;
-      ASSERT_EQ(texel_fetch(half_pyramid.levels[0], channels, n % 11 - 1, n % 7, TextureWrap::repeat, TextureWrap::mirror),
-                texel_fetch(float_pyramid.levels[0], channels, n % 11 - 1, n % 7, TextureWrap::repeat, TextureWrap::mirror))
-          << n;
-    }
+    EXPECT_EQ(build_mip_pyramid(halves).levels[0].borrowed_halves, halves.halves.data());  // borrowed, not copied
+    expect_lookups_as_floats(halves, floats);
   }
 }
 

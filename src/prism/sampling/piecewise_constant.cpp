@@ -99,11 +99,19 @@ float PiecewiseConstant1D::pdf(float x) const {
   return pmf(cell(x)) / width_;
 }
 
+namespace {
+
+std::span<const float> checked_grid(std::span<const float> f, int nu, int nv) {
+  if (nu < 1 || nv < 1 || f.size() != static_cast<std::size_t>(nu) * static_cast<std::size_t>(nv))
+    throw UsageError("piecewise-constant 2D distribution: size does not match nu × nv");
+  return f;
+}
+
+}  // namespace
+
 PiecewiseConstant2D::PiecewiseConstant2D(std::span<const float> f, int nu, int nv)
-    : PiecewiseConstant2D(nu, nv, [&](int v, std::span<float> row) {
-        if (f.size() != static_cast<std::size_t>(nu) * static_cast<std::size_t>(nv))
-          throw UsageError("piecewise-constant 2D distribution: size does not match nu × nv");
-        const auto first = f.begin() + static_cast<std::ptrdiff_t>(v) * nu;
+    : PiecewiseConstant2D(nu, nv, [grid = checked_grid(f, nu, nv), nu](int v, std::span<float> row) {
+        const auto first = grid.begin() + static_cast<std::ptrdiff_t>(v) * nu;
         std::copy(first, first + nu, row.begin());
       }) {}
 

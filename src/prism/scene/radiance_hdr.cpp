@@ -81,23 +81,19 @@ RadianceHeader read_radiance_header(std::span<const unsigned char> bytes, std::s
     if (line == "FORMAT=32-bit_rle_rgbe") rgbe = true;
   }
   if (!rgbe) fail(name, "unsupported Radiance format (FORMAT=32-bit_rle_rgbe expected)");
-  std::string_view resolution = next_line(bytes, pos);
+  const std::string_view line = next_line(bytes, pos);
   const auto unsupported_layout = [&] {
-    fail(name, fmt::format("unsupported Radiance resolution line '{}' (-Y height +X width expected)",
-                           resolution.substr(0, 40)));
+    fail(name, fmt::format("unsupported Radiance resolution line '{}' (-Y height +X width expected)", line.substr(0, 40)));
   };
-  const std::string_view line = resolution;
-  if (!resolution.starts_with("-Y ")) unsupported_layout();
-  resolution.remove_prefix(3);
+  std::string_view rest = line;  // what is left to parse of the line
+  if (!rest.starts_with("-Y ")) unsupported_layout();
+  rest.remove_prefix(3);
   RadianceHeader h;
-  h.height = parse_long(resolution);
-  while (!resolution.empty() && resolution.front() == ' ') resolution.remove_prefix(1);
-  if (!resolution.starts_with("+X ")) {
-    resolution = line;
-    unsupported_layout();
-  }
-  resolution.remove_prefix(3);
-  h.width = parse_long(resolution);
+  h.height = parse_long(rest);
+  while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
+  if (!rest.starts_with("+X ")) unsupported_layout();
+  rest.remove_prefix(3);
+  h.width = parse_long(rest);
   h.data_offset = pos;
   return h;
 }

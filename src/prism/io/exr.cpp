@@ -142,48 +142,49 @@ ExrFile read_exr(const std::filesystem::path& path) {
 
 namespace {
 
-bool rgb_channels_are_half(const Imf::Header& header) {
-  for (const char* name : {"R", "G", "B"}) {
-    const Imf::Channel* c = header.channels().findChannel(name);
-    if (c == nullptr || c->type != Imf::HALF || c->xSampling != 1 || c->ySampling != 1) return false;
-  }
-  return true;
+bool half_at_full_resolution(const Imf::Channel* c) {
+  return c != nullptr && c->type == Imf::HALF && c->xSampling == 1 && c->ySampling == 1;
 }
 
 }  // namespace
 
-bool exr_rgb_is_half(const std::filesystem::path& path) {
+ExrColourLayout exr_colour_layout(const std::filesystem::path& path) {
   try {
     Imf::InputFile in(path.c_str());
-    return rgb_channels_are_half(in.header());
+    const Imf::ChannelList& list = in.header().channels();
+    const Imf::Channel *r = list.findChannel("R"), *g = list.findChannel("G"), *b = list.findChannel("B");
+    if (r != nullptr || g != nullptr || b != nullptr)
+      return {3, half_at_full_resolution(r) && half_at_full_resolution(g) && half_at_full_resolution(b)};
+    if (const Imf::Channel* y = list.findChannel("Y")) return {1, half_at_full_resolution(y)};
+    return {};
   } catch (const std::exception& e) {
     throw IoError(fmt::format("cannot read '{}': {}", path.string(), e.what()));
   }
 }
 
-std::optional<ExrRgbHalves> read_exr_rgb_halves(const std::filesystem::path& path) {
+std::optional<ExrHalves> read_exr_halves(const std::filesystem::path& path, const std::vector<std::string>& names) {
   try {
     Imf::InputFile in(path.c_str());
     const Imf::Header& header = in.header();
-    if (!rgb_channels_are_half(header)) return std::nullopt;
+    for (const std::string& name : names)
+      if (!half_at_full_resolution(header.channels().findChannel(name))) return std::nullopt;
     const Imath::Box2i dw = header.dataWindow();
     const long width = static_cast<long>(dw.max.x) - dw.min.x + 1, height = static_cast<long>(dw.max.y) - dw.min.y + 1;
     constexpr long kMaxSide = 32768;  // the same limit as read_exr
     if (width <= 0 || height <= 0 || width > kMaxSide || height > kMaxSide)
       throw IoError(fmt::format("image size {}x{} is out of range", width, height));
-    ExrRgbHalves result;
+    ExrHalves result;
     result.width = static_cast<int>(width);
     result.height = static_cast<int>(height);
-    result.rgb.assign(3u * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
+    result.values.assign(names.size() * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
     // Imath's half is its 16 bits (a trivially copyable wrapper of imath_half_bits_t).
     static_assert(sizeof(half) == sizeof(std::uint16_t));
-    const std::size_t x_stride = 3 * sizeof(std::uint16_t), y_stride = x_stride * static_cast<std::size_t>(width);
-    char* origin = reinterpret_cast<char*>(result.rgb.data()) -
+    const std::size_t x_stride = names.size() * sizeof(std::uint16_t), y_stride = x_stride * static_cast<std::size_t>(width);
+    char* origin = reinterpret_cast<char*>(result.values.data()) -
                    static_cast<std::ptrdiff_t>(dw.min.x) * static_cast<std::ptrdiff_t>(x_stride) -
                    static_cast<std::ptrdiff_t>(dw.min.y) * static_cast<std::ptrdiff_t>(y_stride);
     Imf::FrameBuffer fb;
-    const char* names[3] = {"R", "G", "B"};
-    for (int c = 0; c < 3; ++c)
+    for (std::size_t c = 0; c < names.size(); ++c)
       fb.insert(names[c], Imf::Slice(Imf::HALF, origin + c * sizeof(std::uint16_t), x_stride, y_stride));
     in.setFrameBuffer(fb);
     in.readPixels(dw.min.y, dw.max.y);

@@ -55,15 +55,24 @@ struct ExrFile {
 // Reads R, G, B channels (missing channels read as 0). Throws IoError on any failure.
 ExrFile read_exr(const std::filesystem::path& path);
 
-// R, G and B when all three are stored as HALF at full resolution: their IEEE binary16
-// bits, interleaved (3 × width × height), exactly as stored; nothing for any other file
-// (read_exr then reads it as floats). Throws IoError.
-struct ExrRgbHalves {
-  int width = 0, height = 0;
-  std::vector<std::uint16_t> rgb;
+// The colour channels an OpenEXR texture reads, from its (first part's) channel list: R, G
+// and B when any of them is there (3; a missing one reads as 0), else Y, luminance (1),
+// else none (0). `half`: all of those channels are there, stored as HALF at full
+// resolution, so a reader can keep their 16 bits.
+struct ExrColourLayout {
+  int channels = 0;
+  bool half = false;
 };
-bool exr_rgb_is_half(const std::filesystem::path& path);
-std::optional<ExrRgbHalves> read_exr_rgb_halves(const std::filesystem::path& path);
+ExrColourLayout exr_colour_layout(const std::filesystem::path& path);
+
+// The channels `names` as stored halves (IEEE binary16 bits), interleaved, width × height ×
+// names.size(); nothing when any of them is missing or not HALF at full resolution.
+// Throws IoError.
+struct ExrHalves {
+  int width = 0, height = 0;
+  std::vector<std::uint16_t> values;
+};
+std::optional<ExrHalves> read_exr_halves(const std::filesystem::path& path, const std::vector<std::string>& names);
 
 // The channels `names` (full names), interleaved as ExrChannelGroup::pixels, or nothing when
 // the file lacks any of them. Throws IoError.

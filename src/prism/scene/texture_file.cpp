@@ -70,11 +70,12 @@ TextureMemoryNeed radiance_memory(long width, long height) {
   return {static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) * 4, 0};
 }
 
-// An OpenEXR texture keeps RGB, as halves (2 bytes per sample) where the file stores R, G, B
-// as HALF, as floats otherwise, read straight into place.
-TextureMemoryNeed openexr_memory(long width, long height, bool rgb_half) {
-  const std::uint64_t samples = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) * 3;
-  return {samples * (rgb_half ? sizeof(std::uint16_t) : sizeof(float)), 0};
+// An OpenEXR texture keeps its colour channels (RGB, or Y alone), as halves (2 bytes per
+// sample) where the file stores them as HALF, as floats otherwise, read straight into place.
+TextureMemoryNeed openexr_memory(long width, long height, int channels, bool half) {
+  const std::uint64_t samples = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) *
+                                static_cast<std::uint64_t>(channels);
+  return {samples * (half ? sizeof(std::uint16_t) : sizeof(float)), 0};
 }
 
 void reserve_texels(const TextureLimits& limits, long width, long height, int channels, int decoded_bytes_per_sample,
@@ -340,31 +341,42 @@ std::optional<std::int32_t> openexr_fixed_attribute_size(std::string_view type) 
   return std::nullopt;
 }
 
-// What read_openexr reads of the first part: its data window's size, and whether R, G and
-// B are all HALF channels at full resolution (then kept as halves).
+// What read_openexr reads of the first part: its data window's size, and its colour
+// channels as exr_colour_layout finds them through OpenEXR (3 for R, G, B, 1 for Y alone, 0
+// for neither; half when all of those are HALF at full resolution).
 struct OpenExrFirstPart {
   long width = 0, height = 0;
-  bool rgb_half = false;
+  int channels = 0;
+  bool half = false;
 };
 
-// Whether a "chlist" attribute's value lists R, G and B as HALF (pixel type 1) at sampling
-// 1 × 1. Entries: a name, then pixel type, pLinear and 3 reserved bytes, x and y sampling
-// (OpenEXR file layout, "chlist"); a list that does not parse says no.
-bool openexr_channel_list_rgb_half(const unsigned char* value, std::size_t size) {
-  int half_rgb = 0;
+// The same from a "chlist" attribute's value. Entries: a name, then pixel type (1: HALF),
+// pLinear and 3 reserved bytes, x and y sampling (OpenEXR file layout, "chlist"); a list
+// that does not parse has no colour channels.
+void read_openexr_channel_list(const unsigned char* value, std::size_t size, OpenExrFirstPart& part) {
+  unsigned rgb = 0, rgb_half = 0;  // bit k: channel "RGB"[k] is listed / is half
+  bool y = false, y_half = false;
   std::size_t pos = 0;
   while (pos < size && value[pos] != 0) {
     const auto* entry = reinterpret_cast<const char*>(value + pos);
     const std::size_t n = ::strnlen(entry, size - pos);
-    if (pos + n + 1 + 16 > size) return false;
+    if (pos + n + 1 + 16 > size) return;
     const std::string_view channel(entry, n);
     const unsigned char* fields = value + pos + n + 1;
-    if ((channel == "R" || channel == "G" || channel == "B") && read_le32(fields) == 1 && read_le32(fields + 8) == 1 &&
-        read_le32(fields + 12) == 1)
-      ++half_rgb;
+    const bool half = read_le32(fields) == 1 && read_le32(fields + 8) == 1 && read_le32(fields + 12) == 1;
+    const std::size_t k = channel.size() == 1 ? std::string_view("RGB").find(channel[0]) : std::string_view::npos;
+    if (k != std::string_view::npos) {
+      rgb |= 1u << k;
+      rgb_half = half ? rgb_half | 1u << k : rgb_half & ~(1u << k);
+    }
+    if (channel == "Y") y = true, y_half = half;
     pos += n + 1 + 16;
   }
-  return half_rgb == 3;
+  if (rgb != 0) {
+    part.channels = 3, part.half = rgb_half == 7u;
+  } else if (y) {
+    part.channels = 1, part.half = y_half;
+  }
 }
 
 OpenExrFirstPart check_openexr_header(std::span<const unsigned char> bytes, int max_dimension,
@@ -385,7 +397,8 @@ OpenExrFirstPart check_openexr_header(std::span<const unsigned char> bytes, int 
   OpenExrFirstPart first;
   for (int header = 0;; ++header) {
     long width = 0, height = 0, tile_x = 0, tile_y = 0;
-    bool any = false, rgb_half = false;
+    bool any = false;
+    OpenExrFirstPart colour;
     for (;;) {
       if (pos >= bytes.size()) corrupt("no end of header");
       const std::string_view attribute = read_string();
@@ -404,8 +417,7 @@ OpenExrFirstPart check_openexr_header(std::span<const unsigned char> bytes, int 
         width = static_cast<long>(read_le32(value + 8)) - read_le32(value) + 1;
         height = static_cast<long>(read_le32(value + 12)) - read_le32(value + 4) + 1;
       }
-      if (attribute == "channels" && type == "chlist")
-        rgb_half = openexr_channel_list_rgb_half(value, static_cast<std::size_t>(size));
+      if (attribute == "channels" && type == "chlist") read_openexr_channel_list(value, static_cast<std::size_t>(size), colour);
       if (attribute == "tiles" && type == "tiledesc" && size >= 8) {
         tile_x = static_cast<std::uint32_t>(read_le32(value));
         tile_y = static_cast<std::uint32_t>(read_le32(value + 4));
@@ -417,7 +429,7 @@ OpenExrFirstPart check_openexr_header(std::span<const unsigned char> bytes, int 
       return first;  // the empty header that ends a multi-part file's headers
     }
     check_dimensions(width, height, max_dimension, name);
-    if (header == 0) first = {width, height, rgb_half};
+    if (header == 0) first = {width, height, colour.channels, colour.half};
     if (tile_x > 0 && tile_y > 0) {
       const double tiles = std::ceil(static_cast<double>(width) / tile_x) * std::ceil(static_cast<double>(height) / tile_y);
       if (8.0 * tiles > static_cast<double>(bytes.size())) corrupt("more tiles than the file can hold");
@@ -433,20 +445,22 @@ TextureImage read_openexr(const std::filesystem::path& path, std::span<const uns
   const std::string name = path.string();
   const int max_dimension = limits.max_dimension;
   check_openexr_header(bytes, max_dimension, name);
-  bool rgb_half = false;
+  ExrColourLayout layout;
+  long width = 0, height = 0;
   try {
-    // Size check from the header alone; read_exr then reads the pixels.
+    // Size check from the header alone; the pixels are read below.
     Imf::InputFile in(path.c_str());
     const Imath::Box2i dw = in.header().dataWindow();
-    const long width = static_cast<long>(dw.max.x) - dw.min.x + 1, height = static_cast<long>(dw.max.y) - dw.min.y + 1;
+    width = static_cast<long>(dw.max.x) - dw.min.x + 1, height = static_cast<long>(dw.max.y) - dw.min.y + 1;
     check_dimensions(width, height, max_dimension, name);
-    // RGB stored as HALF stays half (read straight into place, 6 bytes per texel; lookups
-    // decode each exactly, core/half_float.h); anything else becomes float RGB texels.
-    rgb_half = exr_rgb_is_half(path);
+    layout = exr_colour_layout(path);
+    if (layout.channels == 0)
+      throw IoError(fmt::format("cannot read image '{}': it has no R, G, B or Y channel (a texture reads R, G, B, "
+                                "or Y as grey)", name));
     if (limits.budget) {
-      const TextureMemoryNeed need = openexr_memory(width, height, rgb_half);
+      const TextureMemoryNeed need = openexr_memory(width, height, layout.channels, layout.half);
       limits.budget->reserve(need.texel_bytes, need.transient_bytes,
-                             fmt::format("texture '{}' ({}x{}, 3 channels)", name, width, height));
+                             fmt::format("texture '{}' ({}x{}, {} channels)", name, width, height, layout.channels));
     }
   } catch (const Error&) {
     throw;
@@ -455,19 +469,32 @@ TextureImage read_openexr(const std::filesystem::path& path, std::span<const uns
   }
   TextureImage image;
   image.name = name;
-  image.channels = 3;
-  if (rgb_half) {
-    if (auto halves = read_exr_rgb_halves(path)) {
+  image.channels = layout.channels;
+  const std::vector<std::string> names = layout.channels == 3 ? std::vector<std::string>{"R", "G", "B"}
+                                                              : std::vector<std::string>{"Y"};
+  // HALF channels stay half (read straight into place, 2 bytes per sample; lookups decode
+  // each exactly, core/half_float.h); anything else becomes float texels. Luminance-only
+  // files are one-channel (grey) textures.
+  if (layout.half) {
+    if (auto halves = read_exr_halves(path, names)) {
       image.width = halves->width;
       image.height = halves->height;
-      image.halves = std::move(halves->rgb);
+      image.halves = std::move(halves->values);
       return image;
     }
   }
-  ExrFile exr = read_exr(path);
-  image.width = exr.image.width;
-  image.height = exr.image.height;
-  image.texels = std::move(exr.image.rgb);
+  if (layout.channels == 3) {
+    ExrFile exr = read_exr(path);
+    image.width = exr.image.width;
+    image.height = exr.image.height;
+    image.texels = std::move(exr.image.rgb);
+    return image;
+  }
+  auto luminance = read_exr_channels(path, names);
+  if (!luminance) throw IoError(fmt::format("cannot read image '{}': its Y channel went missing", name));
+  image.width = static_cast<int>(width);
+  image.height = static_cast<int>(height);
+  image.texels = std::move(*luminance);
   return image;
 }
 
@@ -524,7 +551,8 @@ std::optional<TextureMemoryNeed> texture_memory_need(std::span<const unsigned ch
   if (format == ImageFileFormat::openexr) {  // read_openexr's half or float RGB texels
     try {
       const OpenExrFirstPart part = check_openexr_header(bytes, std::numeric_limits<int>::max(), "");
-      return openexr_memory(part.width, part.height, part.rgb_half);
+      if (part.channels == 0) return std::nullopt;  // read_openexr reports it
+      return openexr_memory(part.width, part.height, part.channels, part.half);
     } catch (const IoError&) {
       return std::nullopt;
     }

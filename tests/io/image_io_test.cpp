@@ -7,6 +7,7 @@
 #include "prism/io/atomic_file.h"
 #include "prism/io/exr.h"
 #include "prism/io/png.h"
+#include "support/exr_test_files.h"
 #include "support/scratch_folder.h"
 
 namespace prism {
@@ -74,6 +75,19 @@ TEST_F(ImageIo, ReadingMissingOrCorruptFilesThrowsIoError) {
   { std::ofstream(dir_ / "junk.png") << "\x89PNG\r\n\x1a\n truncated"; }
   EXPECT_THROW(read_exr(dir_ / "junk.exr"), IoError);
   EXPECT_THROW(read_png(dir_ / "junk.png"), IoError);
+}
+
+// A luminance-only file (Y alone) reads as grey, Y in R, G and B (it read as black); a file
+// with none of R, G, B, Y is an error, not a black image.
+TEST_F(ImageIo, LuminanceOnlyExrReadsAsGrey) {
+  const std::vector<float> values = {0.0f, 0.5f, 1.0f, 2.0f, 0.25f, 8.0f};
+  test::write_single_channel_exr(dir_ / "y.exr", "Y", Imf::HALF, values);
+  const ExrFile f = read_exr(dir_ / "y.exr");
+  ASSERT_EQ(f.image.rgb.size(), 18u);
+  for (std::size_t i = 0; i < 6; ++i)
+    for (std::size_t c = 0; c < 3; ++c) EXPECT_EQ(f.image.rgb[3 * i + c], values[i]) << i << " " << c;
+  test::write_single_channel_exr(dir_ / "z.exr", "Z", Imf::FLOAT, values);
+  EXPECT_THROW(read_exr(dir_ / "z.exr"), IoError);
 }
 
 TEST_F(ImageIo, TruncatedExrIsAnError) {

@@ -120,8 +120,19 @@ ExrFile read_exr(const std::filesystem::path& path) {
     result.image.width = static_cast<int>(width);
     result.image.height = static_cast<int>(height);
     result.image.rgb.assign(3u * width * height, 0.0f);
-    in.setFrameBuffer(rgb_frame_buffer(result.image.rgb.data(), result.image.width, dw.min.x, dw.min.y));
+    // R, G and B (a missing one reads as 0); a luminance-only file (Y, no R, G or B) as grey.
+    const Imf::ChannelList& channels = header.channels();
+    const bool rgb = channels.findChannel("R") || channels.findChannel("G") || channels.findChannel("B");
+    if (!rgb && !channels.findChannel("Y")) throw IoError("it has no R, G, B or Y channel");
+    // (A frame buffer holds one slice per name: Y goes to R, then R is copied to G and B.)
+    static constexpr const char* kLuminanceIntoRed[3] = {"Y", "G", "B"};
+    if (rgb)
+      in.setFrameBuffer(rgb_frame_buffer(result.image.rgb.data(), result.image.width, dw.min.x, dw.min.y));
+    else
+      in.setFrameBuffer(rgb_frame_buffer(result.image.rgb.data(), result.image.width, dw.min.x, dw.min.y, kLuminanceIntoRed));
     in.readPixels(dw.min.y, dw.max.y);
+    if (!rgb)
+      for (std::size_t i = 0; i < result.image.rgb.size(); i += 3) result.image.rgb[i + 1] = result.image.rgb[i + 2] = result.image.rgb[i];
     if (Imf::hasChromaticities(header)) {
       const Imf::Chromaticities& ch = Imf::chromaticities(header);
       result.has_chromaticities = true;

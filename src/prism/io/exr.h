@@ -52,7 +52,9 @@ struct ExrFile {
   ExrMetadata metadata;  // string, int and double attributes other than the standard ones
 };
 
-// Reads R, G, B channels (missing channels read as 0). Throws IoError on any failure.
+// Reads R, G, B channels (missing channels read as 0), or, in a file with none of them, Y
+// into all three (grey). Throws IoError on any failure, and for a file with none of R, G,
+// B, Y.
 ExrFile read_exr(const std::filesystem::path& path);
 
 // The colour channels an OpenEXR texture reads, from its (first part's) channel list: R, G

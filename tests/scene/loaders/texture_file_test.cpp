@@ -1,11 +1,5 @@
 #include <gtest/gtest.h>
 
-#include <ImfChannelList.h>
-#include <ImfFrameBuffer.h>
-#include <ImfHeader.h>
-#include <ImfOutputFile.h>
-#include <Imath/half.h>
-
 #include <cmath>
 
 #include "prism/core/error.h"
@@ -15,6 +9,7 @@
 #include "prism/scene/loaders/texture_cache.h"
 #include "prism/scene/texture_file.h"
 #include "scene/loaders/loader_test_files.h"
+#include "support/exr_test_files.h"
 
 namespace prism {
 namespace {
@@ -114,23 +109,6 @@ TEST(TextureFile, HalfFloatOpenExrKeepsItsHalves) {
   EXPECT_EQ(float_need->texel_bytes, 3u * 4u * 6u);
 }
 
-// Writes a 3 × 2 OpenEXR file with the one channel `channel` of `type` holding `values`.
-void write_single_channel_exr(const std::filesystem::path& path, const char* channel, Imf::PixelType type,
-                              const std::vector<float>& values) {
-  Imf::Header header(3, 2);
-  header.channels().insert(channel, Imf::Channel(type));
-  Imf::OutputFile out(path.c_str(), header);
-  Imf::FrameBuffer fb;
-  std::vector<float> floats = values;
-  std::vector<half> halves(values.begin(), values.end());
-  if (type == Imf::HALF)
-    fb.insert(channel, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(halves.data()), sizeof(half), 3 * sizeof(half)));
-  else
-    fb.insert(channel, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(floats.data()), sizeof(float), 3 * sizeof(float)));
-  out.setFrameBuffer(fb);
-  out.writePixels(2);
-}
-
 // A luminance-only OpenEXR file (channel Y, as greyscale maps are often written) is a
 // one-channel grey texture, kept as halves where Y is HALF; it read as black before (R, G,
 // B missing). A file with none of R, G, B, Y is an error naming the file, not black.
@@ -138,7 +116,7 @@ TEST(TextureFile, LuminanceOnlyOpenExrIsAGreyTexture) {
   test::ScratchFolder dir;
   const std::vector<float> values = {0.0f, 0.5f, 1.0f, 2.0f, 0.25f, 8.0f};
   for (const Imf::PixelType type : {Imf::HALF, Imf::FLOAT}) {
-    write_single_channel_exr(dir / "y.exr", "Y", type, values);
+    test::write_single_channel_exr(dir / "y.exr", "Y", type, values);
     const TextureImage t = read_texture_file(dir / "y.exr", TextureEncoding::srgb, 32768);
     EXPECT_EQ(t.channels, 1);
     EXPECT_EQ(t.has_halves(), type == Imf::HALF);
@@ -148,7 +126,7 @@ TEST(TextureFile, LuminanceOnlyOpenExrIsAGreyTexture) {
     ASSERT_TRUE(need);
     EXPECT_EQ(need->texel_bytes, 6u * (type == Imf::HALF ? 2u : 4u));
   }
-  write_single_channel_exr(dir / "z.exr", "Z", Imf::FLOAT, values);
+  test::write_single_channel_exr(dir / "z.exr", "Z", Imf::FLOAT, values);
   const std::string error = error_of<IoError>([&] { read_texture_file(dir / "z.exr", TextureEncoding::srgb, 32768); });
   EXPECT_NE(error.find("z.exr"), std::string::npos) << error;
   EXPECT_NE(error.find("no R, G, B or Y channel"), std::string::npos) << error;

@@ -207,8 +207,14 @@ std::vector<float> box_filter_level(const FineValue& fine, int fine_width, int f
       for (int fy = y_begin; fy < y_end; ++fy)
         for (int fx = x_begin; fx < x_end; ++fx)
           for (int k = 0; k < c; ++k) out[k] += fine(static_cast<std::size_t>(fy) * fine_width + fx, k);
-      const float n = static_cast<float>((y_end - y_begin) * (x_end - x_begin));
-      for (int k = 0; k < c; ++k) out[k] /= n;
+      const int n = (y_end - y_begin) * (x_end - x_begin);
+      if (n == 4) {
+        // x / 4 and x · 0.25 are the same real number, so they round alike (every texel
+        // but the last row and column of an odd size: a multiplication, not a division).
+        for (int k = 0; k < c; ++k) out[k] *= 0.25f;
+      } else {
+        for (int k = 0; k < c; ++k) out[k] /= static_cast<float>(n);
+      }
     }
   }
   return coarse;

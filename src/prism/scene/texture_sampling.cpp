@@ -1,5 +1,7 @@
 #include "prism/scene/texture_sampling.h"
 
+#include "prism/scene/nearest_code.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -220,36 +222,11 @@ std::vector<float> box_filter_level(const FineValue& fine, int fine_width, int f
   return coarse;
 }
 
-// The code whose value (in `values`, ascending from 0 to 1) is nearest to v: the number of
-// midpoints between consecutive values at or below v, found from a table of that number
-// at multiples of 1/kBuckets (a bucket holds one midpoint at most: the sRGB values are
-// densest near 0, 1/(255 · 12.92) = 3.0e-4 apart, five buckets), then settled against its
-// neighbours, since a midpoint rounded to float can put a v within an ulp of it on the
-// wrong side.
-struct NearestCode {
-  static constexpr int kBuckets = 1 << 14;
-  const std::array<float, 256>& values;
-  std::array<float, 255> midpoints{};
-  std::array<std::uint8_t, kBuckets> first{};  // midpoints at or below bucket / kBuckets
-  explicit NearestCode(const std::array<float, 256>& values_) : values(values_) {
-    for (std::size_t k = 0; k < midpoints.size(); ++k) midpoints[k] = 0.5f * (values[k] + values[k + 1]);
-    for (int b = 0; b < kBuckets; ++b) {
-      const float v = static_cast<float>(b) / kBuckets;
-      first[static_cast<std::size_t>(b)] =
-          static_cast<std::uint8_t>(std::upper_bound(midpoints.begin(), midpoints.end(), v) - midpoints.begin());
-    }
-  }
-  std::uint8_t operator()(float v) const {
-    if (!(v > 0.0f)) return 0;  // and NaN
-    if (v >= 1.0f) return 255;
-    std::size_t k = first[static_cast<std::size_t>(v * kBuckets)];
-    while (k < midpoints.size() && midpoints[k] <= v) ++k;
-    const auto error = [&](std::size_t code) { return std::abs(values[code] - v); };
-    if (k > 0 && error(k - 1) < error(k)) --k;
-    if (k < 255 && error(k + 1) < error(k)) ++k;
-    return static_cast<std::uint8_t>(k);
-  }
-};
+// Per encoding, built once (its thresholds take a bisection per code).
+const NearestCode& nearest_code(TextureEncoding encoding) {
+  static const NearestCode srgb(code_values(TextureEncoding::srgb)), linear(code_values(TextureEncoding::linear));
+  return encoding == TextureEncoding::srgb ? srgb : linear;
+}
 
 }  // namespace
 
@@ -305,7 +282,8 @@ MipPyramid build_mip_pyramid(const TextureImage& texture) {
   // decoded codes), then rounded to codes; alpha by its own (linear) table.
   const std::array<float, 256>& colour = code_values(texture.encoding);
   const std::array<float, 256>& linear = code_values(TextureEncoding::linear);
-  const NearestCode nearest_colour(colour), nearest_linear(linear);
+  const NearestCode& nearest_colour = nearest_code(texture.encoding);
+  const NearestCode& nearest_linear = nearest_code(TextureEncoding::linear);
   std::array<const float*, 4> channel_values{};  // per channel: its code → value table
   for (int k = 0; k < c; ++k)
     channel_values[static_cast<std::size_t>(k)] = is_alpha_channel(k, c) ? linear.data() : colour.data();

@@ -1,0 +1,46 @@
+#include "prism/scene/nearest_code.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+namespace prism {
+
+std::array<float, 255> code_midpoints(const std::array<float, 256>& values) {
+  std::array<float, 255> midpoints{};
+  for (std::size_t k = 0; k < midpoints.size(); ++k) midpoints[k] = 0.5f * (values[k] + values[k + 1]);
+  return midpoints;
+}
+
+std::uint8_t nearest_code_by_midpoints(const std::array<float, 256>& values, const std::array<float, 255>& midpoints,
+                                       float v) {
+  if (!(v > 0.0f)) return 0;  // and NaN
+  if (v >= 1.0f) return 255;
+  std::size_t k = static_cast<std::size_t>(std::upper_bound(midpoints.begin(), midpoints.end(), v) - midpoints.begin());
+  const auto error = [&](std::size_t code) { return std::abs(values[code] - v); };
+  if (k > 0 && error(k - 1) < error(k)) --k;
+  if (k < 255 && error(k + 1) < error(k)) ++k;
+  return static_cast<std::uint8_t>(k);
+}
+
+NearestCode::NearestCode(const std::array<float, 256>& values) {
+  const std::array<float, 255> midpoints = code_midpoints(values);
+  for (std::size_t k = 0; k < thresholds_.size(); ++k) {
+    // The least float in (values[k], values[k + 1]] answered with more than k: values are
+    // non-negative, so their bit patterns order as they do.
+    std::uint32_t lo = std::bit_cast<std::uint32_t>(values[k]), hi = std::bit_cast<std::uint32_t>(values[k + 1]);
+    while (hi - lo > 1) {
+      const std::uint32_t mid = lo + (hi - lo) / 2;
+      if (nearest_code_by_midpoints(values, midpoints, std::bit_cast<float>(mid)) > k) hi = mid;
+      else lo = mid;
+    }
+    thresholds_[k] = std::bit_cast<float>(hi);
+  }
+  for (int b = 0; b < kBuckets; ++b) {
+    const float v = static_cast<float>(b) / kBuckets;
+    first_[static_cast<std::size_t>(b)] =
+        static_cast<std::uint8_t>(std::upper_bound(thresholds_.begin(), thresholds_.end(), v) - thresholds_.begin());
+  }
+}
+
+}  // namespace prism

@@ -113,7 +113,8 @@ TEST(PiecewiseConstant, CoarseGuideTableFindsTheSameCellsAsTheSearch) {
     PiecewiseConstant1D guided = searched;
     guided.build_coarse_guide_table();
     const int per_entry = PiecewiseConstant1D::kCellsPerCoarseGuideEntry;
-    const int entries = static_cast<int>(std::bit_ceil(static_cast<unsigned>((searched.size() + per_entry - 1) / per_entry)));
+    const auto cells = static_cast<unsigned>((searched.size() + per_entry - 1) / per_entry);
+    const int entries = static_cast<int>(std::bit_ceil(cells));
     expect_same_cells(searched, guided, entries);
   }
 }

@@ -16,15 +16,17 @@ namespace {
 // and the floats within 8 ulps of every value, midpoint and threshold (where an off-by-one
 // or a rounding side would show), and the ends.
 std::vector<float> probes(const std::array<float, 256>& values, const NearestCode& fast) {
-  std::vector<float> v = {0.0f, -0.0f, -1.0f, 1.0f, 2.0f, std::nextafter(1.0f, 0.0f), std::numeric_limits<float>::quiet_NaN(),
-                          std::numeric_limits<float>::infinity(), std::numeric_limits<float>::denorm_min()};
-  for (std::uint32_t bits = 0; bits <= std::bit_cast<std::uint32_t>(1.0f); bits += 257) v.push_back(std::bit_cast<float>(bits));
+  std::vector<float> v = {0.0f, -0.0f, -1.0f, 1.0f, 2.0f, std::nextafter(1.0f, 0.0f),
+                          std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(),
+                          std::numeric_limits<float>::denorm_min()};
+  for (std::uint32_t bits = 0; bits <= std::bit_cast<std::uint32_t>(1.0f); bits += 257)
+    v.push_back(std::bit_cast<float>(bits));
   std::vector<float> centres(values.begin(), values.end());
   for (const float m : code_midpoints(values)) centres.push_back(m);
   for (int k = 0; k < 255; ++k) centres.push_back(fast.threshold(k));
   for (const float c : centres)
     for (int d = -8; d <= 8; ++d)
-      v.push_back(std::bit_cast<float>(static_cast<std::uint32_t>(static_cast<std::int64_t>(std::bit_cast<std::uint32_t>(c)) + d)));
+      v.push_back(std::bit_cast<float>(static_cast<std::uint32_t>(std::int64_t{std::bit_cast<std::uint32_t>(c)} + d)));
   return v;
 }
 
@@ -38,7 +40,8 @@ TEST(NearestCode, ThresholdsAnswerTheMidpointDefinition) {
     const NearestCode fast(values);
     for (const float v : probes(values, fast)) {
       const std::uint8_t code = nearest_code_by_midpoints(values, midpoints, v);
-      ASSERT_EQ(fast(v), code) << static_cast<int>(encoding) << " v " << v << " bits " << std::bit_cast<std::uint32_t>(v);
+      ASSERT_EQ(fast(v), code) << static_cast<int>(encoding) << " v " << v << " bits "
+                               << std::bit_cast<std::uint32_t>(v);
       if (!(v > 0.0f) || v >= 1.0f) continue;
       const float error = std::abs(values[code] - v);
       if (code > 0) {

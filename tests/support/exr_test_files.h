@@ -24,7 +24,8 @@ inline void write_single_channel_exr(const std::filesystem::path& path, const ch
   if (type == Imf::HALF)
     fb.insert(channel, Imf::Slice(Imf::HALF, reinterpret_cast<char*>(halves.data()), sizeof(half), 3 * sizeof(half)));
   else
-    fb.insert(channel, Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(floats.data()), sizeof(float), 3 * sizeof(float)));
+    fb.insert(channel,
+              Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(floats.data()), sizeof(float), 3 * sizeof(float)));
   out.setFrameBuffer(fb);
   out.writePixels(2);
 }

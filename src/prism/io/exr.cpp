@@ -129,10 +129,14 @@ ExrFile read_exr(const std::filesystem::path& path) {
     if (rgb)
       in.setFrameBuffer(rgb_frame_buffer(result.image.rgb.data(), result.image.width, dw.min.x, dw.min.y));
     else
-      in.setFrameBuffer(rgb_frame_buffer(result.image.rgb.data(), result.image.width, dw.min.x, dw.min.y, kLuminanceIntoRed));
+      in.setFrameBuffer(
+          rgb_frame_buffer(result.image.rgb.data(), result.image.width, dw.min.x, dw.min.y, kLuminanceIntoRed));
     in.readPixels(dw.min.y, dw.max.y);
     if (!rgb)
-      for (std::size_t i = 0; i < result.image.rgb.size(); i += 3) result.image.rgb[i + 1] = result.image.rgb[i + 2] = result.image.rgb[i];
+      for (std::size_t i = 0; i < result.image.rgb.size(); i += 3) {
+        std::vector<float>& rgb_values = result.image.rgb;
+        rgb_values[i + 1] = rgb_values[i + 2] = rgb_values[i];
+      }
     if (Imf::hasChromaticities(header)) {
       const Imf::Chromaticities& ch = Imf::chromaticities(header);
       result.has_chromaticities = true;
@@ -190,7 +194,8 @@ std::optional<ExrHalves> read_exr_halves(const std::filesystem::path& path, cons
     result.values.assign(names.size() * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
     // Imath's half is its 16 bits (a trivially copyable wrapper of imath_half_bits_t).
     static_assert(sizeof(half) == sizeof(std::uint16_t));
-    const std::size_t x_stride = names.size() * sizeof(std::uint16_t), y_stride = x_stride * static_cast<std::size_t>(width);
+    const std::size_t x_stride = names.size() * sizeof(std::uint16_t);
+    const std::size_t y_stride = x_stride * static_cast<std::size_t>(width);
     char* origin = reinterpret_cast<char*>(result.values.data()) -
                    static_cast<std::ptrdiff_t>(dw.min.x) * static_cast<std::ptrdiff_t>(x_stride) -
                    static_cast<std::ptrdiff_t>(dw.min.y) * static_cast<std::ptrdiff_t>(y_stride);

@@ -83,7 +83,8 @@ RadianceHeader read_radiance_header(std::span<const unsigned char> bytes, std::s
   if (!rgbe) fail(name, "unsupported Radiance format (FORMAT=32-bit_rle_rgbe expected)");
   const std::string_view line = next_line(bytes, pos);
   const auto unsupported_layout = [&] {
-    fail(name, fmt::format("unsupported Radiance resolution line '{}' (-Y height +X width expected)", line.substr(0, 40)));
+    fail(name,
+         fmt::format("unsupported Radiance resolution line '{}' (-Y height +X width expected)", line.substr(0, 40)));
   };
   std::string_view rest = line;  // what is left to parse of the line
   if (!rest.starts_with("-Y ")) unsupported_layout();

@@ -417,7 +417,8 @@ OpenExrFirstPart check_openexr_header(std::span<const unsigned char> bytes, int 
         width = static_cast<long>(read_le32(value + 8)) - read_le32(value) + 1;
         height = static_cast<long>(read_le32(value + 12)) - read_le32(value + 4) + 1;
       }
-      if (attribute == "channels" && type == "chlist") read_openexr_channel_list(value, static_cast<std::size_t>(size), colour);
+      if (attribute == "channels" && type == "chlist")
+        read_openexr_channel_list(value, static_cast<std::size_t>(size), colour);
       if (attribute == "tiles" && type == "tiledesc" && size >= 8) {
         tile_x = static_cast<std::uint32_t>(read_le32(value));
         tile_y = static_cast<std::uint32_t>(read_le32(value + 4));

@@ -267,8 +267,9 @@ MipPyramid build_mip_pyramid(const TextureImage& texture) {
                                          fine.width, fine.height, coarse.width, coarse.height, c);
       } else if (fine.has_halves()) {  // level 0 of a half-float image; float levels below it
         const std::uint16_t* halves = fine.borrowed_halves;
-        coarse.texels = box_filter_level([halves, c](std::size_t t, int k) { return half_bits_to_float(halves[t * c + k]); },
-                                         fine.width, fine.height, coarse.width, coarse.height, c);
+        coarse.texels =
+            box_filter_level([halves, c](std::size_t t, int k) { return half_bits_to_float(halves[t * c + k]); },
+                             fine.width, fine.height, coarse.width, coarse.height, c);
       } else {
         const float* values = fine.data();
         coarse.texels = box_filter_level([values, c](std::size_t t, int k) { return values[t * c + k]; }, fine.width,

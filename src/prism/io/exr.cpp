@@ -13,6 +13,8 @@
 #include <fmt/format.h>
 
 #include <exception>
+#include <tuple>
+#include <utility>
 
 #include "prism/core/error.h"
 #include "prism/io/atomic_file.h"
@@ -20,27 +22,37 @@
 namespace prism {
 namespace {
 
-Imf::FrameBuffer rgb_frame_buffer(float* base, int width, int min_x, int min_y,
-                                  const char* const (&names)[3] = {"R", "G", "B"}) {
+// `names.size()` interleaved channels of `type` (`sample_bytes` each) at `base`, whose
+// first pixel is (min_x, min_y); missing channels read as 0.
+Imf::FrameBuffer interleaved_frame_buffer(char* base, Imf::PixelType type, std::size_t sample_bytes, int width,
+                                          int min_x, int min_y, const std::vector<std::string>& names) {
   // OpenEXR addresses pixels by absolute data-window coordinates: shift the base pointer.
-  const std::size_t x_stride = 3 * sizeof(float), y_stride = x_stride * static_cast<std::size_t>(width);
-  char* origin = reinterpret_cast<char*>(base) - static_cast<std::ptrdiff_t>(min_x) * static_cast<std::ptrdiff_t>(x_stride) -
+  const std::size_t x_stride = names.size() * sample_bytes, y_stride = x_stride * static_cast<std::size_t>(width);
+  char* origin = base - static_cast<std::ptrdiff_t>(min_x) * static_cast<std::ptrdiff_t>(x_stride) -
                  static_cast<std::ptrdiff_t>(min_y) * static_cast<std::ptrdiff_t>(y_stride);
   Imf::FrameBuffer fb;
-  for (int c = 0; c < 3; ++c)
-    fb.insert(names[c], Imf::Slice(Imf::FLOAT, origin + c * sizeof(float), x_stride, y_stride, 1, 1, 0.0));
+  for (std::size_t c = 0; c < names.size(); ++c)
+    fb.insert(names[c], Imf::Slice(type, origin + c * sample_bytes, x_stride, y_stride, 1, 1, 0.0));
   return fb;
 }
 
 // `names.size()` interleaved float channels.
 Imf::FrameBuffer float_frame_buffer(float* base, int width, int min_x, int min_y, const std::vector<std::string>& names) {
-  const std::size_t x_stride = names.size() * sizeof(float), y_stride = x_stride * static_cast<std::size_t>(width);
-  char* origin = reinterpret_cast<char*>(base) - static_cast<std::ptrdiff_t>(min_x) * static_cast<std::ptrdiff_t>(x_stride) -
-                 static_cast<std::ptrdiff_t>(min_y) * static_cast<std::ptrdiff_t>(y_stride);
-  Imf::FrameBuffer fb;
-  for (std::size_t c = 0; c < names.size(); ++c)
-    fb.insert(names[c], Imf::Slice(Imf::FLOAT, origin + c * sizeof(float), x_stride, y_stride, 1, 1, 0.0));
-  return fb;
+  return interleaved_frame_buffer(reinterpret_cast<char*>(base), Imf::FLOAT, sizeof(float), width, min_x, min_y, names);
+}
+
+Imf::FrameBuffer rgb_frame_buffer(float* base, int width, int min_x, int min_y) {
+  return float_frame_buffer(base, width, min_x, min_y, {"R", "G", "B"});
+}
+
+// The data window's width and height, refused when absurd before anything is allocated
+// (the same limit as textures).
+std::pair<int, int> checked_size(const Imath::Box2i& dw) {
+  const long width = static_cast<long>(dw.max.x) - dw.min.x + 1, height = static_cast<long>(dw.max.y) - dw.min.y + 1;
+  constexpr long kMaxSide = 32768;
+  if (width <= 0 || height <= 0 || width > kMaxSide || height > kMaxSide)
+    throw IoError(fmt::format("image size {}x{} is out of range", width, height));
+  return {static_cast<int>(width), static_cast<int>(height)};
 }
 
 // The same for half-float pixels (written only; pixels start at (0, 0)).
@@ -112,25 +124,18 @@ ExrFile read_exr(const std::filesystem::path& path) {
     Imf::InputFile in(path.c_str());
     const Imf::Header& header = in.header();
     const Imath::Box2i dw = header.dataWindow();
-    const long width = static_cast<long>(dw.max.x) - dw.min.x + 1, height = static_cast<long>(dw.max.y) - dw.min.y + 1;
-    // Refuse absurd sizes before allocating (the same limit as textures).
-    constexpr long kMaxSide = 32768;
-    if (width <= 0 || height <= 0 || width > kMaxSide || height > kMaxSide)
-      throw IoError(fmt::format("image size {}x{} is out of range", width, height));
-    result.image.width = static_cast<int>(width);
-    result.image.height = static_cast<int>(height);
-    result.image.rgb.assign(3u * width * height, 0.0f);
+    const auto [width, height] = checked_size(dw);
+    result.image.width = width;
+    result.image.height = height;
+    result.image.rgb.assign(3u * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0.0f);
     // R, G and B (a missing one reads as 0); a luminance-only file (Y, no R, G or B) as grey.
     const Imf::ChannelList& channels = header.channels();
     const bool rgb = channels.findChannel("R") || channels.findChannel("G") || channels.findChannel("B");
     if (!rgb && !channels.findChannel("Y")) throw IoError("it has no R, G, B or Y channel");
     // (A frame buffer holds one slice per name: Y goes to R, then R is copied to G and B.)
-    static constexpr const char* kLuminanceIntoRed[3] = {"Y", "G", "B"};
-    if (rgb)
-      in.setFrameBuffer(rgb_frame_buffer(result.image.rgb.data(), result.image.width, dw.min.x, dw.min.y));
-    else
-      in.setFrameBuffer(
-          rgb_frame_buffer(result.image.rgb.data(), result.image.width, dw.min.x, dw.min.y, kLuminanceIntoRed));
+    in.setFrameBuffer(float_frame_buffer(result.image.rgb.data(), width, dw.min.x, dw.min.y,
+                                         rgb ? std::vector<std::string>{"R", "G", "B"}
+                                             : std::vector<std::string>{"Y", "G", "B"}));
     in.readPixels(dw.min.y, dw.max.y);
     if (!rgb)
       for (std::size_t i = 0; i < result.image.rgb.size(); i += 3) {
@@ -163,20 +168,6 @@ bool half_at_full_resolution(const Imf::Channel* c) {
 
 }  // namespace
 
-ExrColourLayout exr_colour_layout(const std::filesystem::path& path) {
-  try {
-    Imf::InputFile in(path.c_str());
-    const Imf::ChannelList& list = in.header().channels();
-    const Imf::Channel *r = list.findChannel("R"), *g = list.findChannel("G"), *b = list.findChannel("B");
-    if (r != nullptr || g != nullptr || b != nullptr)
-      return {3, half_at_full_resolution(r) && half_at_full_resolution(g) && half_at_full_resolution(b)};
-    if (const Imf::Channel* y = list.findChannel("Y")) return {1, half_at_full_resolution(y)};
-    return {};
-  } catch (const std::exception& e) {
-    throw IoError(fmt::format("cannot read '{}': {}", path.string(), e.what()));
-  }
-}
-
 std::optional<ExrHalves> read_exr_halves(const std::filesystem::path& path, const std::vector<std::string>& names) {
   try {
     Imf::InputFile in(path.c_str());
@@ -184,25 +175,14 @@ std::optional<ExrHalves> read_exr_halves(const std::filesystem::path& path, cons
     for (const std::string& name : names)
       if (!half_at_full_resolution(header.channels().findChannel(name))) return std::nullopt;
     const Imath::Box2i dw = header.dataWindow();
-    const long width = static_cast<long>(dw.max.x) - dw.min.x + 1, height = static_cast<long>(dw.max.y) - dw.min.y + 1;
-    constexpr long kMaxSide = 32768;  // the same limit as read_exr
-    if (width <= 0 || height <= 0 || width > kMaxSide || height > kMaxSide)
-      throw IoError(fmt::format("image size {}x{} is out of range", width, height));
     ExrHalves result;
-    result.width = static_cast<int>(width);
-    result.height = static_cast<int>(height);
-    result.values.assign(names.size() * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
+    std::tie(result.width, result.height) = checked_size(dw);
+    result.values.assign(names.size() * static_cast<std::size_t>(result.width) * static_cast<std::size_t>(result.height),
+                         0);
     // Imath's half is its 16 bits (a trivially copyable wrapper of imath_half_bits_t).
     static_assert(sizeof(half) == sizeof(std::uint16_t));
-    const std::size_t x_stride = names.size() * sizeof(std::uint16_t);
-    const std::size_t y_stride = x_stride * static_cast<std::size_t>(width);
-    char* origin = reinterpret_cast<char*>(result.values.data()) -
-                   static_cast<std::ptrdiff_t>(dw.min.x) * static_cast<std::ptrdiff_t>(x_stride) -
-                   static_cast<std::ptrdiff_t>(dw.min.y) * static_cast<std::ptrdiff_t>(y_stride);
-    Imf::FrameBuffer fb;
-    for (std::size_t c = 0; c < names.size(); ++c)
-      fb.insert(names[c], Imf::Slice(Imf::HALF, origin + c * sizeof(std::uint16_t), x_stride, y_stride));
-    in.setFrameBuffer(fb);
+    in.setFrameBuffer(interleaved_frame_buffer(reinterpret_cast<char*>(result.values.data()), Imf::HALF,
+                                               sizeof(std::uint16_t), result.width, dw.min.x, dw.min.y, names));
     in.readPixels(dw.min.y, dw.max.y);
     return result;
   } catch (const std::exception& e) {
@@ -218,12 +198,9 @@ std::optional<std::vector<float>> read_exr_channels(const std::filesystem::path&
     for (const auto& n : names)
       if (header.channels().findChannel(n) == nullptr) return std::nullopt;
     const Imath::Box2i dw = header.dataWindow();
-    const long width = static_cast<long>(dw.max.x) - dw.min.x + 1, height = static_cast<long>(dw.max.y) - dw.min.y + 1;
-    constexpr long kMaxSide = 32768;  // the same limit as read_exr
-    if (width <= 0 || height <= 0 || width > kMaxSide || height > kMaxSide)
-      throw IoError(fmt::format("image size {}x{} is out of range", width, height));
+    const auto [width, height] = checked_size(dw);
     std::vector<float> pixels(names.size() * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0.0f);
-    in.setFrameBuffer(float_frame_buffer(pixels.data(), static_cast<int>(width), dw.min.x, dw.min.y, names));
+    in.setFrameBuffer(float_frame_buffer(pixels.data(), width, dw.min.x, dw.min.y, names));
     in.readPixels(dw.min.y, dw.max.y);
     return pixels;
   } catch (const std::exception& e) {
@@ -235,16 +212,15 @@ std::optional<ImageRgbF> read_exr_vector_layer(const std::filesystem::path& path
   try {
     Imf::InputFile in(path.c_str());
     const Imf::Header& header = in.header();
-    const std::string x = name + ".x", y = name + ".y", z = name + ".z";
-    const char* const names[3] = {x.c_str(), y.c_str(), z.c_str()};
-    for (const char* n : names)
+    const std::vector<std::string> names = {name + ".x", name + ".y", name + ".z"};
+    for (const std::string& n : names)
       if (header.channels().findChannel(n) == nullptr) return std::nullopt;
     const Imath::Box2i dw = header.dataWindow();
     ImageRgbF layer;
     layer.width = dw.max.x - dw.min.x + 1;
     layer.height = dw.max.y - dw.min.y + 1;
     layer.rgb.assign(3u * layer.width * layer.height, 0.0f);
-    in.setFrameBuffer(rgb_frame_buffer(layer.rgb.data(), layer.width, dw.min.x, dw.min.y, names));
+    in.setFrameBuffer(float_frame_buffer(layer.rgb.data(), layer.width, dw.min.x, dw.min.y, names));
     in.readPixels(dw.min.y, dw.max.y);
     return layer;
   } catch (const std::exception& e) {

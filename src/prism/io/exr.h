@@ -57,16 +57,6 @@ struct ExrFile {
 // B, Y.
 ExrFile read_exr(const std::filesystem::path& path);
 
-// The colour channels an OpenEXR texture reads, from its (first part's) channel list: R, G
-// and B when any of them is there (3; a missing one reads as 0), else Y, luminance (1),
-// else none (0). `half`: all of those channels are there, stored as HALF at full
-// resolution, so a reader can keep their 16 bits.
-struct ExrColourLayout {
-  int channels = 0;
-  bool half = false;
-};
-ExrColourLayout exr_colour_layout(const std::filesystem::path& path);
-
 // The channels `names` as stored halves (IEEE binary16 bits), interleaved, width × height ×
 // names.size(); nothing when any of them is missing or not HALF at full resolution.
 // Throws IoError.

@@ -342,8 +342,9 @@ std::optional<std::int32_t> openexr_fixed_attribute_size(std::string_view type) 
 }
 
 // What read_openexr reads of the first part: its data window's size, and its colour
-// channels as exr_colour_layout finds them through OpenEXR (3 for R, G, B, 1 for Y alone, 0
-// for neither; half when all of those are HALF at full resolution).
+// channels: R, G and B when any of them is listed (3; a missing one reads as 0), else Y,
+// luminance (1), else none (0); `half` when all of those are HALF at full resolution, so
+// their 16 bits can be kept.
 struct OpenExrFirstPart {
   long width = 0, height = 0;
   int channels = 0;
@@ -445,8 +446,7 @@ TextureImage read_openexr(const std::filesystem::path& path, std::span<const uns
                           const TextureLimits& limits) {
   const std::string name = path.string();
   const int max_dimension = limits.max_dimension;
-  check_openexr_header(bytes, max_dimension, name);
-  ExrColourLayout layout;
+  const OpenExrFirstPart layout = check_openexr_header(bytes, max_dimension, name);
   long width = 0, height = 0;
   try {
     // Size check from the header alone; the pixels are read below.
@@ -454,7 +454,6 @@ TextureImage read_openexr(const std::filesystem::path& path, std::span<const uns
     const Imath::Box2i dw = in.header().dataWindow();
     width = static_cast<long>(dw.max.x) - dw.min.x + 1, height = static_cast<long>(dw.max.y) - dw.min.y + 1;
     check_dimensions(width, height, max_dimension, name);
-    layout = exr_colour_layout(path);
     if (layout.channels == 0)
       throw IoError(fmt::format("cannot read image '{}': it has no R, G, B or Y channel (a texture reads R, G, B, "
                                 "or Y as grey)", name));
@@ -474,8 +473,9 @@ TextureImage read_openexr(const std::filesystem::path& path, std::span<const uns
   const std::vector<std::string> names = layout.channels == 3 ? std::vector<std::string>{"R", "G", "B"}
                                                               : std::vector<std::string>{"Y"};
   // HALF channels stay half (read straight into place, 2 bytes per sample; lookups decode
-  // each exactly, core/half_float.h); anything else becomes float texels. Luminance-only
-  // files are one-channel (grey) textures.
+  // each exactly, core/half_float.h); anything else becomes float texels (as does a file
+  // whose channels OpenEXR finds otherwise than the header walk did: read_exr_halves checks
+  // them again). Luminance-only files are one-channel (grey) textures.
   if (layout.half) {
     if (auto halves = read_exr_halves(path, names)) {
       image.width = halves->width;

@@ -10,6 +10,7 @@
 #include "prism/color/color_space.h"
 #include "prism/color/jakob_hanika_fit.h"
 #include "prism/core/error.h"
+#include "prism/core/guide_table.h"
 
 namespace prism::color {
 
@@ -55,12 +56,7 @@ std::vector<std::uint8_t> JakobHanikaTable::node_guide(const std::vector<float>&
   // with ⌊v · kNodeGuideCells⌋ = g (a power of two: the product is exact in float), so the
   // walk forward from it finds std::upper_bound's node.
   std::vector<std::uint8_t> guide(kNodeGuideCells);
-  std::size_t i = 0;
-  for (int g = 0; g < kNodeGuideCells; ++g) {
-    const float u = static_cast<float>(g) / kNodeGuideCells;
-    while (i + 1 < nodes.size() && nodes[i + 1] <= u) ++i;
-    guide[static_cast<std::size_t>(g)] = static_cast<std::uint8_t>(i);
-  }
+  fill_guide_table(std::span<const float>(nodes), std::span(guide));
   return guide;
 }
 

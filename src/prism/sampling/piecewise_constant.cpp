@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "prism/core/error.h"
+#include "prism/core/guide_table.h"
 
 namespace prism {
 
@@ -62,16 +63,10 @@ void PiecewiseConstant1D::build_coarse_guide_table() {
 }
 
 void PiecewiseConstant1D::fill_guide(std::size_t entries, bool coarse) {
-  const int n = size();
+  // Compared in double: a float u with g = ⌊u · size⌋ is ≥ g / size up to the product's
+  // rounding, which is far below float's spacing, so cdf_[guide_[g]] ≤ u holds for it.
   guide_.resize(entries);
-  std::uint32_t i = 0;
-  for (std::size_t g = 0; g < guide_.size(); ++g) {
-    // Compared in double: a float u with g = ⌊u · size⌋ is ≥ g / size up to the product's
-    // rounding, which is far below float's spacing, so cdf_[guide_[g]] ≤ u holds for it.
-    const double u = double(g) / double(guide_.size());
-    while (static_cast<int>(i) + 1 < n && double(cdf_[i + 1]) <= u) ++i;
-    guide_[g] = static_cast<std::uint16_t>(i);
-  }
+  fill_guide_table(std::span<const float>(cdf_.data(), static_cast<std::size_t>(size())), std::span(guide_));
   guide_cells_ = static_cast<double>(guide_.size());
   last_guide_ = guide_.size() - 1;
   coarse_guide_ = coarse;

@@ -177,8 +177,8 @@ std::optional<ExrHalves> read_exr_halves(const std::filesystem::path& path, cons
     const Imath::Box2i dw = header.dataWindow();
     ExrHalves result;
     std::tie(result.width, result.height) = checked_size(dw);
-    result.values.assign(names.size() * static_cast<std::size_t>(result.width) * static_cast<std::size_t>(result.height),
-                         0);
+    const std::size_t texels = static_cast<std::size_t>(result.width) * static_cast<std::size_t>(result.height);
+    result.values.assign(names.size() * texels, 0);
     // Imath's half is its 16 bits (a trivially copyable wrapper of imath_half_bits_t).
     static_assert(sizeof(half) == sizeof(std::uint16_t));
     in.setFrameBuffer(interleaved_frame_buffer(reinterpret_cast<char*>(result.values.data()), Imf::HALF,

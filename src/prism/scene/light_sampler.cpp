@@ -280,11 +280,6 @@ double LightSampler::build_environment_distribution(const Emitter& e) {
   return weight > 0.0 ? weighted / weight : 0.0;
 }
 
-Vec3f LightSampler::environment_rgb(const Emitter& e, const Vec3f& d) const {
-  if (!e.texture) return Vec3f(e.intensity_nits);
-  return environment_rgb_at(e, environment_direction_to_uv(e.mapping, map_direction(e, d)));
-}
-
 Vec3f LightSampler::environment_rgb_at(const Emitter& e, Vec2f uv) {
   return texel_rgb(*e.texture, uv) * e.intensity_nits;
 }
@@ -389,14 +384,17 @@ bool LightSampler::fill_emitter_sample(std::size_t index, const Vec3f& reference
       if (!e.texture) {
         s.wi = sample_uniform_sphere(u);
         s.pdf = uniform_sphere_pdf();
-      } else {
-        const PiecewiseConstant2D::Sample m = environment_distribution_.sample(u);
-        const float jacobian = environment_solid_angle_per_uv_area(e.mapping, m.p);
-        if (!(jacobian > 0.0f) || m.pdf <= 0.0f) return false;
-        s.wi = normalize(e.map_to_world.apply_vector(environment_uv_to_direction(e.mapping, m.p)));
-        s.pdf = m.pdf / jacobian;
+        s.rgb = Vec3f(e.intensity_nits);
+        return true;
       }
-      s.rgb = environment_rgb(e, s.wi);
+      const PiecewiseConstant2D::Sample m = environment_distribution_.sample(u);
+      const float jacobian = environment_solid_angle_per_uv_area(e.mapping, m.p);
+      if (!(jacobian > 0.0f) || m.pdf <= 0.0f) return false;
+      s.wi = normalize(e.map_to_world.apply_vector(environment_uv_to_direction(e.mapping, m.p)));
+      s.pdf = m.pdf / jacobian;
+      // The radiance at the sampled texel coordinates themselves, not at the direction
+      // mapped back to them (an acos and an atan2 that return m.p up to rounding).
+      s.rgb = environment_rgb_at(e, m.p);
       return true;
     }
   }

@@ -130,10 +130,9 @@ class LightSampler {
   std::optional<EscapedHit> escaped_hit(std::uint32_t index, const Vec3f& wi) const;  // index into emitters_
   double build_environment_distribution(const Emitter& e);  // returns the sky's average luminance
   bool environment_built_ = false;
-  // Environment radiance (linear Rec.709, nits) seen in world direction `d`.
-  Vec3f environment_rgb(const Emitter& e, const Vec3f& d) const;
-  // The same at the map's texel coordinates of a direction (escaped rays find them once
-  // for both): the texel's radiance, and the solid-angle pdf of sampling that direction.
+  // Environment radiance (linear Rec.709, nits) at the map's texel coordinates of a
+  // direction (escaped rays find them once for both; light samples have them from the
+  // distribution), and the solid-angle pdf of sampling that direction.
   static Vec3f environment_rgb_at(const Emitter& e, Vec2f uv);
   float environment_pdf_at(EnvironmentMapping mapping, Vec2f uv) const;
   static Vec3f map_direction(const Emitter& e, const Vec3f& world_direction);  // unit, in the map's frame

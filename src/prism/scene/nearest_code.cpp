@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace prism {
 
@@ -25,7 +28,7 @@ std::uint8_t nearest_code_by_midpoints(const std::array<float, 256>& values, con
 
 NearestCode::NearestCode(const std::array<float, 256>& values) {
   const std::array<float, 255> midpoints = code_midpoints(values);
-  for (std::size_t k = 0; k < thresholds_.size(); ++k) {
+  for (std::size_t k = 0; k + 1 < thresholds_.size(); ++k) {
     // The least float in (values[k], values[k + 1]] answered with more than k: values are
     // non-negative, so their bit patterns order as they do.
     std::uint32_t lo = std::bit_cast<std::uint32_t>(values[k]), hi = std::bit_cast<std::uint32_t>(values[k + 1]);
@@ -36,10 +39,19 @@ NearestCode::NearestCode(const std::array<float, 256>& values) {
     }
     thresholds_[k] = std::bit_cast<float>(hi);
   }
+  thresholds_.back() = std::numeric_limits<float>::infinity();
+  const auto count_at_or_below = [&](float v) {
+    return static_cast<std::size_t>(std::upper_bound(thresholds_.begin(), thresholds_.end() - 1, v) - thresholds_.begin());
+  };
   for (int b = 0; b < kBuckets; ++b) {
-    const float v = static_cast<float>(b) / kBuckets;
-    first_[static_cast<std::size_t>(b)] =
-        static_cast<std::uint8_t>(std::upper_bound(thresholds_.begin(), thresholds_.end(), v) - thresholds_.begin());
+    const std::size_t first = count_at_or_below(static_cast<float>(b) / kBuckets);
+    // operator() steps once at most: more than one threshold in a bucket's (b, b + 1] / kBuckets
+    // would need a walk (not for code tables of 256 values in [0, 1] as sRGB and linear are).
+    const std::size_t last = count_at_or_below(static_cast<float>(b + 1) / kBuckets);
+    if (last - first > 1)
+      throw std::logic_error("NearestCode: " + std::to_string(last - first) + " thresholds in bucket " +
+                             std::to_string(b) + " (at most 1 is supported)");
+    first_[static_cast<std::size_t>(b)] = static_cast<std::uint8_t>(first);
   }
 }
 

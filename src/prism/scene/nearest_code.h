@@ -19,23 +19,25 @@ std::uint8_t nearest_code_by_midpoints(const std::array<float, 256>& values, con
 // of thresholds at or below v, where threshold k is the least float it answers more than k
 // for (found once, by bisection over the floats between values[k] and values[k + 1]). A
 // table of that number at multiples of 1/kBuckets starts the count; a bucket holds one
-// threshold at most where the codes are densest (sRGB near 0: 1/(255 · 12.92) = 3.0e-4
-// apart, five buckets), so the walk from it is at most a step or two.
+// threshold at most even where the codes are densest (sRGB near 0: 1/(255 · 12.92) =
+// 3.0e-4 apart, five buckets; the constructor checks it for every bucket), so the count is
+// the table's plus at most one step, taken without a branch (its outcome is a coin flip
+// from texel to texel).
 class NearestCode {
  public:
   explicit NearestCode(const std::array<float, 256>& values);
   std::uint8_t operator()(float v) const {
     if (!(v > 0.0f)) return 0;  // and NaN
     if (v >= 1.0f) return 255;
-    std::size_t k = first_[static_cast<std::size_t>(v * kBuckets)];
-    while (k < thresholds_.size() && thresholds_[k] <= v) ++k;
-    return static_cast<std::uint8_t>(k);
+    const std::size_t k = first_[static_cast<std::size_t>(v * kBuckets)];
+    return static_cast<std::uint8_t>(k + static_cast<std::size_t>(thresholds_[k] <= v));
   }
   float threshold(int k) const { return thresholds_[static_cast<std::size_t>(k)]; }
 
  private:
   static constexpr int kBuckets = 1 << 14;
-  std::array<float, 255> thresholds_{};
+  // Thresholds 0–254, then +∞ (no code above 255), so the step reads no further check.
+  std::array<float, 256> thresholds_{};
   std::array<std::uint8_t, kBuckets> first_{};  // thresholds at or below bucket / kBuckets
 };
 

@@ -3,8 +3,11 @@
 #include "prism/scene/nearest_code.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 
 namespace prism {
 
@@ -193,11 +196,14 @@ TexelRgba sample_bilinear(const TextureImage& texture, Vec2f uv) {
 namespace {
 
 // One box-filtered level below a fine one of fine_width × fine_height texels whose texel t
-// has the linear value fine(t, k) in channel k: linear values, channels per texel.
-template <class FineValue>
+// has the linear value fine(t, k) in channel k: linear values, C channels per texel. C is a
+// template parameter so that the sums stay in registers: summed in the output through
+// memory, every addition waited on the store of the one before (the compiler cannot tell
+// the output from what `fine` reads).
+template <int C, class FineValue>
 std::vector<float> box_filter_level(const FineValue& fine, int fine_width, int fine_height, int coarse_width,
-                                    int coarse_height, int c) {
-  std::vector<float> coarse(static_cast<std::size_t>(coarse_width) * coarse_height * c, 0.0f);
+                                    int coarse_height) {
+  std::vector<float> coarse(static_cast<std::size_t>(coarse_width) * coarse_height * C);
   for (int y = 0; y < coarse_height; ++y) {
     // Fine rows covered by coarse row y: 2y, 2y+1, and 2y+2 for the last row of an odd size.
     const int y_begin = std::min(2 * y, fine_height - 1);
@@ -205,21 +211,35 @@ std::vector<float> box_filter_level(const FineValue& fine, int fine_width, int f
     for (int x = 0; x < coarse_width; ++x) {
       const int x_begin = std::min(2 * x, fine_width - 1);
       const int x_end = (x == coarse_width - 1) ? fine_width : std::min(2 * x + 2, fine_width);
-      float* out = coarse.data() + (static_cast<std::size_t>(y) * coarse_width + x) * c;
+      std::array<float, C> sum{};  // each channel's sum in the fine texels' row-major order
       for (int fy = y_begin; fy < y_end; ++fy)
         for (int fx = x_begin; fx < x_end; ++fx)
-          for (int k = 0; k < c; ++k) out[k] += fine(static_cast<std::size_t>(fy) * fine_width + fx, k);
+          for (int k = 0; k < C; ++k)
+            sum[static_cast<std::size_t>(k)] += fine(static_cast<std::size_t>(fy) * fine_width + fx, k);
+      float* out = coarse.data() + (static_cast<std::size_t>(y) * coarse_width + x) * C;
       const int n = (y_end - y_begin) * (x_end - x_begin);
       if (n == 4) {
         // x / 4 and x · 0.25 are the same real number, so they round alike (every texel
         // but the last row and column of an odd size: a multiplication, not a division).
-        for (int k = 0; k < c; ++k) out[k] *= 0.25f;
+        for (int k = 0; k < C; ++k) out[k] = sum[static_cast<std::size_t>(k)] * 0.25f;
       } else {
-        for (int k = 0; k < c; ++k) out[k] /= static_cast<float>(n);
+        for (int k = 0; k < C; ++k) out[k] = sum[static_cast<std::size_t>(k)] / static_cast<float>(n);
       }
     }
   }
   return coarse;
+}
+
+// box_filter_level for the texture's channel count (1 to 4, checked by build_mip_pyramid).
+template <class FineValue>
+std::vector<float> box_filter_level(const FineValue& fine, int fine_width, int fine_height, int coarse_width,
+                                    int coarse_height, int channels) {
+  switch (channels) {
+    case 1: return box_filter_level<1>(fine, fine_width, fine_height, coarse_width, coarse_height);
+    case 2: return box_filter_level<2>(fine, fine_width, fine_height, coarse_width, coarse_height);
+    case 3: return box_filter_level<3>(fine, fine_width, fine_height, coarse_width, coarse_height);
+    default: return box_filter_level<4>(fine, fine_width, fine_height, coarse_width, coarse_height);
+  }
 }
 
 // Per encoding, built once (its thresholds take a bisection per code).
@@ -253,6 +273,9 @@ MipPyramid base_level_pyramid(const TextureImage& texture) {
 }
 
 MipPyramid build_mip_pyramid(const TextureImage& texture) {
+  // Texels are 1 to 4 channels wherever they are read (TexelRgba); the filter sums as many.
+  if (texture.channels < 1 || texture.channels > 4)
+    throw std::invalid_argument("build_mip_pyramid: " + std::to_string(texture.channels) + " channels (1 to 4 expected)");
   MipPyramid pyramid = base_level_pyramid(texture);
   const int c = texture.channels;
   if (!texture.has_codes()) {

@@ -2,9 +2,12 @@
 
 #include "prism/core/half_float.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <stdexcept>
+#include <vector>
 
 #include "prism/color/transfer_functions.h"
 #include "prism/scene/texture_sampling.h"
@@ -165,6 +168,58 @@ TEST(TextureSampling, OddSizesKeepEveryTexel) {
   const MipPyramid p = build_mip_pyramid(t);
   ASSERT_EQ(p.levels.size(), 2u);
   EXPECT_FLOAT_EQ(p.levels[1].texels[0], 6.0f);
+}
+
+// Every level is the box filter summed as its definition reads: each coarse texel's fine
+// texels in row-major order from 0, then × ¼ for four of them (the same real number as ÷ 4)
+// or ÷ n on the last row and column of an odd size. Compared bit for bit, so a filter
+// that sums in another order (which rounds differently) fails, and images that depend on
+// the levels stay as they were.
+TEST(TextureSampling, MipLevelsAreTheBoxFilterSummedInRowMajorOrder) {
+  for (int channels = 1; channels <= 4; ++channels) {
+    TextureImage t;
+    t.width = 37;
+    t.height = 22;
+    t.channels = channels;
+    std::uint32_t state = 12345u + static_cast<std::uint32_t>(channels);
+    for (int i = 0; i < t.width * t.height * channels; ++i) {
+      state = state * 1664525u + 1013904223u;  // LCG: arbitrary values with full mantissas
+      t.texels.push_back(static_cast<float>(state >> 8) * 0x1p-24f * 3.0f);
+    }
+    const MipPyramid p = build_mip_pyramid(t);
+    std::vector<float> fine = t.texels;
+    int fine_width = t.width, fine_height = t.height;
+    for (std::size_t l = 1; l < p.levels.size(); ++l) {
+      const int width = std::max(1, fine_width / 2), height = std::max(1, fine_height / 2);
+      ASSERT_EQ(p.levels[l].width, width);
+      ASSERT_EQ(p.levels[l].height, height);
+      std::vector<float> coarse;
+      for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+          const int y_end = y == height - 1 ? fine_height : 2 * y + 2, x_end = x == width - 1 ? fine_width : 2 * x + 2;
+          for (int k = 0; k < channels; ++k) {
+            float sum = 0.0f;
+            for (int fy = std::min(2 * y, fine_height - 1); fy < std::min(y_end, fine_height); ++fy)
+              for (int fx = std::min(2 * x, fine_width - 1); fx < std::min(x_end, fine_width); ++fx)
+                sum += fine[(static_cast<std::size_t>(fy) * fine_width + fx) * channels + k];
+            const int n = (std::min(y_end, fine_height) - std::min(2 * y, fine_height - 1)) *
+                          (std::min(x_end, fine_width) - std::min(2 * x, fine_width - 1));
+            coarse.push_back(n == 4 ? sum * 0.25f : sum / static_cast<float>(n));
+          }
+        }
+      ASSERT_EQ(p.levels[l].texels.size(), coarse.size());
+      for (std::size_t i = 0; i < coarse.size(); ++i)
+        ASSERT_EQ(p.levels[l].texels[i], coarse[i]) << "channels " << channels << " level " << l << " value " << i;
+      fine = std::move(coarse);
+      fine_width = width;
+      fine_height = height;
+    }
+  }
+  TextureImage five;
+  five.width = five.height = 2;
+  five.channels = 5;
+  five.texels.assign(20, 0.5f);
+  EXPECT_THROW(build_mip_pyramid(five), std::invalid_argument);  // texels are 1 to 4 channels
 }
 
 TEST(TextureSampling, LevelOfDetailFromAKnownFootprint) {

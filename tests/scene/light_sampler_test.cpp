@@ -269,5 +269,59 @@ TEST(LightSampler, TexturedEmitterSelectionHasTheTextureMeanFloor) {
   EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
 }
 
+// An 8-bit emission texture weighs its triangles as the floats it decodes to: the
+// texture's mean (the selection floor) is summed from per-code tables for codes and from
+// the texels for floats, and every triangle's probability must come out the same float,
+// for grey, grey + alpha, RGB and RGBA images under a coloured emission (a table of the
+// wrong channel or encoding moves the mean, and with it every probability). The mean's
+// last bits in double are rounded away in the float probabilities; that they agree too is
+// by construction (the same products and sums, light_sampler.cpp).
+TEST(LightSampler, CodedEmissionTexturesWeighTrianglesAsTheirDecodedFloats) {
+  for (const TextureEncoding encoding : {TextureEncoding::srgb, TextureEncoding::linear})
+    for (int channels = 1; channels <= 4; ++channels) {
+      TextureImage coded;
+      coded.width = 23;
+      coded.height = 17;
+      coded.channels = channels;
+      coded.encoding = encoding;
+      Pcg32 rng(11, static_cast<std::uint64_t>(channels));
+      for (int i = 0; i < coded.width * coded.height * channels; ++i)
+        coded.codes.push_back(static_cast<std::uint8_t>(rng.next_u32() >> 24));
+      TextureImage floats = coded;
+      floats.texels = coded.linear_values();
+      floats.codes.clear();
+      ASSERT_TRUE(coded.has_codes());
+      ASSERT_FALSE(floats.has_codes());
+
+      const auto lights_for = [](const TextureImage& texture) {
+        Scene scene;
+        Material emitter;
+        emitter.emission.color = Vec3f(0.9f, 0.5f, 0.2f);  // unequal, so a swapped channel shows
+        emitter.emission.luminance_nits = 3.0f;
+        emitter.emission.texture = 0;
+        scene.materials.push_back(emitter);
+        scene.textures.push_back(texture);
+        TriangleMesh mesh;  // four triangles in the plane y = 0 with small uv footprints
+        for (int t = 0; t < 4; ++t) {
+          const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+          mesh.positions.insert(mesh.positions.end(), {{float(t), 0, 0}, {float(t), 0, 1}, {float(t) + 1, 0, 0}});
+          const float u = 0.1f + 0.23f * static_cast<float>(t), v = 0.7f - 0.17f * static_cast<float>(t);
+          mesh.uvs.insert(mesh.uvs.end(), {{u, v}, {u + 0.05f, v}, {u, v + 0.04f}});
+          mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2});
+        }
+        scene.meshes.push_back(mesh);
+        return LightSampler(scene, scene_bounds(scene));
+      };
+      const LightSampler from_codes = lights_for(coded), from_floats = lights_for(floats);
+      for (std::uint32_t t = 0; t < 4; ++t) {
+        const Vec3f on_triangle(static_cast<float>(t) + 0.3f, 0.0f, 0.3f), above(1.5f, 4.0f, 0.5f);
+        const float pdf = from_codes.pdf_triangle(0, t, above, on_triangle);
+        EXPECT_GT(pdf, 0.0f);
+        EXPECT_EQ(pdf, from_floats.pdf_triangle(0, t, above, on_triangle))
+            << "encoding " << static_cast<int>(encoding) << " channels " << channels << " triangle " << t;
+      }
+    }
+}
+
 }  // namespace
 }  // namespace prism

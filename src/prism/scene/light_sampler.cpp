@@ -1,10 +1,12 @@
 #include "prism/scene/light_sampler.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
-#include <optional>
+#include <cstdint>
 #include <limits>
 #include <numbers>
+#include <optional>
 
 #include "prism/core/branch_free.h"
 #include "prism/core/frame.h"
@@ -76,15 +78,46 @@ struct TexelEmissionWeight {
   double y_colour;
 };
 
+// The terms of of_rgb's dot product for an 8-bit texture, per channel and code:
+// luminance_row[k] · (colour[k] ⊙ value(code)), the float product widened as Vec3d does,
+// so that (term_0 + term_1) + term_2 is the dot product's own sum, bit for bit. Three
+// loads per texel instead of decoding it through texel_rgb's checks of the storage.
+struct CodedEmissionTerms {
+  std::array<std::array<double, 256>, 3> term{};
+  explicit CodedEmissionTerms(const TexelEmissionWeight& weight) {
+    const std::array<float, 256>& values = code_values(weight.texture.encoding);
+    for (std::size_t k = 0; k < 3; ++k)
+      for (std::size_t code = 0; code < 256; ++code)
+        term[k][code] = weight.luminance_row[k] * double(weight.colour[k] * values[code]);
+  }
+  // TexelEmissionWeight::at_texel of the texel whose first byte is p (y_colour > 0).
+  double at(const std::uint8_t* p, bool colour_channels, double y_colour) const {
+    const std::uint8_t r = p[0], g = colour_channels ? p[1] : r, b = colour_channels ? p[2] : r;
+    return std::max(0.0, term[0][r] + term[1][g] + term[2][b]) / y_colour;
+  }
+};
+
 // The texture's mean weight over its texels (once per emissive mesh): rows summed in
 // parallel, then added in row order, so the result does not depend on the thread count.
 double texture_mean_weight(const TexelEmissionWeight& weight) {
   const TextureImage& texture = weight.texture;
   std::vector<double> row_sums(static_cast<std::size_t>(std::max(0, texture.height)), 0.0);
-  parallel_for(row_sums.size(), 16, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t y = begin; y < end; ++y)
-      for (int x = 0; x < texture.width; ++x) row_sums[y] += weight.at_texel(x, static_cast<int>(y));
-  });
+  if (texture.has_codes() && weight.y_colour > 0.0) {
+    const CodedEmissionTerms terms(weight);
+    const bool colour_channels = texture.channels >= 3;
+    const auto stride = static_cast<std::size_t>(texture.channels);
+    parallel_for(row_sums.size(), 16, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t y = begin; y < end; ++y) {
+        const std::uint8_t* p = texture.codes.data() + y * static_cast<std::size_t>(texture.width) * stride;
+        for (int x = 0; x < texture.width; ++x, p += stride) row_sums[y] += terms.at(p, colour_channels, weight.y_colour);
+      }
+    });
+  } else {
+    parallel_for(row_sums.size(), 16, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t y = begin; y < end; ++y)
+        for (int x = 0; x < texture.width; ++x) row_sums[y] += weight.at_texel(x, static_cast<int>(y));
+    });
+  }
   double sum = 0.0;
   for (const double s : row_sums) sum += s;
   return sum / std::max(1, texture.width * texture.height);

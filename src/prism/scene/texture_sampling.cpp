@@ -208,7 +208,19 @@ std::vector<float> box_filter_level(const FineValue& fine, int fine_width, int f
     // Fine rows covered by coarse row y: 2y, 2y+1, and 2y+2 for the last row of an odd size.
     const int y_begin = std::min(2 * y, fine_height - 1);
     const int y_end = (y == coarse_height - 1) ? fine_height : std::min(2 * y + 2, fine_height);
-    for (int x = 0; x < coarse_width; ++x) {
+    // All but the last row and column: the 2 × 2 texels from (2x, 2y), summed in the order
+    // of the general loop below (the same sums), with the loop bounds known.
+    const int interior_columns = y < coarse_height - 1 ? coarse_width - 1 : 0;
+    for (int x = 0; x < interior_columns; ++x) {
+      const std::size_t top = static_cast<std::size_t>(2 * y) * fine_width + 2 * static_cast<std::size_t>(x);
+      const std::size_t bottom = top + static_cast<std::size_t>(fine_width);
+      std::array<float, C> sum{};
+      for (const std::size_t t : {top, top + 1, bottom, bottom + 1})
+        for (int k = 0; k < C; ++k) sum[static_cast<std::size_t>(k)] += fine(t, k);
+      float* out = coarse.data() + (static_cast<std::size_t>(y) * coarse_width + x) * C;
+      for (int k = 0; k < C; ++k) out[k] = sum[static_cast<std::size_t>(k)] * 0.25f;
+    }
+    for (int x = interior_columns; x < coarse_width; ++x) {
       const int x_begin = std::min(2 * x, fine_width - 1);
       const int x_end = (x == coarse_width - 1) ? fine_width : std::min(2 * x + 2, fine_width);
       std::array<float, C> sum{};  // each channel's sum in the fine texels' row-major order

@@ -3,13 +3,13 @@
 #include <cerrno>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "prism/core/error.h"
 #include "prism/io/atomic_file.h"
+#include "prism/io/read_to_end.h"
 
 namespace prism {
 namespace {
@@ -105,7 +105,8 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
   };
   std::ifstream in(path, std::ios::binary);
   if (!in) throw fail(std::strerror(errno));
-  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::vector<unsigned char> bytes;
+  if (!read_to_end(in, regular_file_size_or_zero(path), bytes)) throw fail("read error");
   if (bytes.size() < 12 || std::memcmp(bytes.data(), kMagic, 8) != 0) throw fail("not a Prism checkpoint");
   Reader r(bytes);  // sizes are checked below before the pixel data is read
   r.get<std::uint64_t>();  // magic

@@ -20,6 +20,7 @@
 #include "prism/color/transfer_functions.h"
 #include "prism/core/error.h"
 #include "prism/io/exr.h"
+#include "prism/io/read_to_end.h"
 #include "prism/scene/radiance_hdr.h"
 
 namespace prism {
@@ -506,8 +507,9 @@ std::vector<unsigned char> read_file_bytes(const std::filesystem::path& path) {
                               std::filesystem::exists(path, ec) ? "not a regular file" : "no such file"));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError(fmt::format("cannot read image '{}': cannot open it", path.string()));
-  std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw IoError(fmt::format("cannot read image '{}': read error", path.string()));
+  std::vector<unsigned char> bytes;
+  if (!read_to_end(in, regular_file_size_or_zero(path), bytes))
+    throw IoError(fmt::format("cannot read image '{}': read error", path.string()));
   return bytes;
 }
 

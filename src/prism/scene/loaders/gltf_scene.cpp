@@ -4,13 +4,13 @@
 
 #include <cmath>
 #include <fstream>
-#include <iterator>
 #include <numbers>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "prism/core/error.h"
+#include "prism/io/read_to_end.h"
 #include "prism/scene/loaders/gltf_accessors.h"
 #include "prism/scene/loaders/gltf_builder.h"
 #include "prism/scene/loaders/mesh_checks.h"
@@ -43,7 +43,10 @@ bool guarded_read(std::vector<unsigned char>* out, std::string* err, const std::
     if (err) *err += fmt::format("cannot read '{}'", path);
     return false;
   }
-  out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  if (!read_to_end(in, regular_file_size_or_zero(resolved), *out)) {
+    if (err) *err += fmt::format("cannot read '{}'", path);
+    return false;
+  }
   return true;
 }
 
@@ -336,7 +339,9 @@ Scene parse_gltf_scene(std::span<const unsigned char> bytes, std::string_view so
 Scene load_gltf_scene(const std::filesystem::path& path, const LoadOptions& options) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError(fmt::format("cannot read glTF scene '{}'", path.string()));
-  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::vector<unsigned char> bytes;
+  if (!read_to_end(in, regular_file_size_or_zero(path), bytes))
+    throw IoError(fmt::format("cannot read glTF scene '{}'", path.string()));
   std::error_code ec;
   return parse_gltf_scene(bytes, path.filename().string(), std::filesystem::absolute(path, ec).parent_path(), options);
 }

@@ -2,12 +2,12 @@
 // camera, film and sampler settings, Include/Import.
 #include <cmath>
 #include <fstream>
-#include <iterator>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "prism/core/error.h"
+#include "prism/io/read_to_end.h"
 #include "prism/scene/loaders/mesh_checks.h"
 #include "prism/scene/loaders/path_safety.h"
 #include "prism/scene/loaders/pbrt_builder.h"
@@ -23,8 +23,9 @@ constexpr std::size_t kMaxInstances = 50'000'000;  // placements of object meshe
 std::string read_text_file(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError(fmt::format("cannot read pbrt-v4 scene '{}'", path.string()));
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw IoError(fmt::format("cannot read pbrt-v4 scene '{}'", path.string()));
+  std::string text;
+  if (!read_to_end(in, regular_file_size_or_zero(path), text))
+    throw IoError(fmt::format("cannot read pbrt-v4 scene '{}'", path.string()));
   return text;
 }
 

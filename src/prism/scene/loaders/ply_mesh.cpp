@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <iterator>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -15,6 +14,7 @@
 #include <fmt/format.h>
 
 #include "prism/core/error.h"
+#include "prism/io/read_to_end.h"
 
 namespace prism::loaders {
 namespace {
@@ -275,8 +275,9 @@ PlyMesh parse_ply_mesh(std::span<const unsigned char> bytes, std::string_view so
 PlyMesh read_ply_mesh(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw IoError(fmt::format("cannot read PLY mesh '{}'", path.string()));
-  const std::vector<unsigned char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) throw IoError(fmt::format("cannot read PLY mesh '{}'", path.string()));
+  std::vector<unsigned char> bytes;
+  if (!read_to_end(in, regular_file_size_or_zero(path), bytes))
+    throw IoError(fmt::format("cannot read PLY mesh '{}'", path.string()));
   return parse_ply_mesh(bytes, path.filename().string());
 }
 

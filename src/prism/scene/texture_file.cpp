@@ -43,10 +43,18 @@ void check_dimensions(long width, long height, int max_dimension, std::string_vi
 }
 
 // What stb reports of a PNG or JPEG from its header: the size, channels and the bytes of
-// each decoded sample (2: 16-bit PNG, 1: 8-bit). Nothing when the header does not read
-// (stbi_failure_reason says why) or the data is over 2 GiB.
+// each decoded sample (2: 16-bit PNG, 1: 8-bit), and the channels Prism has it decode.
+// Nothing when the header does not read (stbi_failure_reason says why) or the data is over
+// 2 GiB.
+//
+// An RGB JPEG is decoded as RGBA and its constant alpha dropped in the copy: stb_image
+// converts YCbCr to RGB with SSE2 only when it writes four channels per pixel (its
+// stbi__YCbCr_to_RGB_simd handles step 4 alone), and its scalar conversion for three, the
+// same fixed-point arithmetic (stb keeps the two equal on purpose), was a fifth of
+// DamagedHelmet's start-up. TextureFile.RgbJpegTexelsAreStbsThreeChannelDecode checks the
+// texels against stb's three-channel decode.
 struct StbHeader {
-  int width = 0, height = 0, channels = 0, decoded_bytes_per_sample = 1;
+  int width = 0, height = 0, channels = 0, decoded_channels = 0, decoded_bytes_per_sample = 1;
 };
 std::optional<StbHeader> stb_header(std::span<const unsigned char> bytes) {
   if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) return std::nullopt;
@@ -54,16 +62,19 @@ std::optional<StbHeader> stb_header(std::span<const unsigned char> bytes) {
   StbHeader h;
   if (!stbi_info_from_memory(bytes.data(), size, &h.width, &h.height, &h.channels)) return std::nullopt;
   h.decoded_bytes_per_sample = stbi_is_16_bit_from_memory(bytes.data(), size) ? 2 : 1;
+  h.decoded_channels = detect_image_format(bytes) == ImageFileFormat::jpeg && h.channels == 3 ? 4 : h.channels;
   return h;
 }
 
 // The texels stay (8-bit codes as they are, anything else as floats); the decoder's own
-// buffer of `decoded_bytes_per_sample` bytes per sample lives only while decoding.
-TextureMemoryNeed texel_memory(long width, long height, int channels, int decoded_bytes_per_sample) {
-  const std::uint64_t samples = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) *
-                                static_cast<std::uint64_t>(channels);
-  const std::uint64_t kept_bytes_per_sample = decoded_bytes_per_sample == 1 ? 1 : sizeof(float);
-  return {samples * kept_bytes_per_sample, samples * static_cast<std::uint64_t>(decoded_bytes_per_sample)};
+// buffer of `decoded_bytes_per_sample` bytes per sample, `decoded_channels` samples per
+// texel, lives only while decoding.
+TextureMemoryNeed texel_memory(const StbHeader& header) {
+  const auto texels = static_cast<std::uint64_t>(header.width) * static_cast<std::uint64_t>(header.height);
+  const std::uint64_t kept_bytes_per_sample = header.decoded_bytes_per_sample == 1 ? 1 : sizeof(float);
+  return {texels * static_cast<std::uint64_t>(header.channels) * kept_bytes_per_sample,
+          texels * static_cast<std::uint64_t>(header.decoded_channels) *
+              static_cast<std::uint64_t>(header.decoded_bytes_per_sample)};
 }
 
 // A Radiance picture keeps its RGBE texels, 4 bytes each, read straight into place.
@@ -79,12 +90,12 @@ TextureMemoryNeed openexr_memory(long width, long height, int channels, bool hal
   return {samples * (half ? sizeof(std::uint16_t) : sizeof(float)), 0};
 }
 
-void reserve_texels(const TextureLimits& limits, long width, long height, int channels, int decoded_bytes_per_sample,
-                    std::string_view name) {
+void reserve_texels(const TextureLimits& limits, const StbHeader& header, std::string_view name) {
   if (!limits.budget) return;
-  const TextureMemoryNeed need = texel_memory(width, height, channels, decoded_bytes_per_sample);
+  const TextureMemoryNeed need = texel_memory(header);
   limits.budget->reserve(need.texel_bytes, need.transient_bytes,
-                         fmt::format("texture '{}' ({}x{}, {} channels)", name, width, height, channels));
+                         fmt::format("texture '{}' ({}x{}, {} channels)", name, header.width, header.height,
+                                     header.channels));
 }
 
 // Decodes 16-bit codes to linear floats: colour channels through the sRGB EOTF when asked,
@@ -111,13 +122,14 @@ class StbInput {
  public:
   explicit StbInput(std::span<const unsigned char> bytes) : bytes_(bytes) {}
 
+  // `decoded_channels` per pixel in the result (stb converts), 0 for the file's own.
   template <typename Pixel>
   std::unique_ptr<Pixel, StbFree> decode(Pixel* (*load)(const stbi_io_callbacks*, void*, int*, int*, int*, int),
-                                         int& width, int& height, int& channels) {
+                                         int& width, int& height, int& channels, int decoded_channels = 0) {
     position_ = 0;
     ran_past_end_ = false;
     const stbi_io_callbacks callbacks{&StbInput::read, &StbInput::skip, &StbInput::eof};
-    std::unique_ptr<Pixel, StbFree> pixels(load(&callbacks, this, &width, &height, &channels, 0));
+    std::unique_ptr<Pixel, StbFree> pixels(load(&callbacks, this, &width, &height, &channels, decoded_channels));
     return pixels;
   }
   bool ran_past_end() const { return ran_past_end_; }
@@ -291,7 +303,7 @@ TextureImage decode_with_stb(std::span<const unsigned char> bytes, std::string_v
   int width = header->width, height = header->height, channels = header->channels;
   const int decoded_bytes_per_sample = header->decoded_bytes_per_sample;
   check_dimensions(width, height, limits.max_dimension, name);
-  reserve_texels(limits, width, height, channels, decoded_bytes_per_sample, name);
+  reserve_texels(limits, *header, name);
   TextureImage image;
   image.name = std::string(name);
   StbInput input(bytes);
@@ -305,9 +317,24 @@ TextureImage decode_with_stb(std::span<const unsigned char> bytes, std::string_v
     check(pixels.get());
     decode_16_bit_codes(pixels.get(), image, encoding);
   } else {
-    const auto pixels = input.decode(&stbi_load_from_callbacks, width, height, channels);
+    const bool as_rgba = header->decoded_channels != header->channels;
+    const auto pixels =
+        input.decode(&stbi_load_from_callbacks, width, height, channels, as_rgba ? header->decoded_channels : 0);
     check(pixels.get());
-    image.codes.assign(pixels.get(), pixels.get() + static_cast<std::size_t>(width) * height * channels);
+    if (as_rgba && channels != 3)
+      throw IoError(fmt::format("cannot read image '{}': its header and its data disagree on the channels", name));
+    const auto texels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    if (!as_rgba) {
+      image.codes.assign(pixels.get(), pixels.get() + texels * static_cast<std::size_t>(channels));
+    } else {  // RGBA from an RGB JPEG (stb_header): the alpha of 255 stays behind
+      image.codes.resize(texels * 3);
+      const unsigned char* rgba = pixels.get();
+      unsigned char* rgb = image.codes.data();
+      // Four bytes copied per texel, the fourth overwritten by the next texel's first (one
+      // load and one store each instead of three); the last texel's three alone.
+      for (std::size_t t = 0; t + 1 < texels; ++t) std::memcpy(rgb + 3 * t, rgba + 4 * t, 4);
+      if (texels > 0) std::memcpy(rgb + 3 * (texels - 1), rgba + 4 * (texels - 1), 3);
+    }
     image.encoding = encoding;
   }
   return image;
@@ -563,7 +590,7 @@ std::optional<TextureMemoryNeed> texture_memory_need(std::span<const unsigned ch
   if (format != ImageFileFormat::png && format != ImageFileFormat::jpeg) return std::nullopt;
   const auto header = stb_header(bytes);
   if (!header) return std::nullopt;
-  return texel_memory(header->width, header->height, header->channels, header->decoded_bytes_per_sample);
+  return texel_memory(*header);
 }
 
 std::optional<TextureMemoryNeed> texture_file_memory_need(const std::filesystem::path& path) {

@@ -1,6 +1,13 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <stb_image.h>
+#include <stb_image_write.h>
 
 #include "prism/core/error.h"
 #include "prism/io/exr.h"
@@ -39,6 +46,47 @@ TEST(TextureFile, PngDecodesSrgbColourAndLinearAlpha) {
   const TextureImage sixteen = read_texture_file(dir / "b.png", TextureEncoding::linear, 32768);
   EXPECT_NEAR(sixteen.value(0), 32768.0f / 65535.0f, 1e-7f);
   EXPECT_FALSE(sixteen.has_codes());
+}
+
+// RGB JPEGs are decoded by stb_image as RGBA (its SSE2 colour conversion; see stb_header
+// in texture_file.cpp) and the alpha dropped: the texels must be exactly stb's own
+// three-channel decode, for chroma subsampled 4:2:0 (stb_image_write below quality 90) and
+// 4:4:4, at sizes that are not a multiple of the 8-pixel SIMD step, from colour and from
+// grey pixels (stb_image_write writes both as three-component JPEGs).
+TEST(TextureFile, RgbJpegTexelsAreStbsThreeChannelDecode) {
+  test::ScratchFolder dir;
+  for (const int channels : {3, 1})
+    for (const int quality : {75, 95})
+      for (const auto& [width, height] : {std::pair{37, 21}, std::pair{64, 40}}) {
+        std::vector<unsigned char> pixels;
+        std::uint32_t state = 77u + static_cast<std::uint32_t>(width * quality * channels);
+        for (int y = 0; y < height; ++y)
+          for (int x = 0; x < width; ++x)
+            for (int k = 0; k < channels; ++k) {
+              state = state * 1664525u + 1013904223u;  // a gradient with noise: every chroma, clipping at the ends
+              pixels.push_back(static_cast<unsigned char>(std::clamp(x * 7 + y * 3 * (k + 1) + int(state >> 27) - 8, 0, 255)));
+            }
+        std::vector<unsigned char> jpeg;
+        ASSERT_TRUE(stbi_write_jpg_to_func(
+            [](void* context, void* data, int size) {
+              auto* out = static_cast<std::vector<unsigned char>*>(context);
+              out->insert(out->end(), static_cast<unsigned char*>(data), static_cast<unsigned char*>(data) + size);
+            },
+            &jpeg, width, height, channels, pixels.data(), quality));
+        const std::string name = "t" + std::to_string(channels) + "_" + std::to_string(quality) + "_" +
+                                 std::to_string(width) + ".jpg";
+        dir.write(name, std::string(jpeg.begin(), jpeg.end()));
+        int w = 0, h = 0, c = 0;
+        unsigned char* expected = stbi_load_from_memory(jpeg.data(), static_cast<int>(jpeg.size()), &w, &h, &c, 0);
+        ASSERT_NE(expected, nullptr);
+        const std::vector<unsigned char> stb(expected, expected + static_cast<std::size_t>(w) * h * c);
+        stbi_image_free(expected);
+        ASSERT_EQ(c, 3);
+        const TextureImage texture = read_texture_file(dir / name, TextureEncoding::srgb, 32768);
+        EXPECT_EQ(texture.width, width);
+        EXPECT_EQ(texture.channels, 3);
+        EXPECT_EQ(texture.codes, stb) << name;
+      }
 }
 
 TEST(TextureFile, RadianceHdrAndExrAreLinearFloats) {

@@ -169,6 +169,30 @@ TEST(JsonScene, SchemaErrorsNameTheJsonPath) {
             std::string::npos);
 }
 
+// Array elements carry their array's path and their index, built only for a message:
+// every shape of mesh array names the exact number that is wrong.
+TEST(JsonScene, ErrorsInMeshArraysNameTheElement) {
+  const auto mesh_scene = [](std::string_view positions, std::string_view indices) {
+    return std::string(R"({"format": "prism-scene/1", "materials": [{"name": "m", "type": "diffuse"}],
+      "meshes": [{"name": "ok", "material": "m", "positions": [0,0,0, 1,0,0, 0,1,0], "indices": [0,1,2]},
+                 {"name": "q", "material": "m", "positions": )") +
+           std::string(positions) + R"(, "indices": )" + std::string(indices) + "}]}";
+  };
+  // Flat: the fifth number; nested: the second vertex's third number.
+  EXPECT_NE(error_of<SceneError>([&] { parse(mesh_scene("[0,0,0, 1,\"x\",0, 0,1,0]", "[0,1,2]")); })
+                .find("test.json: meshes[1].positions[4]: expected a number"),
+            std::string::npos);
+  EXPECT_NE(error_of<SceneError>([&] { parse(mesh_scene("[[0,0,0], [1,0,1e39], [0,1,0]]", "[0,1,2]")); })
+                .find("test.json: meshes[1].positions[1][2]:"),
+            std::string::npos);
+  EXPECT_NE(error_of<SceneError>([&] { parse(mesh_scene("[[0,0,0], [1,0], [0,1,0]]", "[0,1,2]")); })
+                .find("meshes[1].positions[1]:"),
+            std::string::npos);
+  EXPECT_NE(error_of<SceneError>([&] { parse(mesh_scene("[0,0,0, 1,0,0, 0,1,0]", "[0,1,-2]")); })
+                .find("test.json: meshes[1].indices[2]:"),
+            std::string::npos);
+}
+
 TEST(JsonScene, UnknownKeysGiveOneWarning) {
   const Scene scene = parse(quad_scene(R"(, "sheen": 1, "clearcoat": 0.5)", R"(, "extras": {})"));
   ASSERT_EQ(scene.warnings.size(), 1u);

@@ -123,7 +123,7 @@ Scene parse_json_scene(std::string_view text, std::string_view source, const std
   }
   Scene scene;
   scene.name = std::string(default_name);
-  JsonDocument document{std::string(source), {}};
+  JsonDocument document{std::string(source), {}, {}};
   JsonSceneReader reader(scene, document, scene_dir, options);
   try {
     try {

@@ -29,35 +29,44 @@ Transform rotation(Vec3f axis, float degrees) {
   return r;
 }
 
-// Flat [x0, y0, z0, x1, ...] or nested [[x0, y0, z0], ...] arrays of N-vectors.
+// Flat [x0, y0, z0, x1, ...] or nested [[x0, y0, z0], ...] arrays of N-vectors, read an
+// element at a time (a JsonValue per number of a million-triangle mesh was 200 MB).
 template <int N>
 std::vector<std::array<float, N>> read_vectors(const JsonValue& value) {
-  const auto elements = value.elements();
+  const std::size_t count = value.size();
   std::vector<std::array<float, N>> out;
-  if (!elements.empty() && elements.front().is_array()) {
-    for (const JsonValue& e : elements) {
-      const auto c = e.elements(N);
-      if (c.size() != N) e.fail(fmt::format("expected {} numbers", N));
+  if (count > 0 && value.raw().front().is_array()) {
+    out.reserve(count);
+    value.for_each_element([&](const JsonValue& e) {
+      if (e.size(N) != N) e.fail(fmt::format("expected {} numbers", N));
       std::array<float, N> v;
-      for (int k = 0; k < N; ++k) v[k] = c[k].as_float();
+      int k = 0;
+      e.for_each_element([&](const JsonValue& c) { v[static_cast<std::size_t>(k++)] = c.as_float(); });
       out.push_back(v);
-    }
+    });
     return out;
   }
-  if (elements.size() % N != 0) value.fail(fmt::format("expected a multiple of {} numbers, found {}", N, elements.size()));
-  for (std::size_t i = 0; i < elements.size(); i += N) {
-    std::array<float, N> v;
-    for (int k = 0; k < N; ++k) v[k] = elements[i + k].as_float();
-    out.push_back(v);
-  }
+  if (count % N != 0) value.fail(fmt::format("expected a multiple of {} numbers, found {}", N, count));
+  out.reserve(count / N);
+  std::array<float, N> v;
+  int k = 0;
+  value.for_each_element([&](const JsonValue& c) {
+    v[static_cast<std::size_t>(k++)] = c.as_float();
+    if (k == N) {
+      out.push_back(v);
+      k = 0;
+    }
+  });
   return out;
 }
 
 void read_inline_arrays(TriangleMesh& mesh, const JsonValue& value) {
   for (const auto& p : read_vectors<3>(value["positions"])) mesh.positions.emplace_back(p[0], p[1], p[2]);
   const JsonValue indices = value["indices"];
-  for (const JsonValue& i : indices.elements())
+  mesh.indices.reserve(indices.size());
+  indices.for_each_element([&](const JsonValue& i) {
     mesh.indices.push_back(static_cast<std::uint32_t>(i.as_integer(0, std::numeric_limits<std::uint32_t>::max())));
+  });
   if (auto n = value.find("normals"))
     for (const auto& v : read_vectors<3>(*n)) mesh.normals.emplace_back(v[0], v[1], v[2]);
   if (auto u = value.find("uvs"))

@@ -14,8 +14,16 @@ std::string_view type_name(const nlohmann::json& j) { return j.type_name(); }
 
 }  // namespace
 
+std::string JsonValue::path() const {
+  if (!array_path_) return path_;
+  std::string path = fmt::format("{}[{}]", *array_path_, outer_);
+  if (inner_ != kNoIndex) path += fmt::format("[{}]", inner_);
+  return path;
+}
+
 void JsonValue::fail(std::string_view what) const {
-  throw SceneError(fmt::format("{}: {}: {}", document_->source, path_.empty() ? "(top level)" : path_, what));
+  const std::string where = path();
+  throw SceneError(fmt::format("{}: {}: {}", document_->source, where.empty() ? "(top level)" : where, what));
 }
 
 void JsonValue::expect_keys(std::initializer_list<std::string_view> keys) const {
@@ -23,7 +31,9 @@ void JsonValue::expect_keys(std::initializer_list<std::string_view> keys) const 
   for (const auto& [key, value] : value_->items()) {
     bool known = false;
     for (const auto k : keys) known = known || k == key;
-    if (!known) document_->unknown_keys.push_back(path_.empty() ? key : path_ + "." + key);
+    if (known) continue;
+    const std::string where = path();
+    document_->unknown_keys.push_back(where.empty() ? key : where + "." + key);
   }
 }
 
@@ -33,7 +43,8 @@ std::optional<JsonValue> JsonValue::find(std::string_view key) const {
   if (!is_object()) fail(fmt::format("expected an object, found {}", type_name(*value_)));
   const auto it = value_->find(key);
   if (it == value_->end()) return std::nullopt;
-  return JsonValue(*it, path_.empty() ? std::string(key) : path_ + "." + std::string(key), *document_);
+  const std::string where = path();
+  return JsonValue(*it, where.empty() ? std::string(key) : where + "." + std::string(key), *document_);
 }
 
 JsonValue JsonValue::operator[](std::string_view key) const {
@@ -42,13 +53,23 @@ JsonValue JsonValue::operator[](std::string_view key) const {
   return *v;
 }
 
-std::vector<JsonValue> JsonValue::elements(std::size_t max_size) const {
+std::size_t JsonValue::size(std::size_t max_size) const {
   if (!is_array()) fail(fmt::format("expected an array, found {}", type_name(*value_)));
   if (value_->size() > max_size) fail(fmt::format("expected at most {} elements, found {}", max_size, value_->size()));
+  return value_->size();
+}
+
+JsonValue::ElementPaths JsonValue::element_paths(std::size_t max_size) const {
+  size(max_size);
+  if (array_path_ && inner_ == kNoIndex) return {array_path_, outer_};  // a vertex [x, y, z] of a list of them
+  return {&document_->array_paths.emplace_back(path()), kNoIndex};
+}
+
+std::vector<JsonValue> JsonValue::elements(std::size_t max_size) const {
+  const ElementPaths paths = element_paths(max_size);
   std::vector<JsonValue> out;
   out.reserve(value_->size());
-  for (std::size_t i = 0; i < value_->size(); ++i)
-    out.emplace_back((*value_)[i], fmt::format("{}[{}]", path_, i), *document_);
+  for (std::size_t i = 0; i < value_->size(); ++i) out.push_back(element(paths, i));
   return out;
 }
 

@@ -3,6 +3,7 @@
 // (`materials[2].roughness`), so every schema error can name where it is, and that collects
 // keys the reader did not expect (reported once as a warning).
 #include <cstdint>
+#include <deque>
 #include <initializer_list>
 #include <optional>
 #include <string>
@@ -19,6 +20,9 @@ namespace prism::loaders {
 struct JsonDocument {
   std::string source;                     // file name (or built-in scene name) for messages
   std::vector<std::string> unknown_keys;  // JSON paths of keys no reader asked for
+  // The paths of arrays whose elements were taken, which the elements refer to (a deque:
+  // its strings stay where they are as it grows).
+  std::deque<std::string> array_paths;
 };
 
 class JsonValue {
@@ -26,7 +30,9 @@ class JsonValue {
   JsonValue(const nlohmann::json& value, std::string path, JsonDocument& document)
       : value_(&value), path_(std::move(path)), document_(&document) {}
 
-  const std::string& path() const { return path_; }
+  // Built when asked for (an error, a message): an array element keeps its array's path and
+  // its index, not a formatted string of its own, since a mesh's arrays have millions.
+  std::string path() const;
   const nlohmann::json& raw() const { return *value_; }
   bool is_string() const { return value_->is_string(); }
   bool is_object() const { return value_->is_object(); }
@@ -44,6 +50,14 @@ class JsonValue {
 
   // Array access: requires an array (of at most `max_size` elements, when given).
   std::vector<JsonValue> elements(std::size_t max_size = SIZE_MAX) const;
+  std::size_t size(std::size_t max_size = SIZE_MAX) const;  // the same checks, the element count
+  // The elements one at a time, visit(const JsonValue&) in order: for arrays too long to
+  // hold a JsonValue per element (a mesh's numbers).
+  template <class Visit>
+  void for_each_element(Visit&& visit, std::size_t max_size = SIZE_MAX) const {
+    const ElementPaths paths = element_paths(max_size);
+    for (std::size_t i = 0; i < value_->size(); ++i) visit(element(paths, i));
+  }
 
   double as_double() const;  // a finite number
   float as_float() const;    // a number that is finite in single precision
@@ -73,8 +87,27 @@ class JsonValue {
   Vec3f get_vec3(std::string_view key, const Vec3f& fallback) const;
 
  private:
+  static constexpr std::size_t kNoIndex = SIZE_MAX;
+  // Where this array's elements take their paths from: an element of an element keeps its
+  // array's path and both indices; any other array's path is stored once in the document.
+  struct ElementPaths {
+    const std::string* array_path;
+    std::size_t outer;  // kNoIndex: the elements' own index is the outer one
+  };
+  ElementPaths element_paths(std::size_t max_size) const;  // checks the array and its size
+  JsonValue element(const ElementPaths& paths, std::size_t i) const {
+    return paths.outer == kNoIndex ? JsonValue((*value_)[i], paths.array_path, i, kNoIndex, *document_)
+                                   : JsonValue((*value_)[i], paths.array_path, paths.outer, i, *document_);
+  }
+  // Element `outer` of the array at *array_path, or element `inner` of that element.
+  JsonValue(const nlohmann::json& value, const std::string* array_path, std::size_t outer, std::size_t inner,
+            JsonDocument& document)
+      : value_(&value), array_path_(array_path), outer_(outer), inner_(inner), document_(&document) {}
+
   const nlohmann::json* value_;
-  std::string path_;
+  std::string path_;                        // roots and object members: the whole path
+  const std::string* array_path_ = nullptr;  // array elements: their array's path (in the document)
+  std::size_t outer_ = kNoIndex, inner_ = kNoIndex;
   JsonDocument* document_;
 };
 

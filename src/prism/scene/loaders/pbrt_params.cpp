@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <sstream>
+#include <string_view>
 
 #include <fmt/format.h>
 
@@ -29,6 +30,10 @@ Vec3f spectrum_color(const F& f, PbrtSpectrumUse use) {
   const double white = color::spectrum_to_xyz([](double) { return 1.0; }).y;
   return xyz_to_srgb(xyz / white);
 }
+
+// As string views: a std::string compared with a C string calls memcmp whatever the
+// lengths, and this runs for every number of a mesh (a tenth of a pbrt-v4 atrium's load).
+bool is_pbrt_bool(std::string_view word) { return word == "true" || word == "false"; }
 
 }  // namespace
 
@@ -58,7 +63,7 @@ PbrtParams read_pbrt_params(PbrtTokenizer& tokens, int directive_line) {
     const auto add_value = [&](const PbrtToken& v) {
       if (v.kind == PbrtTokenKind::string) {
         p.strings.push_back(v.text);
-      } else if (v.kind == PbrtTokenKind::word && (v.text == "true" || v.text == "false")) {
+      } else if (v.kind == PbrtTokenKind::word && is_pbrt_bool(v.text)) {
         p.strings.push_back(v.text);
       } else if (v.kind == PbrtTokenKind::word) {
         p.numbers.push_back(parse_pbrt_number(tokens, v));

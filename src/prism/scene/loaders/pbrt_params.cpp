@@ -31,10 +31,6 @@ Vec3f spectrum_color(const F& f, PbrtSpectrumUse use) {
   return xyz_to_srgb(xyz / white);
 }
 
-// As string views: a std::string compared with a C string calls memcmp whatever the
-// lengths, and this runs for every number of a mesh (a tenth of a pbrt-v4 atrium's load).
-bool is_pbrt_bool(std::string_view word) { return word == "true" || word == "false"; }
-
 }  // namespace
 
 double parse_pbrt_number(const PbrtTokenizer& tokens, const PbrtToken& token) {
@@ -54,7 +50,7 @@ PbrtParams read_pbrt_params(PbrtTokenizer& tokens, int directive_line) {
   list.line = directive_line;
   while (tokens.peek().kind == PbrtTokenKind::string) {
     const PbrtToken decl = tokens.next();
-    std::istringstream words(decl.text);
+    std::istringstream words{std::string(decl.text)};
     PbrtParam p;
     std::string extra;
     if (!(words >> p.type >> p.name) || (words >> extra))
@@ -62,9 +58,9 @@ PbrtParams read_pbrt_params(PbrtTokenizer& tokens, int directive_line) {
     p.line = decl.line;
     const auto add_value = [&](const PbrtToken& v) {
       if (v.kind == PbrtTokenKind::string) {
-        p.strings.push_back(v.text);
-      } else if (v.kind == PbrtTokenKind::word && is_pbrt_bool(v.text)) {
-        p.strings.push_back(v.text);
+        p.strings.emplace_back(v.text);
+      } else if (v.kind == PbrtTokenKind::word && (v.text == "true" || v.text == "false")) {
+        p.strings.emplace_back(v.text);
       } else if (v.kind == PbrtTokenKind::word) {
         p.numbers.push_back(parse_pbrt_number(tokens, v));
       } else {

@@ -32,7 +32,7 @@ std::string read_text_file(const std::filesystem::path& path) {
 std::string expect_string(PbrtTokenizer& tokens, std::string_view directive) {
   const PbrtToken t = tokens.next();
   if (t.kind != PbrtTokenKind::string) tokens.fail(t.line, fmt::format("{} expects a quoted string", directive));
-  return t.text;
+  return std::string(t.text);
 }
 
 // n numbers, optionally inside brackets (Transform and ConcatTransform use them).
@@ -96,7 +96,7 @@ std::filesystem::path PbrtBuilder::resolve(const PbrtParams& params, std::string
 }
 
 void PbrtBuilder::directive(PbrtTokenizer& tokens, const PbrtToken& name, int include_depth) {
-  const std::string& d = name.text;
+  const std::string_view d = name.text;
   const auto params = [&] { return read_pbrt_params(tokens, name.line); };
   const auto ctm_mul = [&](const PbrtMatrix& m) { state_.ctm = state_.ctm * m; };
   if (d == "LookAt") {

@@ -49,32 +49,36 @@ PbrtToken PbrtTokenizer::scan() {
   const char c = text_[pos_];
   if (c == '[' || c == ']') {
     token.kind = c == '[' ? PbrtTokenKind::open_bracket : PbrtTokenKind::close_bracket;
-    token.text = std::string(1, c);
+    token.text = text_.substr(pos_, 1);
     ++pos_;
     return token;
   }
   if (c == '"') {
     token.kind = PbrtTokenKind::string;
     ++pos_;
+    const std::size_t start = pos_;
+    std::string* unescaped = nullptr;  // from the first escape on
     while (true) {
       if (pos_ >= text_.size()) fail(token.line, "unterminated string");
       const char s = text_[pos_++];
       if (s == '"') break;
       if (s == '\n') fail(token.line, "newline inside a string");
       if (s == '\\') {
+        if (!unescaped) unescaped = &unescaped_.emplace_back(text_.substr(start, pos_ - 1 - start));
         if (pos_ >= text_.size()) fail(token.line, "unterminated string");
         const char e = text_[pos_++];
         switch (e) {
-          case 'n': token.text += '\n'; break;
-          case 't': token.text += '\t'; break;
-          case '\\': token.text += '\\'; break;
-          case '"': token.text += '"'; break;
+          case 'n': *unescaped += '\n'; break;
+          case 't': *unescaped += '\t'; break;
+          case '\\': *unescaped += '\\'; break;
+          case '"': *unescaped += '"'; break;
           default: fail(line_, fmt::format("unknown escape '\\{}' in a string", e));
         }
-      } else {
-        token.text += s;
+      } else if (unescaped) {
+        *unescaped += s;
       }
     }
+    token.text = unescaped ? std::string_view(*unescaped) : text_.substr(start, pos_ - 1 - start);
     return token;
   }
   token.kind = PbrtTokenKind::word;
@@ -82,7 +86,7 @@ PbrtToken PbrtTokenizer::scan() {
   while (pos_ < text_.size() && !is_space(text_[pos_]) && text_[pos_] != '"' && text_[pos_] != '[' &&
          text_[pos_] != ']' && text_[pos_] != '#')
     ++pos_;
-  token.text = std::string(text_.substr(start, pos_ - start));
+  token.text = text_.substr(start, pos_ - start);
   return token;
 }
 

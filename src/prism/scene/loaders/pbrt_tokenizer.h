@@ -2,6 +2,7 @@
 // Tokens of the pbrt-v4 scene format: quoted strings, brackets and bare words (numbers,
 // directive names, true/false). `#` starts a comment that runs to the end of the line.
 #include <cstddef>
+#include <deque>
 #include <string>
 #include <string_view>
 
@@ -11,7 +12,10 @@ enum class PbrtTokenKind { end, string, word, open_bracket, close_bracket };
 
 struct PbrtToken {
   PbrtTokenKind kind = PbrtTokenKind::end;
-  std::string text;  // unquoted and unescaped for strings
+  // Unquoted and unescaped for strings. A view into the scene text, or into the tokenizer
+  // for a string with escapes: valid while the tokenizer is (not a string per token, as a
+  // mesh has millions of them).
+  std::string_view text;
   int line = 0;
 };
 
@@ -33,6 +37,7 @@ class PbrtTokenizer {
 
   std::string_view text_;
   std::string source_;
+  std::deque<std::string> unescaped_;  // strings with escapes, which the text does not hold as they read
   std::size_t pos_ = 0;
   int line_ = 1;
   PbrtToken lookahead_;

@@ -90,9 +90,12 @@ struct CodedEmissionTerms {
       for (std::size_t code = 0; code < 256; ++code)
         term[k][code] = weight.luminance_row[k] * double(weight.colour[k] * values[code]);
   }
-  // TexelEmissionWeight::at_texel of the texel whose first byte is p (y_colour > 0).
-  double at(const std::uint8_t* p, bool colour_channels, double y_colour) const {
-    const std::uint8_t r = p[0], g = colour_channels ? p[1] : r, b = colour_channels ? p[2] : r;
+  // TexelEmissionWeight::at_texel of texel (x, y) (y_colour > 0).
+  double at(const TextureImage& texture, int x, int y, double y_colour) const {
+    const std::uint8_t* p =
+        &texture.codes[(static_cast<std::size_t>(y) * texture.width + x) * static_cast<std::size_t>(texture.channels)];
+    const bool colour = texture.channels >= 3;
+    const std::uint8_t r = p[0], g = colour ? p[1] : r, b = colour ? p[2] : r;
     return std::max(0.0, term[0][r] + term[1][g] + term[2][b]) / y_colour;
   }
 };
@@ -102,21 +105,17 @@ struct CodedEmissionTerms {
 double texture_mean_weight(const TexelEmissionWeight& weight) {
   const TextureImage& texture = weight.texture;
   std::vector<double> row_sums(static_cast<std::size_t>(std::max(0, texture.height)), 0.0);
-  if (texture.has_codes() && weight.y_colour > 0.0) {
-    const CodedEmissionTerms terms(weight);
-    const bool colour_channels = texture.channels >= 3;
-    const auto stride = static_cast<std::size_t>(texture.channels);
-    parallel_for(row_sums.size(), 16, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t y = begin; y < end; ++y) {
-        const std::uint8_t* p = texture.codes.data() + y * static_cast<std::size_t>(texture.width) * stride;
-        for (int x = 0; x < texture.width; ++x, p += stride) row_sums[y] += terms.at(p, colour_channels, weight.y_colour);
-      }
-    });
-  } else {
+  const auto sum_rows = [&](const auto& texel_weight) {
     parallel_for(row_sums.size(), 16, [&](std::size_t begin, std::size_t end) {
       for (std::size_t y = begin; y < end; ++y)
-        for (int x = 0; x < texture.width; ++x) row_sums[y] += weight.at_texel(x, static_cast<int>(y));
+        for (int x = 0; x < texture.width; ++x) row_sums[y] += texel_weight(x, static_cast<int>(y));
     });
+  };
+  if (texture.has_codes() && weight.y_colour > 0.0) {
+    const CodedEmissionTerms terms(weight);  // 8-bit textures: their codes' terms, tabulated
+    sum_rows([&](int x, int y) { return terms.at(texture, x, y, weight.y_colour); });
+  } else {
+    sum_rows([&](int x, int y) { return weight.at_texel(x, y); });
   }
   double sum = 0.0;
   for (const double s : row_sums) sum += s;

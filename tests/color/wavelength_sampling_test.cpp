@@ -185,6 +185,31 @@ TEST(WavelengthSampling, ThreeCoshTupleEqualsTheSlotBySlotDefinition) {
   EXPECT_THROW(sample_three_cosh_wavelengths(0.5, 9, nm.data(), pdf.data()), std::invalid_argument);
 }
 
+// The one-call cosh tuple inverts the slot-by-slot definition's tanh with a float
+// logarithm (atanh t = ½ ln((1 + t)/(1 − t))) and takes each pdf from that tanh (1/cosh² =
+// 1 − tanh²) rather than from a cosh of the wavelength. Wavelengths: ln's float error
+// (≤ 2 ulp of |ln| ≤ 3.5, plus the ratio's rounding) moves λ by ≤ 4e-5 nm, the float λ's
+// own rounding ≤ 3e-5 nm: 1e-4 nm bounds both (a lost ½ is off by hundreds of nm). Pdfs:
+// both are the exact density at the exact λ, so they differ by float rounding alone
+// (relative 1e-6; a wrong identity, e.g. 1 + t², is off by tens of per cent).
+TEST(WavelengthSampling, CoshTupleEqualsTheSlotBySlotDefinition) {
+  Pcg32 rng(9, 2);
+  for (int count = 1; count <= 8; ++count) {
+    for (int t = 0; t < 2000; ++t) {
+      const double u = t == 0 ? 0.0 : (t == 1 ? 0.5 : (t == 2 ? std::nextafter(1.0, 0.0) : rng.next_double()));
+      std::array<float, 8> nm{}, pdf{};
+      sample_cosh_wavelengths(u, count, nm.data(), pdf.data());
+      for (int i = 0; i < count; ++i) {
+        const double expected_nm =
+            sample_wavelength_slot(WavelengthStrategy::cosh, i, slot_u(WavelengthStrategy::cosh, u, i, count));
+        ASSERT_NEAR(nm[static_cast<std::size_t>(i)], expected_nm, 1e-4) << count << " " << i << " " << u;
+        const double expected_pdf = wavelength_pdf(WavelengthStrategy::cosh, count, expected_nm);
+        ASSERT_NEAR(pdf[static_cast<std::size_t>(i)], expected_pdf, 1e-6 * expected_pdf) << count << " " << i << " " << u;
+      }
+    }
+  }
+}
+
 TEST(WavelengthSampling, HeroPartnersAreEvenlyRotated) {
   const SampledWavelengths<4> w = sample_wavelengths<4>(WavelengthStrategy::hero, 0.9);
   EXPECT_NEAR(w.wavelength_nm[0], 740.0f, 1e-3);

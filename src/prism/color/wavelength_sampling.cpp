@@ -231,4 +231,24 @@ void sample_three_cosh_wavelengths(double u, int count, float* wavelength_nm, fl
   }
 }
 
+void sample_cosh_wavelengths(double u, int count, float* wavelength_nm, float* pdf) {
+  // The generic loop's slot_u and inverse CDF, with the pdf taken from the tanh the
+  // inversion starts from instead of a cosh of the result: λ = B + atanh(t)/A with
+  // t = tanh(A(λ − B)), and 1/cosh²(x) = 1 − tanh²(x), so p(λ) = A (1 − t²) / (tanh(A(780 − B))
+  // − tanh(A(380 − B))): the same density, for one float logarithm per wavelength instead of
+  // a double atanh and a double cosh (BM_SampleWavelengths: cosh 216–245 → 66–79 ns).
+  const PreparedLobe& lobe = radziszewski_lobe();
+  for (int i = 0; i < count; ++i) {
+    double along = u + double(i) / count;            // frac(u + i/count): u ∈ [0, 1), so one wrap at most
+    along -= select_less(along, 1.0, 0.0, 1.0);       // core/branch_free.h
+    const double t = lobe.tanh_low + along * lobe.tanh_range;
+    // atanh(t) = ½ ln((1 + t)/(1 − t)), the logarithm in float: |t| ≤ 0.94 here, so the
+    // ratio stays in [0.1, 33] and float's 2^-24 relative error in ln moves λ by < 1e-4 nm.
+    const float ratio = static_cast<float>((1.0 + t) / (1.0 - t));
+    wavelength_nm[i] = static_cast<float>(std::clamp(lobe.center_nm + 0.5 * double(std::log(ratio)) / lobe.a_per_nm,
+                                                     kVisibleMinNm, kVisibleMaxNm));
+    pdf[i] = static_cast<float>(lobe.a_per_nm * (1.0 - t * t) / lobe.tanh_range);
+  }
+}
+
 }  // namespace prism::color

@@ -94,11 +94,21 @@ double slot_u(WavelengthStrategy strategy, double u, int slot, int count);
 // tabulated for the renderer's tuple sizes.
 void sample_three_cosh_wavelengths(double u, int count, float* wavelength_nm, float* pdf);
 
+// cosh's tuple in one call: the generic loop's wavelengths with atanh as a float
+// logarithm, each pdf from the tanh its inversion starts from (1/cosh² = 1 − tanh²)
+// instead of a cosh of λ; within 1e-4 nm and float rounding of the loop's
+// (wavelength_sampling_test), in a third of its time.
+void sample_cosh_wavelengths(double u, int count, float* wavelength_nm, float* pdf);
+
 template <int N>
 SampledWavelengths<N> sample_wavelengths(WavelengthStrategy strategy, double u) {
   SampledWavelengths<N> w;
   if (strategy == WavelengthStrategy::cosh3) {
     sample_three_cosh_wavelengths(u, N, w.wavelength_nm.data(), w.pdf.data());
+    return w;
+  }
+  if (strategy == WavelengthStrategy::cosh) {
+    sample_cosh_wavelengths(u, N, w.wavelength_nm.data(), w.pdf.data());
     return w;
   }
   for (int i = 0; i < N; ++i) {

@@ -62,7 +62,8 @@ int run_bench(const BenchCommandOptions& o) {
   nlohmann::json doc{{"machine", bench::machine_json()},
                      {"options",
                       {{"quick", o.run.quick}, {"full", o.run.full}, {"repeat", o.run.repeat},
-                       {"threads", o.run.threads}, {"spp", o.run.spp}, {"size", o.run.size}}},
+                       {"threads", o.run.threads}, {"spp", o.run.spp}, {"size", o.run.size},
+                       {"scene", o.run.scene}}},
                      {"suites", nlohmann::json::array()}};
   std::cout << "load average (1 min) at start: " << bench::load_average_1min() << "\n\n";
   for (const auto* suite : suites) {
@@ -97,8 +98,8 @@ void add_bench_command(CLI::App& root, Action& action) {
   cmd->add_option("--spp", o->run.spp, "Samples per pixel (0: each suite's default)")->check(CLI::Range(0, 1 << 20));
   cmd->add_option("--size", o->run.size, "Square image size (0: each suite's default)")->check(CLI::Range(0, 16384));
   cmd->add_option("--scene", o->run.scene,
-                  "efficiency: render this scene file (e.g. data/scenes/cornell-box.pbrt, through its loader) "
-                  "instead of the built-in Cornell box");
+                  "efficiency, convergence: render this scene file (e.g. data/scenes/cornell-box.pbrt, through "
+                  "its loader) instead of the built-in Cornell box");
   cmd->callback([o, &action] { action = [o] { return run_bench(*o); }; });
 #else
   cmd->allow_extras();

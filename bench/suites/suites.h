@@ -18,7 +18,7 @@ struct BenchOptions {
   int threads = 0;      // 0: all hardware threads
   int spp = 0;          // 0: the suite's default
   int size = 0;         // 0: the suite's default image size (square)
-  std::string scene;    // efficiency: a scene file to render instead of the built-in Cornell box
+  std::string scene;    // efficiency, convergence: a scene file to render instead of the built-in Cornell box
 };
 
 using Suite = std::function<SuiteReport(const BenchOptions&)>;

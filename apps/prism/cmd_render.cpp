@@ -21,6 +21,7 @@
 #include "prism/color/wavelength_sampling.h"
 #include "prism/core/error.h"
 #include "prism/core/parallel.h"
+#include "prism/core/process_memory.h"
 #include "prism/core/version.h"
 #include "prism/io/atomic_file.h"
 #include "prism/io/exr.h"
@@ -305,9 +306,13 @@ int run_render(const RenderOptions& o) {
   std::vector<std::string> written;
   for (const auto& p : outputs) written.push_back(p.string());
   if (!checkpoint_path.empty()) written.push_back(checkpoint_path + " (checkpoint)");
-  fmt::print("prism: rendered {} {}x{}, {} spp in {:.2f} s ({:.2f} M samples/s) -> {}\n", scene_name, settings.width,
-             settings.height, result.passes_done, result.elapsed_seconds,
-             result.elapsed_seconds > 0 ? samples / result.elapsed_seconds * 1e-6 : 0.0, fmt::join(written, ", "));
+  // The process' own peak resident set (load, BVH, film, outputs): what the render needed.
+  const auto peak_bytes = peak_resident_set_bytes();
+  const std::string peak =
+      peak_bytes ? fmt::format(", peak memory {} MiB", (*peak_bytes + (1u << 19)) >> 20) : std::string();
+  fmt::print("prism: rendered {} {}x{}, {} spp in {:.2f} s ({:.2f} M samples/s{}) -> {}\n", scene_name,
+             settings.width, settings.height, result.passes_done, result.elapsed_seconds,
+             result.elapsed_seconds > 0 ? samples / result.elapsed_seconds * 1e-6 : 0.0, peak, fmt::join(written, ", "));
   if (result.invalid_samples > 0)
     fmt::print("prism: {} invalid samples (NaN/Inf) discarded\n", result.invalid_samples);
   if (result.stop_reason == StopReason::time_limit)

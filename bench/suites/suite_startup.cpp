@@ -3,8 +3,11 @@
 // texture decoding and the BVH, as a user's `prism render atrium.glb` pays them — and a
 // wavy height-field grid (procedural_grid.h), an easy BVH with no file, which isolates
 // Embree's build. For the atrium, a separate `prism render FILE` process (this binary,
-// 1280×720, 1 spp) gives the honest peak RSS of load + BVH + render (wait4's ru_maxrss),
-// free of this process' earlier peaks. Peak RSS is getrusage's ru_maxrss, a process-wide high-water
+// 1280×720, 1 spp) gives the honest peak RSS of load + BVH + render: the "peak memory" its
+// summary line reports (its own VmHWM, core/process_memory.h). Not wait4's ru_maxrss: Linux
+// folds the spawning process' high-water mark into a child's at exec, so in `bench all`
+// every child read as the bench process' own peak (672 MiB for a render that needs
+// 165 MiB). This process' peaks are getrusage's ru_maxrss, a process-wide high-water
 // mark: sizes run smallest first and each row reports the peak so far, so run this suite
 // alone (`prism bench startup`) for clean peaks. Bytes per triangle come from the resident
 // set (/proc/self/statm) while the scene and its BVH are alive, which earlier peaks do
@@ -15,6 +18,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -60,8 +64,9 @@ struct ChildRun {
   double peak_rss_mib = 0.0;
 };
 
-// Runs this executable (`prism`) with `args` and returns its wall time and peak resident
-// set; throws if it cannot start or fails.
+// Runs this executable (`prism render …`) with `args` and returns its wall time and the
+// peak memory its summary line reports ("peak memory N MiB"); throws if it cannot start,
+// fails, or reports no peak.
 ChildRun run_prism_child(const std::vector<std::string>& args) {
   std::vector<char*> argv;
   std::string self = "prism";
@@ -69,21 +74,39 @@ ChildRun run_prism_child(const std::vector<std::string>& args) {
   std::vector<std::string> owned = args;
   for (auto& a : owned) argv.push_back(a.data());
   argv.push_back(nullptr);
+  int out[2];
+  if (pipe2(out, O_CLOEXEC) != 0) throw Error("bench startup: cannot make a pipe for the prism child");
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_adddup2(&actions, out[1], STDOUT_FILENO);  // dup2 clears O_CLOEXEC on stdout
   const auto start = Clock::now();
   pid_t pid = 0;
   const int spawned = posix_spawn(&pid, "/proc/self/exe", &actions, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) throw Error(fmt::format("bench startup: cannot start prism ({})", spawned));
+  close(out[1]);
+  if (spawned != 0) {
+    close(out[0]);
+    throw Error(fmt::format("bench startup: cannot start prism ({})", spawned));
+  }
+  std::string printed;
+  char buffer[4096];
+  for (ssize_t n; (n = read(out[0], buffer, sizeof buffer)) != 0;) {
+    if (n > 0)
+      printed.append(buffer, static_cast<std::size_t>(n));
+    else if (errno != EINTR)
+      break;
+  }
+  close(out[0]);
   int status = 0;
-  rusage usage{};
-  if (wait4(pid, &status, 0, &usage) != pid) throw Error("bench startup: lost the prism child process");
-  ChildRun run{seconds_since(start), static_cast<double>(usage.ru_maxrss) / 1024.0};
+  if (waitpid(pid, &status, 0) != pid) throw Error("bench startup: lost the prism child process");
+  const double wall_s = seconds_since(start);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0)
     throw Error(fmt::format("bench startup: `prism {}` failed", fmt::join(args, " ")));
-  return run;
+  const std::string key = "peak memory ";
+  const auto at = printed.find(key);
+  if (at == std::string::npos)
+    throw Error(fmt::format("bench startup: `prism {}` reported no peak memory", fmt::join(args, " ")));
+  return {wall_s, std::strtod(printed.c_str() + at + key.size(), nullptr)};
 }
 
 // The atrium at each size, written once per format into a scratch folder, then read back:

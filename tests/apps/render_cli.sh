@@ -49,6 +49,8 @@ if "$prism" render cornell-box --width 32 --height 24 --spp 2 "${o[@]}" >"$work/
   [ -s "$work/out/x.png" ] || fail "render wrote no PNG"
   [ "$(ls -A "$work/out" | wc -l)" -eq 2 ] || fail "render left extra files: $(ls -A "$work/out")"
   grep -q "2 spp" "$work/stdout" || fail "summary lacks spp: $(cat "$work/stdout")"
+  # The process' own peak resident set: a Cornell box render needs some MiB, never none.
+  grep -Eq "peak memory [1-9][0-9]* MiB" "$work/stdout" || fail "summary lacks peak memory: $(cat "$work/stdout")"
   [ ! -s "$work/stderr" ] || fail "non-TTY render printed progress: $(cat "$work/stderr")"
 else
   fail "small render failed: $(cat "$work/stderr")"

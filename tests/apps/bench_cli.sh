@@ -46,6 +46,14 @@ if "$prism" bench efficiency --quick --scene "$scenes/cornell-box-glossy.pbrt" >
 else
   fail "bench efficiency --scene cornell-box-glossy.pbrt: $(cat "$work/err")"
 fi
+# convergence --scene likewise, scoring chromaticity over the whole image.
+if "$prism" bench convergence --quick --scene "$scenes/cornell-box.pbrt" >"$work/out" 2>"$work/err"; then
+  grep -q "^## convergence: .*cornell-box.pbrt 16^2.*whole-image xy error" "$work/out" ||
+    fail "bench convergence --scene: the table does not name the scene and region: $(head -3 "$work/out")"
+  grep -q "^cosh-3 " "$work/out" || fail "bench convergence: no cosh-3 row: $(cat "$work/out")"
+else
+  fail "bench convergence --scene cornell-box.pbrt: $(cat "$work/err")"
+fi
 # A missing scene file: a one-line error naming it, a non-zero exit.
 "$prism" bench efficiency --quick --scene "$work/missing.pbrt" >/dev/null 2>"$work/err"
 status=$?

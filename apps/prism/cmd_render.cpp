@@ -53,7 +53,7 @@ struct RenderOptions {
   std::string sampler = std::string(sampler_name(PathSettings{}.sampler));
   std::string mode = "spectral";
   int wavelengths = 4;
-  std::string wavelength_sampling = "cosh3";
+  std::string wavelength_sampling = "cosh";
   std::string upsampling = "jakob-hanika";
   std::string working_space = "srgb";
   bool wavelength_stratification = false;

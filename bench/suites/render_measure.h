@@ -22,7 +22,7 @@ struct RenderMeasurement {
 RenderMeasurement measure(const RenderResult& result);
 
 // Cornell box settings: square image, fixed spp, the default path settings (max depth 8,
-// MIS) and the requested transport (spectral: 4 wavelengths, cosh3 unless changed).
+// MIS) and the requested transport (spectral: 4 wavelengths, cosh unless changed).
 RenderSettings cornell_settings(int size, int spp, TransportKind kind, int threads);
 
 // "spectral" / "rgb" for tables.

@@ -83,7 +83,7 @@ SuiteReport run_sampler_suite(const BenchOptions& o) {
   const double xy_floor = chromaticity_error(a_xyz, b_xyz, size, size, kBackWallRegion).per_pixel_mean / 2.0;
 
   Table& curve = report.add_table(
-      fmt::format("Cornell box {}^2 spectral (cosh3, 4 wavelengths), vs a 2 x {}-spp independent reference (its "
+      fmt::format("Cornell box {}^2 spectral (cosh, 4 wavelengths), vs a 2 x {}-spp independent reference (its "
                   "noise removed)",
                   size, ref_spp),
       {"sampler", "spp", "seconds", "RMSE", "relMSE", "1/(s*relMSE)", "wall xy err per pixel"});

@@ -361,9 +361,10 @@ void add_render_command(CLI::App& root, Action& action) {
                   "Spectral: hero (uniform, Wilkie 2014), cosh (Radziszewski 2009) or cosh3 (three cosh lobes)")
       ->capture_default_str();
   cmd->add_flag("--wavelength-stratification", options->wavelength_stratification,
-                "Spectral: stratify samples' wavelengths in nine strata so a pixel's first sample lands near "
-                "600/535/445 nm (the seed renderer's fast-colour preview); biased by up to one stratum's share "
-                "until the pixel's sample count is a multiple of nine");
+                "Spectral: stratify samples' wavelengths in nine strata, the middle one first: with "
+                "--wavelength-sampling cosh3 a pixel's first sample then lands near 600/535/445 nm (the seed "
+                "renderer's fast-colour preview); biased by up to one stratum's share until the pixel's sample "
+                "count is a multiple of nine");
   cmd->add_option("--upsampling", options->upsampling,
                   "Spectral: reflectance upsampling, jakob-hanika (2019) or mallett-yuksel (2019)")
       ->capture_default_str();

@@ -53,4 +53,6 @@ if kill -0 "$viewer" 2>/dev/null; then echo "FAIL: Ctrl+Q did not close the view
 wait "$viewer"; rc=$?
 [ "$rc" -eq 0 ] || { echo "FAIL: viewer exit status $rc"; exit 1; }
 grep -q '^ui frames=' "$log" || { echo "FAIL: no UI statistics at exit"; exit 1; }
+# The viewer's own peak resident set (what its stats overlay shows): some MiB, never none.
+grep -Eq '^ui frames=.* peak_memory_mib=[1-9][0-9]*$' "$log" || { echo "FAIL: no peak memory at exit"; exit 1; }
 echo "ok: orbit moved the eye to $eye_orbit, accumulation restarted as generation $g; $(grep '^ui frames=' "$log")"

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "prism/viewer/display_worker.h"
+#include "prism/viewer/memory_monitor.h"
 #include "prism/viewer/render_session.h"
 #include "prism/viewer/viewer_state.h"
 
@@ -39,7 +40,9 @@ struct UiTimings {
   double frame_ms_mean = 0, frame_ms_max = 0, fps = 0;
 };
 
-// The stats overlay: spp, samples/s, pass time, time to the current spp, UI frame times.
-void stats_overlay(const FilmFrame* film, const DisplayFrame* shown, const UiTimings& ui, const std::string& status);
+// The stats overlay: spp, samples/s, pass time, time to the current spp, UI frame times,
+// the process' memory.
+void stats_overlay(const FilmFrame* film, const DisplayFrame* shown, const UiTimings& ui, const MemoryFigures& memory,
+                   const std::string& status);
 
 }  // namespace prism::viewer

@@ -153,7 +153,8 @@ void save_panel(SaveRequest& r, const std::string& last_message) {
   if (!last_message.empty()) ImGui::TextWrapped("%s", last_message.c_str());
 }
 
-void stats_overlay(const FilmFrame* film, const DisplayFrame* shown, const UiTimings& ui, const std::string& status) {
+void stats_overlay(const FilmFrame* film, const DisplayFrame* shown, const UiTimings& ui, const MemoryFigures& memory,
+                   const std::string& status) {
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                                  ImGuiWindowFlags_NoNav | ImGuiWindowFlags_NoMove;
@@ -172,6 +173,7 @@ void stats_overlay(const FilmFrame* film, const DisplayFrame* shown, const UiTim
   }
   if (shown) ImGui::Text("display %.0f ms", shown->display_seconds * 1e3);
   ImGui::Text("UI %.1f fps (frame %.1f ms mean, %.1f ms max)", ui.fps, ui.frame_ms_mean, ui.frame_ms_max);
+  if (memory.peak_mib > 0) ImGui::Text("memory %.0f MiB (peak %.0f MiB)", memory.resident_mib, memory.peak_mib);
   if (!status.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", status.c_str());
   ImGui::End();
 }

@@ -25,6 +25,7 @@
 #include "prism/viewer/display_worker.h"
 #include "prism/viewer/frame_stats.h"
 #include "prism/viewer/image_save.h"
+#include "prism/viewer/memory_monitor.h"
 #include "prism/viewer/panels.h"
 #include "prism/viewer/presenter.h"
 #include "prism/viewer/render_session.h"
@@ -130,9 +131,10 @@ class ViewerApp {
       stats_.add_work(work_s);
       if (done) break;
     }
-    log("ui frames={} mean_ms={:.2f} p50_ms={:.2f} p95_ms={:.2f} max_ms={:.2f} work_mean_ms={:.2f}", stats_.frames(),
-        stats_.mean_ms(), stats_.percentile_ms(50), stats_.percentile_ms(95), stats_.percentile_ms(100),
-        stats_.work_mean_ms());
+    const MemoryFigures at_exit = MemoryMonitor().figures();  // read now, not the overlay's last second
+    log("ui frames={} mean_ms={:.2f} p50_ms={:.2f} p95_ms={:.2f} max_ms={:.2f} work_mean_ms={:.2f} peak_memory_mib={:.0f}",
+        stats_.frames(), stats_.mean_ms(), stats_.percentile_ms(50), stats_.percentile_ms(95),
+        stats_.percentile_ms(100), stats_.work_mean_ms(), at_exit.peak_mib);
     return exit_status_;
   }
 
@@ -197,7 +199,7 @@ class ViewerApp {
     }
     ImGui::End();
     std::string status = session_.error().value_or("");
-    stats_overlay(film.get(), shown_.get(), stats_.recent(), status);
+    stats_overlay(film.get(), shown_.get(), stats_.recent(), memory_.figures(), status);
     if (film && film->serial != logged_serial_) {
       logged_serial_ = film->serial;
       log("pass generation={} spp={} passes={} elapsed_s={:.3f}", film->generation, film->spp, film->passes,
@@ -307,6 +309,7 @@ class ViewerApp {
   Presenter presenter_;
   UiCapture ui_capture_;
   FrameStats stats_;
+  MemoryMonitor memory_;
   RenderControls render_;
   DisplayControls display_;
   SaveRequest save_;

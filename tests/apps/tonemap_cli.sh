@@ -98,6 +98,17 @@ expect_usage_error o13.png "$work/in.exr" --bloom 3
 expect_usage_error o14.png "$work/in.exr" --bloom-threshold-space lab
 expect_usage_error o15.png "$work/in.exr" --render-scale 0
 expect_usage_error o16.png "$work/in.exr" --view normal
+# With the normal AOV in the EXR, --view normal shows it: a different picture from the beauty's.
+if "$prism" render cornell-box --width 24 --height 16 --spp 2 --aov normal -o "$work/in-n.exr" >/dev/null 2>&1; then
+  if "$prism" tonemap "$work/in-n.exr" -o "$work/beauty-n.png" >/dev/null 2>"$work/err" &&
+     "$prism" tonemap "$work/in-n.exr" -o "$work/normal-n.png" --view normal >/dev/null 2>"$work/err"; then
+    cmp -s "$work/beauty-n.png" "$work/normal-n.png" && fail "tonemap --view normal wrote the beauty"
+  else
+    fail "tonemap --view normal with a normal AOV: $(cat "$work/err")"
+  fi
+else
+  fail "could not render the input EXR with a normal AOV"
+fi
 expect_usage_error o17.png "$work/in.exr" --view heatmap
 expect_usage_error o18.png "$work/in.exr" --view sdr-hdr-split
 expect_usage_error o19.avif "$work/in.exr" --bit-depth 8

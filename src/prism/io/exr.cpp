@@ -217,9 +217,8 @@ std::optional<ImageRgbF> read_exr_vector_layer(const std::filesystem::path& path
       if (header.channels().findChannel(n) == nullptr) return std::nullopt;
     const Imath::Box2i dw = header.dataWindow();
     ImageRgbF layer;
-    layer.width = dw.max.x - dw.min.x + 1;
-    layer.height = dw.max.y - dw.min.y + 1;
-    layer.rgb.assign(3u * layer.width * layer.height, 0.0f);
+    std::tie(layer.width, layer.height) = checked_size(dw);  // as every reader here, before allocating
+    layer.rgb.assign(3 * static_cast<std::size_t>(layer.width) * static_cast<std::size_t>(layer.height), 0.0f);
     in.setFrameBuffer(float_frame_buffer(layer.rgb.data(), layer.width, dw.min.x, dw.min.y, names));
     in.readPixels(dw.min.y, dw.max.y);
     return layer;

@@ -24,15 +24,18 @@ TEST(ProcessMemory, PeakCoversMemoryTouchedAndFreedSinceAndTheCurrentResidentSet
     volatile char sink = block[kBytes - 1];
     (void)sink;
   }
-  const auto peak = peak_resident_set_bytes();
   const auto after = resident_set_bytes();
+  const auto peak = peak_resident_set_bytes();
   ASSERT_TRUE(peak.has_value());
   ASSERT_TRUE(after.has_value());
   // The high-water mark keeps the freed block: at least the resident set before it plus
   // 64 MiB, less 4 MiB for pages of the earlier set the kernel may have reclaimed meanwhile.
   // The current resident set (VmRSS) would fail this once the block is unmapped.
   EXPECT_GE(*peak, *before + 60 * kMiB);
-  EXPECT_GE(*peak, *after);
+  // And it covers the resident set read just before it, up to 1 MiB: the kernel's RSS
+  // counters are batched per thread (up to 64 pages each before kernel 6.2), and each read
+  // of /proc allocates (under AddressSanitizer VmRSS was seen 16 KiB above VmHWM).
+  EXPECT_GE(*peak + 1 * kMiB, *after);
 }
 
 }  // namespace

@@ -310,9 +310,10 @@ int run_render(const RenderOptions& o) {
   const auto peak_bytes = peak_resident_set_bytes();
   const std::string peak =
       peak_bytes ? fmt::format(", peak memory {} MiB", (*peak_bytes + (1u << 19)) >> 20) : std::string();
+  const double samples_per_second = result.elapsed_seconds > 0 ? samples / result.elapsed_seconds : 0.0;
   fmt::print("prism: rendered {} {}x{}, {} spp in {:.2f} s ({:.2f} M samples/s{}) -> {}\n", scene_name,
-             settings.width, settings.height, result.passes_done, result.elapsed_seconds,
-             result.elapsed_seconds > 0 ? samples / result.elapsed_seconds * 1e-6 : 0.0, peak, fmt::join(written, ", "));
+             settings.width, settings.height, result.passes_done, result.elapsed_seconds, samples_per_second * 1e-6,
+             peak, fmt::join(written, ", "));
   if (result.invalid_samples > 0)
     fmt::print("prism: {} invalid samples (NaN/Inf) discarded\n", result.invalid_samples);
   if (result.stop_reason == StopReason::time_limit)

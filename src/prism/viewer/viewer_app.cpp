@@ -132,7 +132,8 @@ class ViewerApp {
       if (done) break;
     }
     const MemoryFigures at_exit = MemoryMonitor().figures();  // read now, not the overlay's last second
-    log("ui frames={} mean_ms={:.2f} p50_ms={:.2f} p95_ms={:.2f} max_ms={:.2f} work_mean_ms={:.2f} peak_memory_mib={:.0f}",
+    log("ui frames={} mean_ms={:.2f} p50_ms={:.2f} p95_ms={:.2f} max_ms={:.2f} work_mean_ms={:.2f} "
+        "peak_memory_mib={:.0f}",
         stats_.frames(), stats_.mean_ms(), stats_.percentile_ms(50), stats_.percentile_ms(95),
         stats_.percentile_ms(100), stats_.work_mean_ms(), at_exit.peak_mib);
     return exit_status_;

@@ -7,30 +7,30 @@
 // summary line reports (its own VmHWM, core/process_memory.h). Not wait4's ru_maxrss: Linux
 // folds the spawning process' high-water mark into a child's at exec, so in `bench all`
 // every child read as the bench process' own peak (672 MiB for a render that needs
-// 165 MiB). This process' peaks are getrusage's ru_maxrss, a process-wide high-water
-// mark: sizes run smallest first and each row reports the peak so far, so run this suite
-// alone (`prism bench startup`) for clean peaks. Bytes per triangle come from the resident
-// set (/proc/self/statm) while the scene and its BVH are alive, which earlier peaks do
-// not distort.
+// 165 MiB). This process' peaks are its own VmHWM too, a process-wide high-water mark:
+// sizes run smallest first and each row reports the peak so far, so run this suite alone
+// (`prism bench startup`) for clean peaks. Bytes per triangle come from the resident set
+// (VmRSS) while the scene and its BVH are alive, which earlier peaks do not distort.
 #include <fcntl.h>
 #include <spawn.h>
-#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <chrono>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <fmt/format.h>
 
 #include "prism/accel/embree_accel.h"
-#include "prism/render/prepared_scene.h"
 #include "prism/core/error.h"
+#include "prism/core/process_memory.h"
+#include "prism/render/prepared_scene.h"
 #include "prism/render/renderer.h"
 #include "prism/scene/load_scene.h"
 #include "prism/scene/loaders/atrium_generator.h"
@@ -44,18 +44,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double peak_rss_mib() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  return static_cast<double>(usage.ru_maxrss) / 1024.0;  // Linux: kilobytes
-}
-
-double current_rss_mib() {
-  std::ifstream statm("/proc/self/statm");
-  double size = 0, resident = 0;
-  statm >> size >> resident;
-  return resident * 4096.0 / (1024.0 * 1024.0);
-}
+double mib(std::optional<std::uint64_t> bytes) { return static_cast<double>(bytes.value_or(0)) / (1024.0 * 1024.0); }
+double peak_rss_mib() { return mib(peak_resident_set_bytes()); }
+double current_rss_mib() { return mib(resident_set_bytes()); }
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 

@@ -30,6 +30,27 @@ TEST(Illuminants, IntegratedWhitePointsMatchPublishedValues) {
   EXPECT_NEAR(e.y, 1.0 / 3.0, 1e-4);
 }
 
+// CIE 15:2004 Table T.8 prints the fluorescent illuminants' chromaticities (1931 observer)
+// to 4 decimals: F2 (0.3721, 0.3751), F7 (0.3129, 0.3292), F11 (0.3805, 0.3769). The 1 nm
+// tables integrated over their 380–780 nm give them within the printing's ±0.00005; the
+// bound adds as much again for the range (CIE tabulates FL at 5 nm, 380–780, too).
+TEST(Illuminants, FluorescentChromaticitiesMatchPublishedValues) {
+  const struct {
+    int number;
+    double x, y;
+  } published[] = {{2, 0.3721, 0.3751}, {7, 0.3129, 0.3292}, {11, 0.3805, 0.3769}};
+  for (const auto& p : published) {
+    const Chromaticity c = XYZ_to_xy(spectrum_to_xyz(fluorescent_illuminant(p.number)));
+    EXPECT_NEAR(c.x, p.x, 1e-4) << "FL" << p.number;
+    EXPECT_NEAR(c.y, p.y, 1e-4) << "FL" << p.number;
+  }
+  // The line spectra are there: FL11's 545 nm terbium line stands far above its surroundings.
+  const DenseSpectrum& f11 = fluorescent_illuminant(11);
+  EXPECT_GT(f11(545.0), 5.0 * f11(530.0));
+  EXPECT_THROW(fluorescent_illuminant(0), UsageError);
+  EXPECT_THROW(fluorescent_illuminant(13), UsageError);
+}
+
 TEST(Illuminants, ParsesNamesAndRejectsUnknownOnes) {
   EXPECT_EQ(parse_standard_illuminant("D65"), StandardIlluminant::d65);
   EXPECT_EQ(parse_standard_illuminant("a"), StandardIlluminant::a);

@@ -34,6 +34,22 @@ const DenseSpectrum& standard_illuminant(StandardIlluminant illuminant) {
   return d65;
 }
 
+const DenseSpectrum& fluorescent_illuminant(int number) {
+  if (number < 1 || number > 12)
+    throw UsageError("no CIE fluorescent illuminant FL" + std::to_string(number) + " (known: FL1 to FL12)");
+  static const std::vector<DenseSpectrum> fl = [] {
+    const data::Table t = data::illuminants_fl();
+    std::vector<DenseSpectrum> out;
+    for (int column = 1; column <= 12; ++column) {
+      std::vector<double> values(static_cast<std::size_t>(t.rows));
+      for (int i = 0; i < t.rows; ++i) values[static_cast<std::size_t>(i)] = t.at(i, column);
+      out.emplace_back(t.at(0, 0), t.at(1, 0) - t.at(0, 0), std::move(values));
+    }
+    return out;
+  }();
+  return fl[static_cast<std::size_t>(number - 1)];
+}
+
 StandardIlluminant parse_standard_illuminant(std::string_view name) {
   std::string lower(name);
   std::transform(lower.begin(), lower.end(), lower.begin(),

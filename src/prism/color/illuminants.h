@@ -22,6 +22,10 @@ StandardIlluminant parse_standard_illuminant(std::string_view name);
 // differs in the 4th decimal from xy_to_XYZ(kWhiteD65) (see chromaticity.h).
 Vec3d illuminant_white_xyz(StandardIlluminant illuminant);
 
+// CIE fluorescent illuminant FL`number` (1–12; CIE 015:2018 Table 10.1, the F1–F12 of
+// older texts), 380–780 nm at 1 nm. Other numbers: UsageError.
+const DenseSpectrum& fluorescent_illuminant(int number);
+
 // An illuminant SPD with chromaticity exactly `white`, for whites with no tabulated CIE
 // SPD (the ACES white). It is D65 multiplied by a smooth tilt exp(a·t + b·t²),
 // t = (λ − 560 nm)/100 nm, with (a, b) found by Newton's method on the chromaticity.

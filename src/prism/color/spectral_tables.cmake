@@ -42,6 +42,7 @@ prism_embed_csv(_prism_tables illuminant_d65 ${_prism_data_dir}/cie/illuminant_D
 prism_embed_csv(_prism_tables illuminant_d50 ${_prism_data_dir}/cie/illuminant_D50_300_830_1nm.csv 2)
 prism_embed_csv(_prism_tables illuminant_a ${_prism_data_dir}/cie/illuminant_A_300_830_1nm.csv 2)
 prism_embed_csv(_prism_tables illuminant_e ${_prism_data_dir}/cie/illuminant_E_300_830_1nm.csv 2)
+prism_embed_csv(_prism_tables illuminants_fl ${_prism_data_dir}/cie/illuminants_FL_all_380_780_1nm.csv 28)
 prism_embed_csv(_prism_tables mallett_yuksel_2019_basis
   ${_prism_data_dir}/spectral_basis/mallett_yuksel_2019/mallett_yuksel_2019_basis_cie1931_380_780_5nm.csv 4)
 # --- bsdf/ (materials helper, issue 4): spectral IOR tables, read by bsdf/ior.cpp --------

@@ -56,6 +56,7 @@ class PiecewiseLinearSpectrum {
   double operator()(double wavelength_nm) const;
   std::span<const double> wavelengths_nm() const { return wavelengths_nm_; }
   std::span<const double> values() const { return values_; }
+  bool operator==(const PiecewiseLinearSpectrum&) const = default;
 
  private:
   std::vector<double> wavelengths_nm_;

@@ -17,6 +17,7 @@ Table illuminant_d65();             // wavelength_nm, relative SPD: 300–830 nm
 Table illuminant_d50();
 Table illuminant_a();
 Table illuminant_e();
+Table illuminants_fl();      // wavelength_nm, FL1…FL12, FL3.1…FL3.15: 380–780 nm, 1 nm (CIE 015:2018)
 Table mallett_yuksel_2019_basis();  // wavelength_nm, r, g, b: 380–780 nm, 5 nm
 
 // bsdf/ (issue 4): spectral IOR, used through bsdf/ior.h.

@@ -1,7 +1,12 @@
 #include "prism/io/read_to_end.h"
 
 #include <algorithm>
+#include <fstream>
 #include <system_error>
+
+#include <fmt/format.h>
+
+#include "prism/core/error.h"
 
 namespace prism {
 namespace {
@@ -44,6 +49,33 @@ std::uintmax_t regular_file_size_or_zero(const std::filesystem::path& path) {
   if (!std::filesystem::is_regular_file(path, ec) || ec) return 0;
   const std::uintmax_t size = std::filesystem::file_size(path, ec);
   return ec ? 0 : size;
+}
+
+namespace {
+
+template <class Bytes>
+Bytes read_whole_file(const std::filesystem::path& path, std::string_view what) {
+  const auto fail = [&](std::string_view reason) {
+    return IoError(fmt::format("cannot read {} '{}': {}", what, path.string(), reason));
+  };
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw fail(std::filesystem::exists(path, ec) ? "not a regular file" : "no such file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw fail("cannot open it");
+  Bytes bytes;
+  if (!read_to_end(in, regular_file_size_or_zero(path), bytes)) throw fail("read error");
+  return bytes;
+}
+
+}  // namespace
+
+std::string read_file_text(const std::filesystem::path& path, std::string_view what) {
+  return read_whole_file<std::string>(path, what);
+}
+
+std::vector<unsigned char> read_file_bytes(const std::filesystem::path& path, std::string_view what) {
+  return read_whole_file<std::vector<unsigned char>>(path, what);
 }
 
 }  // namespace prism

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <istream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace prism {
@@ -21,5 +22,11 @@ bool read_to_end(std::istream& in, std::uintmax_t expected_size, std::vector<uns
 // The size of the regular file at `path`, or 0 when it has none (a directory, a pipe, an
 // error): the expected_size for read_to_end.
 std::uintmax_t regular_file_size_or_zero(const std::filesystem::path& path);
+
+// The whole regular file at `path`, opened, sized and read as above. IoError
+// "cannot read <what> '<path>': <reason>" (no such file, not a regular file, cannot open
+// it, read error) otherwise; `what` names the file's role ("PLY mesh", "image").
+std::string read_file_text(const std::filesystem::path& path, std::string_view what);
+std::vector<unsigned char> read_file_bytes(const std::filesystem::path& path, std::string_view what);
 
 }  // namespace prism

@@ -4,6 +4,7 @@
 
 #include "prism/color/chromatic_adaptation.h"
 #include "prism/color/cie_1931.h"
+#include "prism/color/illuminants.h"
 #include "prism/color/jakob_hanika_table.h"
 #include "prism/color/mallett_yuksel.h"
 #include "prism/scene/emission.h"
@@ -15,14 +16,35 @@ struct EmitterColor {
   Vec3f color;
   ColorPickerSpace space;
   float value;  // nits, candela or lux: the spectrum is normalised the same way
+  const color::PiecewiseLinearSpectrum* spectrum;  // given as data instead of the colour, or null
 };
 
 std::vector<EmitterColor> emitter_colors(const Scene& scene) {
   std::vector<EmitterColor> out;
   for (const Material& m : scene.materials)
-    out.push_back({m.emission.color, m.emission.color_space, m.is_emissive() ? m.emission.luminance_nits : 0.0f});
-  for (const Light& l : scene.lights) out.push_back({l.color, l.color_space, l.intensity});
+    out.push_back({m.emission.color, m.emission.color_space, m.is_emissive() ? m.emission.luminance_nits : 0.0f,
+                   m.emission.spectrum ? &*m.emission.spectrum : nullptr});
+  for (const Light& l : scene.lights) out.push_back({l.color, l.color_space, l.intensity, l.spectrum ? &*l.spectrum : nullptr});
   return out;
+}
+
+// L(λ) = K S(λ)/W(λ) with 683 ∫ L ȳ dλ = `value` (color_context.h): the table of a spectral
+// emitter given as data, white-balanced to the working white's SPD W.
+color::VisibleSpectrumTable balanced_emission_table(const color::PiecewiseLinearSpectrum& spd,
+                                                    const color::ColorSpace& working, double value) {
+  const color::DenseSpectrum white = color::illuminant_for_white(working.white);
+  const auto balanced = [&](double nm) { return spd(nm) / white(nm); };
+  const double y = color::spectrum_to_xyz(balanced).y;
+  const double k = y > 0.0 ? value / (color::kMaxLuminousEfficacyLmPerW * y) : 0.0;
+  return color::VisibleSpectrumTable(balanced, k);
+}
+
+// Working RGB of an emitter's SPD: its CIE XYZ scaled to Y = `value`, unadapted (W → white).
+Vec3d emission_spectrum_rgb(const color::PiecewiseLinearSpectrum& spd, const color::ColorSpace& working,
+                            double value) {
+  const Vec3d xyz = color::spectrum_to_xyz(spd);
+  if (!(xyz.y > 0.0)) return Vec3d(0.0);
+  return working.xyz_to_rgb * (xyz * (value / xyz.y));
 }
 
 }  // namespace
@@ -47,9 +69,19 @@ ColorContext<SpectralMode<N>>::ColorContext(const Scene& scene, const TransportS
   for (const Material& m : scene.materials) {
     base_color_jh_.push_back(srgb_table_->lookup(Vec3d(m.base_color)));
     base_color_rgb_.emplace_back(m.base_color);
+    base_color_table_.push_back(-1);
+    if (m.base_color_spectrum) {
+      base_color_table_.back() = static_cast<std::int32_t>(spectrum_tables_.size());
+      spectrum_tables_.emplace_back(*m.base_color_spectrum);
+    }
   }
   const color::ColorSpace& working = color::color_space(settings.working_space);
   for (const EmitterColor& e : emitter_colors(scene)) {
+    emitter_table_.push_back(-1);
+    if (e.spectrum && e.value > 0.0f) {
+      emitter_table_.back() = static_cast<std::int32_t>(spectrum_tables_.size());
+      spectrum_tables_.push_back(balanced_emission_table(*e.spectrum, working, e.value));
+    }
     const Vec3d rgb = color::conversion_matrix(picker_color_space(e.space), working) * Vec3d(e.color);
     emitters_.push_back(e.value > 0.0f ? color::emission_spectrum(rgb, working, e.value) : color::EmissionSpectrum{});
   }
@@ -109,9 +141,17 @@ template class ColorContext<SpectralMode<8>>;
 ColorContext<RgbMode>::ColorContext(const Scene& scene, const TransportSettings& settings) {
   const color::ColorSpace& working = color::color_space(settings.working_space);
   srgb_to_working_ = color::conversion_matrix(color::color_space("srgb"), working);
-  for (const Material& m : scene.materials) base_colors_.push_back(reflectance(m.base_color, {}));
+  const color::DenseSpectrum white = color::illuminant_for_white(working.white);
+  for (const Material& m : scene.materials) {
+    base_colors_.push_back(reflectance(m.base_color, {}));
+    if (!m.base_color_spectrum) continue;
+    const Vec3d rgb = working.xyz_to_rgb * color::reflectance_to_xyz(*m.base_color_spectrum, white);
+    // A measured colour outside the working gamut has negative channels: no reflectance is.
+    for (int i = 0; i < 3; ++i) base_colors_.back()[i] = static_cast<float>(std::max(rgb[i], 0.0));
+  }
   for (const EmitterColor& e : emitter_colors(scene)) {
-    const Vec3d rgb = emission_radiance_rgb(e.color, e.space, e.value, working);
+    const Vec3d rgb = e.spectrum ? emission_spectrum_rgb(*e.spectrum, working, e.value)
+                                 : emission_radiance_rgb(e.color, e.space, e.value, working);
     Spectrum<Mode> s;
     for (int i = 0; i < 3; ++i) s[i] = static_cast<float>(rgb[i]);
     emitters_.push_back(s);

@@ -9,6 +9,16 @@
 //   rgb:      channels are the working space's R, G, B; reflectances are converted from
 //             sRGB primaries; emitters from their picker space (Bradford); the film holds
 //             working RGB with Y in nits.
+// Spectra a scene gives as data (scene/spectral_inputs.h) are white-balanced to the working
+// white W, the same convention the emission rule follows for colours:
+//   spectral: a reflectance R(λ) is used as measured; an emitter's SPD S(λ) becomes
+//             L(λ) = K S(λ)/W(λ), K such that 683 ∫ L ȳ dλ is its luminance, so an emitter
+//             whose SPD is the working white's (D65 for sRGB) is the flat spectrum, neutral,
+//             exactly as a working-white colour is; its spikes stay where they are;
+//   rgb:      R becomes the working RGB of its colour under W (CIE 15 §7.1), S the working
+//             RGB of its CIE XYZ (W itself → white), scaled to the luminance.
+// The two agree up to the difference between a von Kries (Bradford) adaptation and the
+// spectral division (tests/render/spectral_inputs_render_test.cpp measures it).
 #include <cstdint>
 #include <vector>
 
@@ -17,6 +27,7 @@
 #include "prism/color/emission_spectrum.h"
 #include "prism/color/jakob_hanika_table.h"
 #include "prism/color/sigmoid_polynomial.h"
+#include "prism/color/visible_spectrum_table.h"
 #include "prism/render/transport_mode.h"
 #include "prism/scene/scene.h"
 
@@ -77,13 +88,21 @@ class ColorContext<SpectralMode<N>> {
   std::vector<color::SigmoidPolynomial> base_color_jh_;
   std::vector<Vec3d> base_color_rgb_;
   std::vector<color::EmissionSpectrum> emitters_;
+  // Spectra given as data: per material and per emitter an index into spectrum_tables_ (−1:
+  // the colour's upsampled spectrum above); emitters' tables hold L(λ) with K applied.
+  std::vector<std::int32_t> base_color_table_, emitter_table_;
+  std::vector<color::VisibleSpectrumTable> spectrum_tables_;
 };
 
 template <int N>
 inline Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::base_color(std::uint32_t material,
                                                                             const Wavelengths<Mode>& w) const {
-  if (settings_.upsampling == Upsampling::mallett_yuksel) return mallett_yuksel_base_color(material, w);
   Spectrum<Mode> s;
+  if (const std::int32_t table = base_color_table_[material]; table >= 0) {
+    s.values = spectrum_tables_[static_cast<std::size_t>(table)].evaluate(w.wavelength_nm);
+    return s;
+  }
+  if (settings_.upsampling == Upsampling::mallett_yuksel) return mallett_yuksel_base_color(material, w);
   s.values = color::evaluate_sigmoid_polynomial(base_color_jh_[material], w.wavelength_nm);
   return s;
 }
@@ -92,6 +111,10 @@ template <int N>
 inline Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::emission(std::uint32_t emitter,
                                                                           const Wavelengths<Mode>& w) const {
   Spectrum<Mode> s;
+  if (const std::int32_t table = emitter_table_[emitter]; table >= 0) {
+    s.values = spectrum_tables_[static_cast<std::size_t>(table)].evaluate(w.wavelength_nm);
+    return s;
+  }
   const color::EmissionSpectrum& e = emitters_[emitter];
   s.values = color::evaluate_sigmoid_polynomial(e.shape, w.wavelength_nm, static_cast<float>(e.scale));
   return s;

@@ -36,6 +36,12 @@ class Fnv1a {
   std::uint64_t hash_ = 0xcbf29ce484222325ull;
 };
 
+void hash_spectrum(Fnv1a& h, const color::PiecewiseLinearSpectrum& s) {
+  h.value(s.wavelengths_nm().size());
+  h.bytes(s.wavelengths_nm().data(), s.wavelengths_nm().size_bytes());
+  h.bytes(s.values().data(), s.values().size_bytes());
+}
+
 }  // namespace
 
 void validate_render_settings(const RenderSettings& s) {
@@ -72,6 +78,9 @@ std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settin
     h.value(m.emission.color);
     h.value(m.emission.color_space);
     h.value(m.emission.luminance_nits);
+    // Spectra given as data, only where there are some (so other scenes keep their fingerprints).
+    for (const auto* spectrum : {&m.base_color_spectrum, &m.emission.spectrum})
+      if (*spectrum) hash_spectrum(h, **spectrum);
     // Only with a normal or bump map, so other scenes keep their fingerprints; checkpoints
     // of such scenes from before these maps were applied no longer match.
     if (m.normal_texture >= 0) {
@@ -114,6 +123,7 @@ std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settin
     h.value(l.direction);
     h.value(l.color);
     h.value(l.intensity);
+    if (l.spectrum) hash_spectrum(h, *l.spectrum);
   }
   // Only when requested, so renders without AOVs keep the fingerprints of earlier versions.
   if (settings.aovs.any()) h.value(settings.aovs.bits());

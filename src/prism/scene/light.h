@@ -31,6 +31,9 @@ struct Light {
   Vec3f color{1.0f};
   ColorPickerSpace color_space = ColorPickerSpace::srgb;
   float intensity = 1.0f;               // unit depends on type, see LightType
+  // Relative spectral power distribution instead of a colour (scene/spectral_inputs.h);
+  // `color` then holds its Rec.709 approximation.
+  std::optional<color::PiecewiseLinearSpectrum> spectrum;
   float spot_inner_angle_degrees = 30.0f;
   float spot_outer_angle_degrees = 45.0f;
   float angular_diameter_degrees = 0.0f;  // directional: 0 = delta light; the Sun is ≈ 0.53

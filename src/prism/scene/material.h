@@ -5,8 +5,10 @@
 // mode (upsampled spectra or the working RGB space).
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 
+#include "prism/color/spectrum.h"
 #include "prism/core/vec.h"
 
 namespace prism {
@@ -35,6 +37,10 @@ struct Emission {
   float luminance_nits = 0.0f;
   int texture = -1;  // optional emissive texture (linear), multiplies color
   bool two_sided = false;
+  // The relative spectral power distribution, where the scene gives one instead of a colour
+  // (scene/spectral_inputs.h); `color` then holds its Rec.709 approximation. Spectral
+  // transport renders it as given (white-balanced to the working white, render/color_context.h).
+  std::optional<color::PiecewiseLinearSpectrum> spectrum;
 
   bool is_emissive() const { return luminance_nits > 0.0f && max_component(color) > 0.0f; }
   bool operator==(const Emission&) const = default;
@@ -45,6 +51,9 @@ struct Material {
   MaterialType type = MaterialType::diffuse;
   Vec3f base_color{0.8f};        // albedo / specular tint / F0, linear Rec.709
   int base_color_texture = -1;   // index into Scene::textures; multiplies base_color
+  // Measured reflectance in [0, 1] instead of an RGB base colour (no texture then);
+  // base_color holds its colour under D65 (scene/spectral_inputs.h).
+  std::optional<color::PiecewiseLinearSpectrum> base_color_spectrum;
   float roughness = 0.5f;        // perceptual roughness r; microfacet α = r²
   float anisotropy = 0.0f;       // reserved for anisotropic roughness (0 = isotropic)
   float metallic = 0.0f;

@@ -527,18 +527,6 @@ TextureImage read_openexr(const std::filesystem::path& path, std::span<const uns
   return image;
 }
 
-std::vector<unsigned char> read_file_bytes(const std::filesystem::path& path) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    throw IoError(fmt::format("cannot read image '{}': {}", path.string(),
-                              std::filesystem::exists(path, ec) ? "not a regular file" : "no such file"));
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(fmt::format("cannot read image '{}': cannot open it", path.string()));
-  std::vector<unsigned char> bytes;
-  if (!read_to_end(in, regular_file_size_or_zero(path), bytes))
-    throw IoError(fmt::format("cannot read image '{}': read error", path.string()));
-  return bytes;
-}
 
 }  // namespace
 
@@ -595,7 +583,7 @@ std::optional<TextureMemoryNeed> texture_memory_need(std::span<const unsigned ch
 
 std::optional<TextureMemoryNeed> texture_file_memory_need(const std::filesystem::path& path) {
   try {
-    return texture_memory_need(read_file_bytes(path));
+    return texture_memory_need(read_file_bytes(path, "image"));
   } catch (const IoError&) {
     return std::nullopt;
   }
@@ -614,7 +602,7 @@ TextureImage read_texture_file(const std::filesystem::path& path, TextureEncodin
     in.read(reinterpret_cast<char*>(head.data()), head.size());
     if (in.gcount() == 0) throw IoError(fmt::format("cannot read image '{}': the file is empty", path.string()));
   }
-  const std::vector<unsigned char> bytes = read_file_bytes(path);
+  const std::vector<unsigned char> bytes = read_file_bytes(path, "image");
   if (detect_image_format(head) == ImageFileFormat::openexr) return read_openexr(path, bytes, limits);
   return decode_texture_memory(bytes, path.string(), encoding, limits);
 }

@@ -155,7 +155,10 @@ bool lights_panel(RenderControls& c) {
     if (ImGui::TreeNode(id.c_str(), "emitter: %s", c.materials[i].name.c_str())) {
       changed |= ImGui::DragFloat("luminance (nits)", &e.luminance_nits, e.luminance_nits * 0.01f + 0.01f, 0.0f, 1e9f,
                                   "%.4g", ImGuiSliderFlags_Logarithmic);
-      changed |= light_colour(id.c_str(), e.color, e.color_space);
+      if (e.spectrum)
+        ImGui::TextUnformatted("colour: the scene's spectrum");
+      else
+        changed |= light_colour(id.c_str(), e.color, e.color_space);
       ImGui::TreePop();
     }
   }
@@ -165,7 +168,10 @@ bool lights_panel(RenderControls& c) {
     if (ImGui::TreeNode(id.c_str(), "light: %s", l.name.empty() ? id.c_str() : l.name.c_str())) {
       changed |= ImGui::DragFloat(intensity_unit(l.type), &l.intensity, l.intensity * 0.01f + 0.01f, 0.0f, 1e9f,
                                   "%.4g", ImGuiSliderFlags_Logarithmic);
-      changed |= light_colour(id.c_str(), l.color, l.color_space);
+      if (l.spectrum)
+        ImGui::TextUnformatted("colour: the scene's spectrum");
+      else
+        changed |= light_colour(id.c_str(), l.color, l.color_space);
       ImGui::TreePop();
     }
   }

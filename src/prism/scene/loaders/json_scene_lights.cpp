@@ -6,6 +6,7 @@
 
 #include "prism/core/error.h"
 #include "prism/scene/loaders/json_scene_reader.h"
+#include "prism/scene/spectral_inputs.h"
 
 namespace prism::loaders {
 namespace {
@@ -60,8 +61,14 @@ void JsonSceneReader::read_light(const JsonValue& value) {
   light.color = value.get_vec3("color", Vec3f(1.0f));
   if (min(light.color, Vec3f(0.0f)) != Vec3f(0.0f)) value["color"].fail("colour components must not be negative");
   if (auto s = value.find("color_space")) light.color_space = read_color_space(*s);
+  if (auto s = value.find("spectrum")) {
+    if (value.has("color") || value.has("color_space")) value.fail("give either 'color' or 'spectrum', not both");
+    light.spectrum = read_spectrum(*s, SpectrumUse::emission);
+    light.color = emission_spectrum_srgb(*light.spectrum);
+  }
   if (type == LightType::directional) {
-    value.expect_keys({"type", "name", "color", "color_space", "direction", "illuminance_lux", "angular_diameter_degrees"});
+    value.expect_keys(
+        {"type", "name", "color", "color_space", "spectrum", "direction", "illuminance_lux", "angular_diameter_degrees"});
     light.direction = read_direction(value["direction"]);
     light.intensity = value["illuminance_lux"].as_float(0.0f, 1e7f);
     light.angular_diameter_degrees = value.get_float("angular_diameter_degrees", 0.0f, 0.0f, 90.0f);
@@ -69,9 +76,10 @@ void JsonSceneReader::read_light(const JsonValue& value) {
     return;
   }
   if (type == LightType::point) {
-    value.expect_keys({"type", "name", "color", "color_space", "position", "intensity_cd", "power_lm"});
+    value.expect_keys({"type", "name", "color", "color_space", "spectrum", "position", "intensity_cd", "power_lm"});
   } else {
-    value.expect_keys({"type", "name", "color", "color_space", "position", "direction", "target", "intensity_cd",
+    value.expect_keys({"type", "name", "color", "color_space", "spectrum", "position", "direction", "target",
+                       "intensity_cd",
                        "power_lm", "inner_angle_degrees", "outer_angle_degrees"});
     if (value.has("direction") == value.has("target")) value.fail("give exactly one of 'direction' and 'target'");
     light.position = value["position"].as_vec3();

@@ -6,6 +6,7 @@
 #include "prism/scene/emission.h"
 #include "prism/scene/loaders/json_scene_reader.h"
 #include "prism/scene/loaders/path_safety.h"
+#include "prism/scene/spectral_inputs.h"
 
 namespace prism::loaders {
 namespace {
@@ -57,13 +58,19 @@ void read_dispersion(Material& m, const JsonValue& value) {
 }
 
 void read_emission(JsonSceneReader& reader, Material& m, std::uint32_t index, const JsonValue& value) {
-  value.expect_keys({"color", "color_space", "luminance_nits", "power_lm", "two_sided", "texture"});
+  value.expect_keys({"color", "color_space", "spectrum", "luminance_nits", "power_lm", "two_sided", "texture"});
   Emission& e = m.emission;
   e.color = value.get_vec3("color", Vec3f(1.0f));
   if (min(e.color, Vec3f(0.0f)) != Vec3f(0.0f)) value["color"].fail("colour components must not be negative");
   if (auto s = value.find("color_space"))
     e.color_space = s->as_enum<ColorPickerSpace>(
         {{"srgb", ColorPickerSpace::srgb}, {"acescg", ColorPickerSpace::acescg}, {"rec2020", ColorPickerSpace::rec2020}});
+  if (auto s = value.find("spectrum")) {
+    if (value.has("color") || value.has("color_space")) value.fail("give either 'color' or 'spectrum', not both");
+    if (value.has("texture")) value.fail("an emission texture multiplies a colour: it cannot go with 'spectrum'");
+    e.spectrum = reader.read_spectrum(*s, SpectrumUse::emission);
+    e.color = emission_spectrum_srgb(*e.spectrum);
+  }
   e.two_sided = value.get_bool("two_sided", false);
   if (value.has("luminance_nits") == value.has("power_lm"))
     value.fail("give exactly one of 'luminance_nits' and 'power_lm'");
@@ -107,7 +114,7 @@ std::uint32_t JsonSceneReader::material_index(const JsonValue& name) const {
 }
 
 void JsonSceneReader::read_material(const JsonValue& value) {
-  value.expect_keys({"name", "type", "base_color", "base_color_texture", "roughness", "anisotropy", "metallic",
+  value.expect_keys({"name", "type", "base_color", "base_color_spectrum", "base_color_texture", "roughness", "anisotropy", "metallic",
                      "metallic_roughness_texture", "normal_texture", "normal_scale", "bump_texture", "bump_scale",
                      "microfacet", "conductor", "ior", "dispersion", "thin_walled", "transmission", "alpha_mode",
                      "alpha_cutoff", "opacity", "emission"});
@@ -122,6 +129,13 @@ void JsonSceneReader::read_material(const JsonValue& value) {
   m.base_color = value.get_vec3("base_color", m.base_color);
   if (min(m.base_color, Vec3f(0.0f)) != Vec3f(0.0f)) value["base_color"].fail("colour components must not be negative");
   if (auto t = value.find("base_color_texture")) m.base_color_texture = read_texture(*t, TextureEncoding::srgb);
+  if (auto s = value.find("base_color_spectrum")) {
+    if (value.has("base_color")) value.fail("give either 'base_color' or 'base_color_spectrum', not both");
+    if (value.has("base_color_texture"))
+      value.fail("a base colour texture multiplies a colour: it cannot go with 'base_color_spectrum'");
+    m.base_color_spectrum = read_spectrum(*s, SpectrumUse::reflectance);
+    m.base_color = reflectance_spectrum_srgb(*m.base_color_spectrum);
+  }
   m.roughness = value.get_float("roughness", m.roughness, 0.0f, 1.0f);
   m.anisotropy = value.get_float("anisotropy", m.anisotropy, -1.0f, 1.0f);
   m.metallic = value.get_float("metallic", m.metallic, 0.0f, 1.0f);

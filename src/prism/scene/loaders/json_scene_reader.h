@@ -13,6 +13,8 @@
 
 namespace prism::loaders {
 
+enum class SpectrumUse { emission, reflectance };
+
 struct JsonSceneReader {
   JsonSceneReader(Scene& scene_, JsonDocument& document_, const std::filesystem::path& scene_dir_,
                   const LoadOptions& options_)
@@ -33,6 +35,9 @@ struct JsonSceneReader {
   // A texture reference: "file.png" or {"file", "encoding", "wrap", "wrap_u", "wrap_v"}.
   // `check` runs on the image once it is decoded (at the end of the load).
   int read_texture(const JsonValue& value, TextureEncoding default_encoding, TextureCache::ImageCheck check = {});
+  // A spectrum given as data (json_scene_spectra.cpp): a name, a black body, points or a CSV
+  // column; reflectances must lie in [0, 1], emission must be visible.
+  color::PiecewiseLinearSpectrum read_spectrum(const JsonValue& value, SpectrumUse use) const;
   std::uint32_t material_index(const JsonValue& name) const;
 
   void read_material(const JsonValue& value);

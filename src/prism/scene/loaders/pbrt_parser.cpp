@@ -20,14 +20,6 @@ constexpr int kMaxIncludeDepth = 16;
 constexpr std::size_t kMaxAttributeDepth = 100000;
 constexpr std::size_t kMaxInstances = 50'000'000;  // placements of object meshes
 
-std::string read_text_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(fmt::format("cannot read pbrt-v4 scene '{}'", path.string()));
-  std::string text;
-  if (!read_to_end(in, regular_file_size_or_zero(path), text))
-    throw IoError(fmt::format("cannot read pbrt-v4 scene '{}'", path.string()));
-  return text;
-}
 
 std::string expect_string(PbrtTokenizer& tokens, std::string_view directive) {
   const PbrtToken t = tokens.next();
@@ -197,7 +189,7 @@ void PbrtBuilder::directive(PbrtTokenizer& tokens, const PbrtToken& name, int in
     const auto path = resolve(where, d, file);
     std::string text;
     try {
-      text = read_text_file(path);
+      text = read_file_text(path, "pbrt-v4 scene");
     } catch (const IoError& e) {
       throw IoError(fmt::format("{}:{}: {}: {}", tokens.source(), name.line, d, e.what()));
     }
@@ -337,7 +329,7 @@ Scene parse_pbrt_scene(std::string_view text, std::string_view source, const std
 }
 
 Scene load_pbrt_scene(const std::filesystem::path& path, const LoadOptions& options) {
-  const std::string text = read_text_file(path);
+  const std::string text = read_file_text(path, "pbrt-v4 scene");
   std::error_code ec;
   const auto dir = std::filesystem::absolute(path, ec).parent_path();
   return parse_pbrt_scene(text, path.filename().string(), dir, options);

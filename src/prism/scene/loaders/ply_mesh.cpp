@@ -273,12 +273,7 @@ PlyMesh parse_ply_mesh(std::span<const unsigned char> bytes, std::string_view so
 }
 
 PlyMesh read_ply_mesh(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(fmt::format("cannot read PLY mesh '{}'", path.string()));
-  std::vector<unsigned char> bytes;
-  if (!read_to_end(in, regular_file_size_or_zero(path), bytes))
-    throw IoError(fmt::format("cannot read PLY mesh '{}'", path.string()));
-  return parse_ply_mesh(bytes, path.filename().string());
+  return parse_ply_mesh(read_file_bytes(path, "PLY mesh"), path.filename().string());
 }
 
 }  // namespace prism::loaders

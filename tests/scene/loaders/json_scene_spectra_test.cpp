@@ -4,7 +4,9 @@
 #include "prism/color/illuminants.h"
 #include "prism/core/error.h"
 #include "prism/scene/load_scene.h"
+#include "prism/scene/loaders/gltf_writer.h"
 #include "prism/scene/loaders/json_scene.h"
+#include "prism/scene/loaders/scene_writers.h"
 #include "prism/scene/spectral_inputs.h"
 #include "scene/loaders/loader_test_files.h"
 
@@ -86,6 +88,17 @@ TEST(JsonSceneSpectra, CsvColumnsAreReadByName) {
   dir.write("missing.json", scene_with(R"("base_color_spectrum": {"file": "nope.csv"})"));
   message = error_of<SceneError>([&] { load_scene((dir / "missing.json").string()); });
   EXPECT_NE(message.find("cannot read spectrum"), std::string::npos) << message;
+}
+
+// The writers are for generated RGB scenes: a spectrum is refused, not dropped.
+TEST(JsonSceneSpectra, WritersRefuseSpectraInsteadOfDroppingThem) {
+  test::ScratchFolder dir;
+  const Scene scene = parse(scene_with(R"("emission": {"spectrum": "F11", "luminance_nits": 10})"));
+  for (const auto& write : {&loaders::write_scene_json, &loaders::write_scene_pbrt, &loaders::write_scene_glb}) {
+    const std::string message = error_of<UsageError>([&] { write(scene, dir / "out"); });
+    EXPECT_NE(message.find("material 'm' has a spectrum"), std::string::npos) << message;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir / "out"));
 }
 
 TEST(JsonSceneSpectra, RejectsSpectraThatCannotBe) {

@@ -10,6 +10,7 @@
 #include "prism/scene/builtin_scenes.h"
 #include "prism/scene/emission.h"
 #include "prism/scene/load_scene.h"
+#include "prism/scene/spectral_inputs.h"
 
 namespace prism::loaders {
 namespace {
@@ -255,6 +256,48 @@ AttributeBegin
   EXPECT_NEAR(two_sided.emission.luminance_nits, 2.0f, 1e-4f);
   // power π on a triangle of area 1/2, one side: L = Φ / (π A) = 2.
   EXPECT_NEAR(s.materials[s.meshes[1].material].emission.luminance_nits, 2.0f, 1e-4f);
+}
+
+// Light spectra pbrt-v4 can name or tabulate are rendered as data (scene/spectral_inputs.h),
+// normalised to unit luminance times `scale` as pbrt-v4 does; so are sampled reflectances
+// within [0, 1]. Other named spectra keep their RGB approximation (and its warning).
+TEST(PbrtLoader, SpectraBecomeSceneSpectra) {
+  const Scene s = parse(std::string(R"(
+WorldBegin
+LightSource "point" "blackbody I" 2856 "float scale" 7 "point3 from" [0 5 0]
+LightSource "distant" "spectrum L" "stdillum-F11" "point3 from" [0 1 0] "point3 to" [0 0 0]
+LightSource "spot" "spectrum I" [400 1 500 2 600 3 700 4] "point3 from" [0 0 0] "point3 to" [0 -1 0]
+LightSource "infinite" "blackbody L" 6500
+LightSource "point" "spectrum I" "stdillum-F3.1"
+Material "diffuse" "spectrum reflectance" [400 0.1 700 0.9]
+AttributeBegin
+  AreaLightSource "diffuse" "spectrum L" "stdillum-A" "float scale" 3
+)") + std::string(kTriangle) + "AttributeEnd\n" + R"(Material "diffuse" "spectrum reflectance" [400 0.5 700 1.5]
+)" + std::string(kTriangle));
+  ASSERT_EQ(s.lights.size(), 5u);
+  ASSERT_TRUE(s.lights[0].spectrum);
+  EXPECT_EQ(*s.lights[0].spectrum, blackbody_emission_spectrum(2856.0));
+  EXPECT_FLOAT_EQ(s.lights[0].intensity, 7.0f);
+  EXPECT_EQ(s.lights[0].color, emission_spectrum_srgb(*s.lights[0].spectrum));
+  ASSERT_TRUE(s.lights[1].spectrum);
+  EXPECT_EQ(*s.lights[1].spectrum, *named_emission_spectrum("F11"));
+  ASSERT_TRUE(s.lights[2].spectrum);
+  EXPECT_DOUBLE_EQ((*s.lights[2].spectrum)(550.0), 2.5);
+  EXPECT_FALSE(s.lights[3].spectrum);  // environments stay RGB
+  EXPECT_FALSE(s.lights[4].spectrum);  // FL3.1 is not one of Prism's tables
+  const Material& lamp = s.materials[s.meshes[0].material];
+  ASSERT_TRUE(lamp.emission.spectrum);
+  EXPECT_EQ(*lamp.emission.spectrum, *named_emission_spectrum("A"));
+  EXPECT_FLOAT_EQ(lamp.emission.luminance_nits, 3.0f);
+  ASSERT_TRUE(lamp.base_color_spectrum);
+  EXPECT_DOUBLE_EQ((*lamp.base_color_spectrum)(550.0), 0.5);
+  EXPECT_FALSE(s.materials[s.meshes[1].material].base_color_spectrum);  // above 1: not a reflectance
+  std::string warnings;
+  for (const std::string& w : s.warnings) warnings += w + "\n";
+  EXPECT_EQ(warnings.find("blackbody I"), std::string::npos) << warnings;
+  EXPECT_EQ(warnings.find("line 3"), std::string::npos) << warnings;
+  EXPECT_NE(warnings.find("stdillum-F3.1"), std::string::npos) << warnings;
+  EXPECT_NE(warnings.find("6500"), std::string::npos) << warnings;
 }
 
 TEST(PbrtLoader, ShapesSphereBilinearAndPly) {

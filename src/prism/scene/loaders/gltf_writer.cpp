@@ -132,6 +132,9 @@ void write_scene_glb(const Scene& scene, const std::filesystem::path& path) {
   if (!scene.instances.empty()) throw UsageError("glTF writer: instances are not supported");
   for (const Light& l : scene.lights)
     if (l.type != LightType::environment) throw UsageError("glTF writer: punctual lights are not supported");
+  for (const Material& m : scene.materials)
+    if (m.base_color_spectrum || m.emission.spectrum)
+      throw UsageError(fmt::format("glTF writer: material '{}' has a spectrum, which glTF 2.0 cannot hold", m.name));
   json doc = {{"asset", {{"version", "2.0"}, {"generator", "Prism"}}},
               {"extensionsUsed", {"KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior",
                                   "KHR_materials_specular", "KHR_materials_volume"}},

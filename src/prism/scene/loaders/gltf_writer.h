@@ -9,7 +9,8 @@
 // textures as PNG images embedded in the binary chunk (texture_png.h) with a sampler each
 // (wrap modes; KHR_texture_transform when a texture has a uv transform); the camera as a
 // perspective camera node. Instances, punctual lights and the environment are not written
-// (the environment has no glTF equivalent): UsageError for the first two.
+// (the environment has no glTF equivalent): UsageError for the first two, and for spectra
+// given as data (scene/spectral_inputs.h).
 #include <filesystem>
 
 #include "prism/scene/scene.h"

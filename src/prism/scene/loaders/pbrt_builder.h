@@ -21,6 +21,7 @@ namespace prism::loaders {
 struct PbrtAreaLight {
   Vec3f color{0.0f};
   float luminance_nits = 0.0f;
+  std::optional<color::PiecewiseLinearSpectrum> spectrum;
   bool two_sided = false;
   std::optional<double> power;  // pbrt "power": emitted flux, applied per shape
 };

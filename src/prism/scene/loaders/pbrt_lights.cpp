@@ -12,6 +12,7 @@
 #include "prism/scene/emission.h"
 #include "prism/scene/environment_illuminance.h"
 #include "prism/scene/loaders/pbrt_builder.h"
+#include "prism/scene/spectral_inputs.h"
 
 namespace prism::loaders {
 namespace {
@@ -19,6 +20,7 @@ namespace {
 struct LightColor {
   Vec3f color{1.0f};
   float luminance = 1.0f;
+  std::optional<color::PiecewiseLinearSpectrum> spectrum;  // rendered as data (PbrtParams::get_spectrum)
 };
 
 // "scale", which multiplies every light's emission: negative (or NaN) is an error at it.
@@ -28,8 +30,18 @@ double light_scale(const PbrtParams& p) {
   return scale;
 }
 
-LightColor light_color(const PbrtParams& p, std::string_view name, std::vector<std::string>& approximations) {
+// `with_spectrum`: the light can carry a spectrum (every kind but the environment).
+LightColor light_color(const PbrtParams& p, std::string_view name, std::vector<std::string>& approximations,
+                       bool with_spectrum = true) {
   LightColor c;
+  if (with_spectrum) {
+    if ((c.spectrum = p.get_spectrum(name, PbrtSpectrumUse::illuminant))) {
+      // Normalised to unit luminance, as pbrt-v4 normalises light spectra: `scale` is the luminance.
+      c.color = emission_spectrum_srgb(*c.spectrum);
+      c.luminance = static_cast<float>(light_scale(p));
+      return c;
+    }
+  }
   const Vec3f rgb = p.get_color(name, PbrtSpectrumUse::illuminant, approximations).value_or(Vec3f(1.0f));
   const double scale = light_scale(p);
   c.color = rgb;
@@ -62,6 +74,7 @@ void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
     light.type = type == "point" ? LightType::point : LightType::spot;
     light.color = c.color;
     light.intensity = c.luminance;
+    light.spectrum = c.spectrum;
     light.position = t.apply_point(p.get_point3("from").value_or(Vec3f(0.0f)));
     double solid_angle = 4.0 * std::numbers::pi;
     if (type == "spot") {
@@ -87,6 +100,7 @@ void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
     light.type = LightType::directional;
     light.color = c.color;
     light.intensity = c.luminance;
+    light.spectrum = c.spectrum;
     const Vec3f from = p.get_point3("from").value_or(Vec3f(0.0f));
     const Vec3f to = p.get_point3("to").value_or(Vec3f(0.0f, 0.0f, 1.0f));
     const Vec3f d = t.apply_vector(to - from);
@@ -132,7 +146,7 @@ void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
         light.intensity = static_cast<float>(light.intensity * (lux / map_lux));
       }
     } else {
-      const LightColor c = light_color(p, "L", approximations_);
+      const LightColor c = light_color(p, "L", approximations_, /*with_spectrum=*/false);
       light.color = c.color;
       light.intensity = c.luminance;
       // A uniform sky of luminance L gives π L lux on any surface.
@@ -165,6 +179,7 @@ void PbrtBuilder::area_light_source(const std::string& type, const PbrtParams& p
   PbrtAreaLight light;
   light.color = c.color;
   light.luminance_nits = c.luminance;
+  light.spectrum = c.spectrum;
   light.two_sided = p.get_bool("twosided", false);
   const double power = optional_power(p);
   if (power >= 0.0) light.power = power;

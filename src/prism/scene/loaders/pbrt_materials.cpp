@@ -6,6 +6,7 @@
 #include "prism/bsdf/ior.h"
 #include "prism/core/error.h"
 #include "prism/scene/loaders/pbrt_builder.h"
+#include "prism/scene/spectral_inputs.h"
 
 namespace prism::loaders {
 namespace {
@@ -71,7 +72,10 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
   }
   if (effective == "diffuse") {
     m.type = MaterialType::diffuse;
-    m.base_color = reflectance(p, "reflectance", m.base_color_texture).value_or(Vec3f(0.5f));
+    if ((m.base_color_spectrum = p.get_spectrum("reflectance", PbrtSpectrumUse::reflectance)))
+      m.base_color = reflectance_spectrum_srgb(*m.base_color_spectrum);  // measured, rendered as data
+    else
+      m.base_color = reflectance(p, "reflectance", m.base_color_texture).value_or(Vec3f(0.5f));
     if (type != "diffuse")
       for (const char* n : {"roughness", "interface.roughness", "thickness", "albedo", "g"}) p.find(n);
   } else if (effective == "conductor") {

@@ -1,5 +1,6 @@
 #include "prism/scene/loaders/pbrt_params.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -10,6 +11,7 @@
 #include "prism/color/color_space.h"
 #include "prism/color/spectrum.h"
 #include "prism/core/error.h"
+#include "prism/scene/spectral_inputs.h"
 
 namespace prism::loaders {
 namespace {
@@ -156,7 +158,7 @@ std::optional<Vec3f> PbrtParams::get_color(std::string_view name, PbrtSpectrumUs
     return Vec3f(static_cast<float>(p->numbers[0]));
   }
   if (p->type == "blackbody") {
-    if (p->numbers.size() != 1 || !(p->numbers[0] > 0.0) || p->numbers[0] > 1e6) fail(*p, "expected a temperature in kelvin");
+    check_blackbody(*p);
     approximations.push_back(fmt::format("{} blackbody {} K as its sRGB colour", where(), p->numbers[0]));
     const color::BlackbodySpectrum bb(p->numbers[0], true);
     return spectrum_color([&](double nm) { return bb(nm); }, use);
@@ -168,9 +170,7 @@ std::optional<Vec3f> PbrtParams::get_color(std::string_view name, PbrtSpectrumUs
       return use == PbrtSpectrumUse::illuminant ? Vec3f(1.0f) : Vec3f(0.5f);
     }
     const auto& v = p->numbers;
-    if (v.size() < 4 || v.size() % 2 != 0) fail(*p, "expected (wavelength, value) pairs");
-    for (std::size_t i = 0; i < v.size(); i += 2)
-      if ((i > 0 && v[i] <= v[i - 2]) || v[i + 1] < 0.0) fail(*p, "wavelengths must increase and values be non-negative");
+    check_sampled_spectrum(*p);
     approximations.push_back(fmt::format("{} sampled spectrum as its sRGB colour", where()));
     const auto f = [&](double nm) {
       if (nm <= v.front()) return v[1];
@@ -183,6 +183,44 @@ std::optional<Vec3f> PbrtParams::get_color(std::string_view name, PbrtSpectrumUs
     return spectrum_color(f, use);
   }
   fail(*p, fmt::format("type '{}' is not a colour (rgb, spectrum, blackbody)", p->type));
+}
+
+void PbrtParams::check_blackbody(const PbrtParam& p) const {
+  if (p.numbers.size() != 1 || !(p.numbers[0] > 0.0) || p.numbers[0] > 1e6) fail(p, "expected a temperature in kelvin");
+}
+
+void PbrtParams::check_sampled_spectrum(const PbrtParam& p) const {
+  const auto& v = p.numbers;
+  if (v.size() < 4 || v.size() % 2 != 0) fail(p, "expected (wavelength, value) pairs");
+  for (std::size_t i = 0; i < v.size(); i += 2)
+    if ((i > 0 && v[i] <= v[i - 2]) || v[i + 1] < 0.0) fail(p, "wavelengths must increase and values be non-negative");
+}
+
+std::optional<color::PiecewiseLinearSpectrum> PbrtParams::get_spectrum(std::string_view name,
+                                                                       PbrtSpectrumUse use) const {
+  const PbrtParam* p = find(name);
+  if (!p) return std::nullopt;
+  const bool light = use == PbrtSpectrumUse::illuminant;
+  if (p->type == "blackbody" && light) {
+    check_blackbody(*p);
+    return blackbody_emission_spectrum(p->numbers[0]);
+  }
+  if (p->type != "spectrum") return std::nullopt;
+  if (!p->strings.empty()) {
+    constexpr std::string_view kPrefix = "stdillum-";
+    if (!light || p->strings.size() != 1 || !p->strings[0].starts_with(kPrefix)) return std::nullopt;
+    return named_emission_spectrum(std::string_view(p->strings[0]).substr(kPrefix.size()));
+  }
+  check_sampled_spectrum(*p);
+  std::vector<double> nm, values;
+  for (std::size_t i = 0; i < p->numbers.size(); i += 2) {
+    nm.push_back(p->numbers[i]);
+    values.push_back(p->numbers[i + 1]);
+  }
+  color::PiecewiseLinearSpectrum s(std::move(nm), std::move(values));
+  if (light ? !(color::spectrum_to_xyz(s).y > 0.0) : *std::max_element(s.values().begin(), s.values().end()) > 1.0)
+    return std::nullopt;  // no visible light, or not a reflectance: get_color's colour stands
+  return s;
 }
 
 std::vector<std::string> PbrtParams::unused() const {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "prism/color/spectrum.h"
 #include "prism/core/vec.h"
 #include "prism/scene/loaders/pbrt_tokenizer.h"
 
@@ -40,10 +41,20 @@ class PbrtParams {
   // approximated; each approximation is described in `approximations`.
   std::optional<Vec3f> get_color(std::string_view name, PbrtSpectrumUse use,
                                  std::vector<std::string>& approximations) const;
+  // The parameter as a spectrum Prism renders as data (scene/spectral_inputs.h), where it is
+  // one: for lights a `blackbody`, a CIE illuminant by pbrt-v4's name ("stdillum-D65", -D50,
+  // -A, -F1 … -F12) or sampled (λ, value) pairs; for reflectances sampled pairs within
+  // [0, 1]. Nothing otherwise (rgb, float, other named spectra): get_color approximates those.
+  // Malformed values fail as in get_color.
+  std::optional<color::PiecewiseLinearSpectrum> get_spectrum(std::string_view name, PbrtSpectrumUse use) const;
   // Names of parameters no lookup asked for, with their lines ("name (line 4)").
   std::vector<std::string> unused() const;
 
   [[noreturn]] void fail(const PbrtParam& p, std::string_view message) const;
+
+ private:
+  void check_blackbody(const PbrtParam& p) const;
+  void check_sampled_spectrum(const PbrtParam& p) const;
 };
 
 // Reads parameters until the next token is not a quoted string.

@@ -182,6 +182,7 @@ std::uint32_t PbrtBuilder::shape_material(const PbrtParams& p, double area) {
   Material m = scene_.materials[state_.material];
   m.name += "+light";
   m.emission.color = light.color;
+  m.emission.spectrum = light.spectrum;
   m.emission.luminance_nits = light.luminance_nits;
   m.emission.two_sided = light.two_sided;
   if (light.power) {

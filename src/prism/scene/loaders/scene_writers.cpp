@@ -48,6 +48,9 @@ void check_writable(const Scene& scene) {
   for (const Light& l : scene.lights)
     if (l.type != LightType::environment || l.environment_texture >= 0)
       throw UsageError("scene writer: only a constant environment light is supported");
+  for (const Material& m : scene.materials)
+    if (m.base_color_spectrum || m.emission.spectrum)
+      throw UsageError(fmt::format("scene writer: material '{}' has a spectrum; only RGB colours are written", m.name));
 }
 
 std::string vec(const Vec3f& v) { return fmt::format("[{}, {}, {}]", v.x, v.y, v.z); }

@@ -8,9 +8,10 @@
 // imagemap Textures (uvs written as v_pbrt = 1 − v, pbrt's v pointing up the image) and,
 // for alpha-tested materials, a grey "<…>-alpha-<material>.png" float imagemap given to
 // the shapes as "texture alpha" (MASK is thresholded to 0/1, since pbrt-v4's alpha is
-// stochastic). Scenes with instances, punctual lights or an environment image are refused
-// (UsageError), and so are what a format cannot say (JSON: uv transforms; pbrt: rotated
-// or mirrored textures, textures on non-diffuse materials, non-grey texture tints).
+// stochastic). Scenes with instances, punctual lights, an environment image or spectra
+// given as data (scene/spectral_inputs.h) are refused (UsageError), and so are what a
+// format cannot say (JSON: uv transforms; pbrt: rotated or mirrored textures, textures on
+// non-diffuse materials, non-grey texture tints).
 // Every file goes to a temporary file that is renamed (textures first, the scene last),
 // so an interrupted write leaves no partial file.
 #include <filesystem>

@@ -44,6 +44,34 @@ TEST(CornellBox, RedWallOnTheLeftOfTheView) {
   EXPECT_LT(mesh_named(scene, "green-wall").positions[0].x, 1.0f);
 }
 
+// Cornell's measurements (data/cornell_box/): spot values of the table as published with
+// the Mitsuba 3 scene, on the classic box's geometry and light luminance.
+TEST(CornellBox, MeasuredVariantCarriesCornellsSpectra) {
+  const Scene rgb = make_cornell_box(), measured = load_scene("cornell-box-measured");
+  EXPECT_NO_THROW(validate_scene(measured));
+  EXPECT_EQ(measured.name, "cornell-box-measured");
+  ASSERT_EQ(measured.meshes.size(), rgb.meshes.size());
+  for (std::size_t i = 0; i < rgb.meshes.size(); ++i) EXPECT_EQ(measured.meshes[i].positions, rgb.meshes[i].positions);
+  const auto material = [&](const char* name) -> const Material& {
+    for (const Material& m : measured.materials)
+      if (m.name == name) return m;
+    throw std::runtime_error(std::string("no material ") + name);
+  };
+  ASSERT_TRUE(material("white").base_color_spectrum && material("green").base_color_spectrum &&
+              material("red").base_color_spectrum);
+  EXPECT_DOUBLE_EQ((*material("white").base_color_spectrum)(400.0), 0.343);
+  EXPECT_DOUBLE_EQ((*material("green").base_color_spectrum)(404.0), 0.096);
+  EXPECT_DOUBLE_EQ((*material("red").base_color_spectrum)(408.0), 0.048);
+  const Material& light = material("light");
+  ASSERT_TRUE(light.emission.spectrum);
+  EXPECT_DOUBLE_EQ((*light.emission.spectrum)(550.0), 11.8);  // between 8 (500 nm) and 15.6 (600 nm)
+  EXPECT_EQ(light.emission.luminance_nits, rgb.materials[3].emission.luminance_nits);
+  // Their colours under D65 are the box's: a red wall reflecting mostly long wavelengths.
+  const Vec3f red = material("red").base_color, green = material("green").base_color;
+  EXPECT_GT(red.x, 4.0f * red.y);
+  EXPECT_GT(green.y, 2.0f * green.x);
+}
+
 TEST(LoadScene, ResolvesBuiltinsAndReportsErrors) {
   EXPECT_EQ(load_scene("cornell-box").name, "cornell-box");
   EXPECT_THROW(load_scene("no-such-scene"), UsageError);

@@ -28,4 +28,8 @@ Table ior_al_mcpeak();     // wavelength_nm, n, k: McPeak et al. 2015, 150–170
 Table ior_nbk7_schott();   // wavelength_nm, n: N-BK7 from SCHOTT's Sellmeier fit, 360–830 nm
 Table sellmeier_nbk7();    // one row: B1, C1, B2, C2, B3, C3 (C in µm²)
 
+// scene/ (built-in cornell-box-measured): Cornell University's measurements of its box.
+Table cornell_box_reflectance();  // wavelength_nm, white, green, red: 400–700 nm, 4 nm
+Table cornell_box_light();        // wavelength_nm, relative radiance: 400–700 nm, 100 nm
+
 }  // namespace prism::color::data

@@ -7,7 +7,7 @@
 
 namespace prism {
 
-std::vector<std::string> builtin_scene_names() { return {"cornell-box"}; }
+std::vector<std::string> builtin_scene_names() { return {"cornell-box", "cornell-box-measured"}; }
 
 bool is_builtin_scene(std::string_view name) {
   for (const auto& n : builtin_scene_names())
@@ -17,6 +17,7 @@ bool is_builtin_scene(std::string_view name) {
 
 Scene make_builtin_scene(std::string_view name) {
   if (name == "cornell-box") return make_cornell_box();
+  if (name == "cornell-box-measured") return make_cornell_box_measured();
   throw UsageError(fmt::format("unknown scene '{}' (built-in scenes: {})", name,
                                fmt::join(builtin_scene_names(), ", ")));
 }

@@ -16,5 +16,8 @@ Scene make_builtin_scene(std::string_view name);
 // in millimetres) with the camera of the Mitsuba 3 / pbrt-v4 test scenes: eye at
 // (278, 273, -800) looking along +z, 39.3077° field of view.
 Scene make_cornell_box();
+// The same box with Cornell's measured spectra (scene/spectral_inputs.h): the walls'
+// reflectances at 4 nm and the light's relative radiance, at the RGB box's luminance.
+Scene make_cornell_box_measured();
 
 }  // namespace prism

@@ -1,7 +1,9 @@
 #include <array>
 
+#include "prism/color/tabulated_data.h"
 #include "prism/scene/builtin_scenes.h"
 #include "prism/scene/emission.h"
+#include "prism/scene/spectral_inputs.h"
 
 namespace prism {
 namespace {
@@ -89,6 +91,35 @@ Scene make_cornell_box() {
   scene.camera.name = "default";
   scene.default_width = 512;
   scene.default_height = 512;
+  return scene;
+}
+
+Scene make_cornell_box_measured() {
+  Scene scene = make_cornell_box();
+  scene.name = "cornell-box-measured";
+  // Cornell's measured reflectances (data/cornell_box/, 400–700 nm every 4 nm) for the
+  // white, green and red walls, and the light's measured relative spectral radiance, at the
+  // luminance of the RGB box's light so that both render at the same exposure.
+  const color::data::Table walls = color::data::cornell_box_reflectance();
+  const auto column = [](const color::data::Table& t, int c) {
+    std::vector<double> nm, values;
+    for (int i = 0; i < t.rows; ++i) {
+      nm.push_back(t.at(i, 0));
+      values.push_back(t.at(i, c));
+    }
+    return color::PiecewiseLinearSpectrum(std::move(nm), std::move(values));
+  };
+  for (Material& m : scene.materials) {
+    const int c = m.name == "white" ? 1 : m.name == "green" ? 2 : m.name == "red" ? 3 : 0;
+    if (c == 0) continue;
+    m.base_color_spectrum = column(walls, c);
+    m.base_color = reflectance_spectrum_srgb(*m.base_color_spectrum);
+  }
+  for (Material& m : scene.materials)
+    if (m.is_emissive()) {
+      m.emission.spectrum = column(color::data::cornell_box_light(), 1);
+      m.emission.color = emission_spectrum_srgb(*m.emission.spectrum);
+    }
   return scene;
 }
 

@@ -89,6 +89,23 @@ TEST(Scene, ValidationCatchesBadData) {
   scene.meshes[0].material = 42;
   EXPECT_THROW(validate_scene(scene), SceneError);
   EXPECT_THROW(validate_scene(Scene{}), SceneError);
+  // Spectra built in code rather than by a loader: empty, out of range, or on an environment.
+  scene = make_cornell_box_measured();
+  EXPECT_NO_THROW(validate_scene(scene));
+  scene.materials[0].base_color_spectrum = color::PiecewiseLinearSpectrum();
+  EXPECT_THROW(validate_scene(scene), SceneError);
+  scene = make_cornell_box();
+  scene.materials[0].base_color_spectrum = color::PiecewiseLinearSpectrum({400.0, 700.0}, {0.5, 1.5});
+  EXPECT_THROW(validate_scene(scene), SceneError);
+  scene = make_cornell_box();
+  scene.materials[3].emission.spectrum = color::PiecewiseLinearSpectrum({400.0, 700.0}, {1.0, -1.0});
+  EXPECT_THROW(validate_scene(scene), SceneError);
+  scene = make_cornell_box();
+  Light sky;
+  sky.type = LightType::environment;
+  sky.spectrum = color::PiecewiseLinearSpectrum({400.0, 700.0}, {1.0, 1.0});
+  scene.lights.push_back(sky);
+  EXPECT_THROW(validate_scene(scene), SceneError);
 }
 
 }  // namespace

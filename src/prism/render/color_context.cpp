@@ -24,7 +24,8 @@ std::vector<EmitterColor> emitter_colors(const Scene& scene) {
   for (const Material& m : scene.materials)
     out.push_back({m.emission.color, m.emission.color_space, m.is_emissive() ? m.emission.luminance_nits : 0.0f,
                    m.emission.spectrum ? &*m.emission.spectrum : nullptr});
-  for (const Light& l : scene.lights) out.push_back({l.color, l.color_space, l.intensity, l.spectrum ? &*l.spectrum : nullptr});
+  for (const Light& l : scene.lights)
+    out.push_back({l.color, l.color_space, l.intensity, l.spectrum ? &*l.spectrum : nullptr});
   return out;
 }
 

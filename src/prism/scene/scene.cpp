@@ -32,12 +32,32 @@ void validate_scene(const Scene& scene) {
         throw SceneError(fmt::format("mesh '{}': vertex {} is not finite", mesh.name, i));
   }
   for (const auto& m : scene.materials) validate_material(m);
+  for (const auto& l : scene.lights) {
+    if (!l.spectrum) continue;
+    if (l.type == LightType::environment)
+      throw SceneError(fmt::format("light '{}': an environment takes a colour, not a spectrum", l.name));
+    validate_spectrum(*l.spectrum, fmt::format("light '{}'", l.name), 0.0);
+  }
 }
 
 void validate_material(const Material& m) {
   if (!is_finite(m.base_color) || !is_finite(m.emission.color) || !std::isfinite(m.emission.luminance_nits) ||
       m.emission.luminance_nits < 0.0f)
     throw SceneError(fmt::format("material '{}' has non-finite values", m.name));
+  if (m.base_color_spectrum) validate_spectrum(*m.base_color_spectrum, fmt::format("material '{}'", m.name), 1.0);
+  if (m.emission.spectrum) validate_spectrum(*m.emission.spectrum, fmt::format("material '{}'", m.name), 0.0);
+}
+
+
+void validate_spectrum(const color::PiecewiseLinearSpectrum& s, std::string_view owner, double max_value) {
+  const auto values = s.values();
+  if (values.empty()) throw SceneError(fmt::format("{}: empty spectrum", owner));
+  for (const double v : values)
+    if (!std::isfinite(v) || v < 0.0 || (max_value > 0.0 && v > max_value))
+      throw SceneError(max_value > 0.0 ? fmt::format("{}: spectrum value {} outside [0, {}]", owner, v, max_value)
+                                       : fmt::format("{}: spectrum value {} negative or not finite", owner, v));
+  for (const double nm : s.wavelengths_nm())
+    if (!std::isfinite(nm)) throw SceneError(fmt::format("{}: non-finite wavelength in spectrum", owner));
 }
 
 }  // namespace prism

@@ -3,6 +3,7 @@
 // Loaders fill it; the accelerator and integrator only read it.
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "prism/core/transform.h"
@@ -67,9 +68,13 @@ struct Scene {
 };
 
 // Throws SceneError when indices are out of range, a material index is invalid,
-// positions are not finite, or the scene has no geometry.
+// positions are not finite, the scene has no geometry, a spectrum is malformed
+// (validate_spectrum) or an environment light has one.
 void validate_scene(const Scene& scene);
 // Throws SceneError when a material's colours or emission are not finite (or negative).
 void validate_material(const Material& material);
+// A spectrum given as data: non-empty, finite, values in [0, max_value] (0: no upper bound).
+// SceneError naming `owner` otherwise.
+void validate_spectrum(const color::PiecewiseLinearSpectrum& spectrum, std::string_view owner, double max_value);
 
 }  // namespace prism

@@ -67,8 +67,8 @@ void JsonSceneReader::read_light(const JsonValue& value) {
     light.color = emission_spectrum_srgb(*light.spectrum);
   }
   if (type == LightType::directional) {
-    value.expect_keys(
-        {"type", "name", "color", "color_space", "spectrum", "direction", "illuminance_lux", "angular_diameter_degrees"});
+    value.expect_keys({"type", "name", "color", "color_space", "spectrum", "direction", "illuminance_lux",
+                       "angular_diameter_degrees"});
     light.direction = read_direction(value["direction"]);
     light.intensity = value["illuminance_lux"].as_float(0.0f, 1e7f);
     light.angular_diameter_degrees = value.get_float("angular_diameter_degrees", 0.0f, 0.0f, 90.0f);

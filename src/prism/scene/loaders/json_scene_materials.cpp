@@ -114,10 +114,10 @@ std::uint32_t JsonSceneReader::material_index(const JsonValue& name) const {
 }
 
 void JsonSceneReader::read_material(const JsonValue& value) {
-  value.expect_keys({"name", "type", "base_color", "base_color_spectrum", "base_color_texture", "roughness", "anisotropy", "metallic",
-                     "metallic_roughness_texture", "normal_texture", "normal_scale", "bump_texture", "bump_scale",
-                     "microfacet", "conductor", "ior", "dispersion", "thin_walled", "transmission", "alpha_mode",
-                     "alpha_cutoff", "opacity", "emission"});
+  value.expect_keys({"name", "type", "base_color", "base_color_spectrum", "base_color_texture", "roughness",
+                     "anisotropy", "metallic", "metallic_roughness_texture", "normal_texture", "normal_scale",
+                     "bump_texture", "bump_scale", "microfacet", "conductor", "ior", "dispersion", "thin_walled",
+                     "transmission", "alpha_mode", "alpha_cutoff", "opacity", "emission"});
   Material m;
   m.name = value["name"].as_string();
   if (material_indices.contains(m.name)) value["name"].fail(fmt::format("material '{}' is defined twice", m.name));

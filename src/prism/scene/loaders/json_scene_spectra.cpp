@@ -52,7 +52,8 @@ color::PiecewiseLinearSpectrum JsonSceneReader::read_spectrum(const JsonValue& v
     spectrum = *named;
   } else {
     value.expect_keys({"wavelengths_nm", "values", "blackbody_k", "file", "column"});
-    const int forms = (value.has("wavelengths_nm") || value.has("values")) + value.has("blackbody_k") + value.has("file");
+    const int forms =
+        (value.has("wavelengths_nm") || value.has("values")) + value.has("blackbody_k") + value.has("file");
     if (forms != 1) value.fail("give one of 'wavelengths_nm' with 'values', 'blackbody_k', or 'file'");
     if (value.has("column") && !value.has("file")) value.fail("'column' goes with 'file'");
     if (auto t = value.find("blackbody_k")) {
@@ -67,8 +68,10 @@ color::PiecewiseLinearSpectrum JsonSceneReader::read_spectrum(const JsonValue& v
       } catch (const Error& e) {
         f->fail(e.what());
       }
-      spectrum = checked_spectrum(std::move(data.wavelengths_nm), std::move(data.values), use,
-                                  [&](std::string_view what) { f->fail(fmt::format("{}: {}", path.filename().string(), what)); });
+      const auto fail_in_file = [&](std::string_view what) {
+        f->fail(fmt::format("{}: {}", path.filename().string(), what));
+      };
+      spectrum = checked_spectrum(std::move(data.wavelengths_nm), std::move(data.values), use, fail_in_file);
     } else {
       const JsonValue nm_value = value["wavelengths_nm"], values_value = value["values"];
       const auto nm_elements = nm_value.elements(kMaxPoints), value_elements = values_value.elements(kMaxPoints);

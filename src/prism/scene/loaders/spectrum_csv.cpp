@@ -21,7 +21,8 @@ std::vector<std::string_view> split_fields(std::string_view line) {
   std::vector<std::string_view> fields;
   for (std::size_t start = 0;;) {
     const std::size_t comma = line.find(',', start);
-    fields.push_back(trim(line.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start)));
+    const std::size_t length = comma == std::string_view::npos ? std::string_view::npos : comma - start;
+    fields.push_back(trim(line.substr(start, length)));
     if (comma == std::string_view::npos) return fields;
     start = comma + 1;
   }

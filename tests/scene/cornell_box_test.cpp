@@ -4,6 +4,7 @@
 #include "prism/core/pcg32.h"
 #include "prism/scene/builtin_scenes.h"
 #include "prism/scene/load_scene.h"
+#include "prism/scene/scene_summary.h"
 #include "support/chi_square.h"
 
 namespace prism {
@@ -66,6 +67,9 @@ TEST(CornellBox, MeasuredVariantCarriesCornellsSpectra) {
   ASSERT_TRUE(light.emission.spectrum);
   EXPECT_DOUBLE_EQ((*light.emission.spectrum)(550.0), 11.8);  // between 8 (500 nm) and 15.6 (600 nm)
   EXPECT_EQ(light.emission.luminance_nits, rgb.materials[3].emission.luminance_nits);
+  EXPECT_NE(format_scene_summary(measured).find("materials 4 (4 diffuse; 1 emissive, 4 with spectra)"),
+            std::string::npos)
+      << format_scene_summary(measured);
   // Their colours under D65 are the box's: a red wall reflecting mostly long wavelengths.
   const Vec3f red = material("red").base_color, green = material("green").base_color;
   EXPECT_GT(red.x, 4.0f * red.y);

@@ -47,8 +47,12 @@ SceneSummary summarize_scene(const Scene& scene) {
     if (has_alpha_coverage(m)) ++s.alpha_tested_materials;
     if (m.normal_texture >= 0) ++s.normal_mapped_materials;
     if (m.bump_texture >= 0) ++s.bump_mapped_materials;
+    if (m.base_color_spectrum || m.emission.spectrum) ++s.spectral_materials;
   }
-  for (const auto& l : scene.lights) ++s.lights_by_type[std::string(light_type_name(l.type))];
+  for (const auto& l : scene.lights) {
+    ++s.lights_by_type[std::string(light_type_name(l.type))];
+    if (l.spectrum) ++s.spectral_lights;
+  }
   return s;
 }
 
@@ -74,9 +78,11 @@ std::string format_scene_summary(const Scene& scene) {
   if (s.alpha_tested_materials) extras += fmt::format(", {} alpha-tested", s.alpha_tested_materials);
   if (s.normal_mapped_materials) extras += fmt::format(", {} normal-mapped", s.normal_mapped_materials);
   if (s.bump_mapped_materials) extras += fmt::format(", {} bump-mapped", s.bump_mapped_materials);
+  if (s.spectral_materials) extras += fmt::format(", {} with spectra", s.spectral_materials);
   out += fmt::format("materials {} ({}; {} emissive{})\n", scene.materials.size(), counts(s.materials_by_type),
                      s.emissive_materials, extras);
-  out += fmt::format("lights {} ({})\n", scene.lights.size(), counts(s.lights_by_type));
+  out += fmt::format("lights {} ({}{})\n", scene.lights.size(), counts(s.lights_by_type),
+                     s.spectral_lights ? fmt::format("; {} with spectra", s.spectral_lights) : std::string());
   out += fmt::format("textures {} ({})\n", s.textures, mebibytes(s.texture_bytes));
   for (const auto& t : scene.textures) {
     const char* storage = t.has_rgbe()                          ? "RGBE"

@@ -7,6 +7,7 @@
 #include "prism/scene/loaders/gltf_writer.h"
 #include "prism/scene/loaders/json_scene.h"
 #include "prism/scene/loaders/scene_writers.h"
+#include "prism/scene/scene_summary.h"
 #include "prism/scene/spectral_inputs.h"
 #include "scene/loaders/loader_test_files.h"
 
@@ -54,6 +55,8 @@ TEST(JsonSceneSpectra, EmittersTakeNamedBlackbodyAndTabulatedSpectra) {
   ASSERT_TRUE(light.lights[0].spectrum);
   EXPECT_EQ(*light.lights[0].spectrum, *named_emission_spectrum("A"));
   EXPECT_GT(light.lights[0].color.x, light.lights[0].color.z);  // orange
+  const std::string summary = format_scene_summary(light);
+  EXPECT_NE(summary.find("lights 1 (1 point; 1 with spectra)"), std::string::npos) << summary;
 }
 
 TEST(JsonSceneSpectra, ReflectancesAreMeasuredData) {

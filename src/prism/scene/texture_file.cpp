@@ -287,12 +287,13 @@ TextureImage decode_radiance(std::span<const unsigned char> bytes, std::string_v
   return image;
 }
 
-TextureImage decode_with_stb(std::span<const unsigned char> bytes, std::string_view name, TextureEncoding encoding,
-                             const TextureLimits& limits) {
-  if (detect_image_format(bytes) == ImageFileFormat::jpeg) check_jpeg_huffman_tables(bytes, name);
-  if (detect_image_format(bytes) == ImageFileFormat::png) {
+// `format` (png or jpeg) is detect_image_format's answer for `bytes`, which the caller has.
+TextureImage decode_with_stb(std::span<const unsigned char> bytes, ImageFileFormat format, std::string_view name,
+                             TextureEncoding encoding, const TextureLimits& limits) {
+  if (format == ImageFileFormat::jpeg) check_jpeg_huffman_tables(bytes, name);
+  if (format == ImageFileFormat::png) {
     if (const auto cleaned = without_empty_idat_chunks(bytes, name))
-      return decode_with_stb(*cleaned, name, encoding, limits);
+      return decode_with_stb(*cleaned, format, name, encoding, limits);
   }
   if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     throw IoError(fmt::format("cannot read image '{}': file too large", name));
@@ -540,10 +541,10 @@ ImageFileFormat detect_image_format(std::span<const unsigned char> head) {
 
 TextureImage decode_texture_memory(std::span<const unsigned char> bytes, std::string_view name,
                                    TextureEncoding encoding, const TextureLimits& limits) {
-  switch (detect_image_format(bytes)) {
+  switch (const ImageFileFormat format = detect_image_format(bytes)) {
     case ImageFileFormat::png:
     case ImageFileFormat::jpeg:
-      return decode_with_stb(bytes, name, encoding, limits);
+      return decode_with_stb(bytes, format, name, encoding, limits);
     case ImageFileFormat::radiance_hdr:
       return decode_radiance(bytes, name, limits);
     case ImageFileFormat::openexr:

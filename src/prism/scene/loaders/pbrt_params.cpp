@@ -203,7 +203,9 @@ std::optional<color::PiecewiseLinearSpectrum> PbrtParams::get_spectrum(std::stri
   const bool light = use == PbrtSpectrumUse::illuminant;
   if (p->type == "blackbody" && light) {
     check_blackbody(*p);
-    return blackbody_emission_spectrum(p->numbers[0]);
+    color::PiecewiseLinearSpectrum s = blackbody_emission_spectrum(p->numbers[0]);
+    if (!(color::spectrum_to_xyz(s).y > 0.0)) return std::nullopt;  // too cold to be seen: get_color's black
+    return s;
   }
   if (p->type != "spectrum") return std::nullopt;
   if (!p->strings.empty()) {

@@ -10,26 +10,18 @@
 #include "prism/render/renderer.h"
 #include "prism/scene/spectral_inputs.h"
 #include "support/film_statistics.h"
+#include "support/test_scenes.h"
 
 namespace prism {
 namespace {
 
 constexpr float kLuminanceNits = 100.0f;
 
-// A camera looking down −z at a 40 × 40 quad in the plane z = 0 that fills the view: each
-// camera ray hits it at normal incidence. The quad is `material`; lights are the caller's.
-Scene facing_quad(const Material& material) {
-  Scene scene;
-  scene.name = "facing-quad";
+// The grey floor of test_scenes.h seen from 5 units above with a 30° field of view (every
+// camera ray hits it within 15° of the normal), made of `material`; lights are the caller's.
+Scene facing_floor(const Material& material) {
+  Scene scene = test::make_grey_floor_seen_from_above(5.0f, 30.0f);
   scene.materials = {material};
-  TriangleMesh quad;
-  quad.positions = {{-20, -20, 0}, {20, -20, 0}, {20, 20, 0}, {-20, 20, 0}};
-  quad.indices = {0, 1, 2, 0, 2, 3};  // front face +z, towards the camera
-  scene.meshes.push_back(quad);
-  scene.camera.eye = Vec3f(0, 0, 5);
-  scene.camera.target = Vec3f(0, 0, 0);
-  scene.camera.up = Vec3f(0, 1, 0);
-  scene.camera.fov_degrees = 30.0f;
   return scene;
 }
 
@@ -68,13 +60,13 @@ TEST(SpectralInputsRender, EmitterSpdIsBalancedToTheWorkingWhiteInSpectralTransp
   for (const char* name : {"D65", "F11", "A"}) {
     const color::PiecewiseLinearSpectrum spd = *named_emission_spectrum(name);
     const Vec3d balanced = color::spectrum_to_xyz([&](double nm) { return spd(nm) / d65(nm); });
-    const Film film = render(facing_quad(emitter(spd)), small_render(TransportKind::spectral)).film;
+    const Film film = render(facing_floor(emitter(spd)), small_render(TransportKind::spectral)).film;
     expect_within_noise(film, balanced * (kLuminanceNits / balanced.y), name);
   }
   // Without the balance D65 would film as D65's own XYZ, 5 % less x and 9 % more z than
   // white: far outside the bound above (σ is below 0.5 % here).
   const Film d65_film =
-      render(facing_quad(emitter(*named_emission_spectrum("D65"))), small_render(TransportKind::spectral)).film;
+      render(facing_floor(emitter(*named_emission_spectrum("D65"))), small_render(TransportKind::spectral)).film;
   const auto e = test::block_estimate(d65_film, 0, 0, 16, 16);
   EXPECT_NEAR(e.mean.x / e.mean.y, 1.0, 0.01);
   EXPECT_NEAR(e.mean.z / e.mean.y, 1.0, 0.01);
@@ -88,14 +80,14 @@ TEST(SpectralInputsRender, EmitterSpdIsItsXyzInRgbTransport) {
     const color::PiecewiseLinearSpectrum spd = *named_emission_spectrum(name);
     const Vec3d xyz = color::spectrum_to_xyz(spd);
     const Vec3d expected = srgb.xyz_to_rgb * (xyz * (kLuminanceNits / xyz.y));
-    const Film film = render(facing_quad(emitter(spd)), small_render(TransportKind::rgb)).film;
+    const Film film = render(facing_floor(emitter(spd)), small_render(TransportKind::rgb)).film;
     const Vec3d mean = test::block_estimate(film, 0, 0, 16, 16).mean;
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], expected[c], 1e-5 * kLuminanceNits) << name << " channel " << c;
   }
 }
 
 TEST(SpectralInputsRender, MeasuredReflectanceUnderWhiteLight) {
-  // A white directional light of E lux along −z on the quad: a white Lambertian surface
+  // A white directional light of E lux straight down on the floor: a white Lambertian surface
   // would have L = E/π nits with a flat spectrum (the emission rule for the working white).
   // With reflectance R(λ) the film holds (E/π) · XYZ(R)/∫ȳ in spectral transport, and
   // (E/π) · the working RGB of R under D65 in RGB transport (deterministic: a delta light).
@@ -103,10 +95,10 @@ TEST(SpectralInputsRender, MeasuredReflectanceUnderWhiteLight) {
   Material m;
   m.base_color_spectrum = red;
   m.base_color = reflectance_spectrum_srgb(red);
-  Scene scene = facing_quad(m);
+  Scene scene = facing_floor(m);
   Light sun;
   sun.type = LightType::directional;
-  sun.direction = Vec3f(0, 0, -1);
+  sun.direction = Vec3f(0, -1, 0);
   sun.intensity = 50.0f;
   scene.lights.push_back(sun);
   const double white_nits = 50.0 / std::numbers::pi;

@@ -12,9 +12,10 @@
 namespace prism::color {
 namespace {
 
-DenseSpectrum from_table(const data::Table& t) {
+// Column `column` of a table whose column 0 is an evenly spaced wavelength.
+DenseSpectrum from_table(const data::Table& t, int column = 1) {
   std::vector<double> values(static_cast<std::size_t>(t.rows));
-  for (int i = 0; i < t.rows; ++i) values[static_cast<std::size_t>(i)] = t.at(i, 1);
+  for (int i = 0; i < t.rows; ++i) values[static_cast<std::size_t>(i)] = t.at(i, column);
   return DenseSpectrum(t.at(0, 0), t.at(1, 0) - t.at(0, 0), std::move(values));
 }
 
@@ -38,13 +39,8 @@ const DenseSpectrum& fluorescent_illuminant(int number) {
   if (number < 1 || number > 12)
     throw UsageError("no CIE fluorescent illuminant FL" + std::to_string(number) + " (known: FL1 to FL12)");
   static const std::vector<DenseSpectrum> fl = [] {
-    const data::Table t = data::illuminants_fl();
     std::vector<DenseSpectrum> out;
-    for (int column = 1; column <= 12; ++column) {
-      std::vector<double> values(static_cast<std::size_t>(t.rows));
-      for (int i = 0; i < t.rows; ++i) values[static_cast<std::size_t>(i)] = t.at(i, column);
-      out.emplace_back(t.at(0, 0), t.at(1, 0) - t.at(0, 0), std::move(values));
-    }
+    for (int column = 1; column <= 12; ++column) out.push_back(from_table(data::illuminants_fl(), column));
     return out;
   }();
   return fl[static_cast<std::size_t>(number - 1)];

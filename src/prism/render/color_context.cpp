@@ -1,6 +1,7 @@
 #include "prism/render/color_context.h"
 
 #include <algorithm>
+#include <optional>
 
 #include "prism/color/chromatic_adaptation.h"
 #include "prism/color/cie_1931.h"
@@ -32,13 +33,27 @@ std::vector<EmitterColor> emitter_colors(const Scene& scene) {
 // L(λ) = K S(λ)/W(λ) with 683 ∫ L ȳ dλ = `value` (color_context.h): the table of a spectral
 // emitter given as data, white-balanced to the working white's SPD W.
 color::VisibleSpectrumTable balanced_emission_table(const color::PiecewiseLinearSpectrum& spd,
-                                                    const color::ColorSpace& working, double value) {
-  const color::DenseSpectrum white = color::illuminant_for_white(working.white);
+                                                    const color::DenseSpectrum& white, double value) {
   const auto balanced = [&](double nm) { return spd(nm) / white(nm); };
   const double y = color::spectrum_to_xyz(balanced).y;
   const double k = y > 0.0 ? value / (color::kMaxLuminousEfficacyLmPerW * y) : 0.0;
   return color::VisibleSpectrumTable(balanced, k);
 }
+
+// The working white's SPD (illuminant_for_white: for a white with no CIE table, a Newton
+// fit), found on first use: only scenes with spectra given as data need it.
+class WorkingWhiteSpd {
+ public:
+  explicit WorkingWhiteSpd(const color::ColorSpace& working) : working_(working) {}
+  const color::DenseSpectrum& get() {
+    if (!spd_) spd_ = color::illuminant_for_white(working_.white);
+    return *spd_;
+  }
+
+ private:
+  const color::ColorSpace& working_;
+  std::optional<color::DenseSpectrum> spd_;
+};
 
 // Working RGB of an emitter's SPD: its CIE XYZ scaled to Y = `value`, unadapted (W → white).
 Vec3d emission_spectrum_rgb(const color::PiecewiseLinearSpectrum& spd, const color::ColorSpace& working,
@@ -77,11 +92,12 @@ ColorContext<SpectralMode<N>>::ColorContext(const Scene& scene, const TransportS
     }
   }
   const color::ColorSpace& working = color::color_space(settings.working_space);
+  WorkingWhiteSpd white(working);
   for (const EmitterColor& e : emitter_colors(scene)) {
     emitter_table_.push_back(-1);
     if (e.spectrum && e.value > 0.0f) {
       emitter_table_.back() = static_cast<std::int32_t>(spectrum_tables_.size());
-      spectrum_tables_.push_back(balanced_emission_table(*e.spectrum, working, e.value));
+      spectrum_tables_.push_back(balanced_emission_table(*e.spectrum, white.get(), e.value));
     }
     const Vec3d rgb = color::conversion_matrix(picker_color_space(e.space), working) * Vec3d(e.color);
     emitters_.push_back(e.value > 0.0f ? color::emission_spectrum(rgb, working, e.value) : color::EmissionSpectrum{});
@@ -142,11 +158,11 @@ template class ColorContext<SpectralMode<8>>;
 ColorContext<RgbMode>::ColorContext(const Scene& scene, const TransportSettings& settings) {
   const color::ColorSpace& working = color::color_space(settings.working_space);
   srgb_to_working_ = color::conversion_matrix(color::color_space("srgb"), working);
-  const color::DenseSpectrum white = color::illuminant_for_white(working.white);
+  WorkingWhiteSpd white(working);
   for (const Material& m : scene.materials) {
     base_colors_.push_back(reflectance(m.base_color, {}));
     if (!m.base_color_spectrum) continue;
-    const Vec3d rgb = working.xyz_to_rgb * color::reflectance_to_xyz(*m.base_color_spectrum, white);
+    const Vec3d rgb = working.xyz_to_rgb * color::reflectance_to_xyz(*m.base_color_spectrum, white.get());
     // A measured colour outside the working gamut has negative channels: no reflectance is.
     for (int i = 0; i < 3; ++i) base_colors_.back()[i] = static_cast<float>(std::max(rgb[i], 0.0));
   }

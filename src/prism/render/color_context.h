@@ -78,6 +78,12 @@ class ColorContext<SpectralMode<N>> {
 
  private:
   Spectrum<Mode> mallett_yuksel_base_color(std::uint32_t material, const Wavelengths<Mode>& w) const;
+  // spectrum_tables_[table] at the path's wavelengths.
+  Spectrum<Mode> tabulated(std::int32_t table, const Wavelengths<Mode>& w) const {
+    Spectrum<Mode> s;
+    s.values = spectrum_tables_[static_cast<std::size_t>(table)].evaluate(w.wavelength_nm);
+    return s;
+  }
 
   TransportSettings settings_;
   Mat3 srgb_to_film_;
@@ -97,12 +103,9 @@ class ColorContext<SpectralMode<N>> {
 template <int N>
 inline Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::base_color(std::uint32_t material,
                                                                             const Wavelengths<Mode>& w) const {
-  Spectrum<Mode> s;
-  if (const std::int32_t table = base_color_table_[material]; table >= 0) {
-    s.values = spectrum_tables_[static_cast<std::size_t>(table)].evaluate(w.wavelength_nm);
-    return s;
-  }
+  if (const std::int32_t table = base_color_table_[material]; table >= 0) return tabulated(table, w);
   if (settings_.upsampling == Upsampling::mallett_yuksel) return mallett_yuksel_base_color(material, w);
+  Spectrum<Mode> s;
   s.values = color::evaluate_sigmoid_polynomial(base_color_jh_[material], w.wavelength_nm);
   return s;
 }
@@ -110,12 +113,9 @@ inline Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::base_color(std::
 template <int N>
 inline Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::emission(std::uint32_t emitter,
                                                                           const Wavelengths<Mode>& w) const {
-  Spectrum<Mode> s;
-  if (const std::int32_t table = emitter_table_[emitter]; table >= 0) {
-    s.values = spectrum_tables_[static_cast<std::size_t>(table)].evaluate(w.wavelength_nm);
-    return s;
-  }
+  if (const std::int32_t table = emitter_table_[emitter]; table >= 0) return tabulated(table, w);
   const color::EmissionSpectrum& e = emitters_[emitter];
+  Spectrum<Mode> s;
   s.values = color::evaluate_sigmoid_polynomial(e.shape, w.wavelength_nm, static_cast<float>(e.scale));
   return s;
 }

@@ -169,18 +169,9 @@ std::optional<Vec3f> PbrtParams::get_color(std::string_view name, PbrtSpectrumUs
       approximations.push_back(fmt::format("{} named spectrum \"{}\" as a grey", where(), p->strings[0]));
       return use == PbrtSpectrumUse::illuminant ? Vec3f(1.0f) : Vec3f(0.5f);
     }
-    const auto& v = p->numbers;
-    check_sampled_spectrum(*p);
+    const color::PiecewiseLinearSpectrum sampled = sampled_spectrum(*p);
     approximations.push_back(fmt::format("{} sampled spectrum as its sRGB colour", where()));
-    const auto f = [&](double nm) {
-      if (nm <= v.front()) return v[1];
-      if (nm >= v[v.size() - 2]) return v.back();
-      std::size_t i = 0;
-      while (v[i + 2] < nm) i += 2;
-      const double t = (nm - v[i]) / (v[i + 2] - v[i]);
-      return v[i + 1] + t * (v[i + 3] - v[i + 1]);
-    };
-    return spectrum_color(f, use);
+    return spectrum_color(sampled, use);
   }
   fail(*p, fmt::format("type '{}' is not a colour (rgb, spectrum, blackbody)", p->type));
 }
@@ -189,11 +180,16 @@ void PbrtParams::check_blackbody(const PbrtParam& p) const {
   if (p.numbers.size() != 1 || !(p.numbers[0] > 0.0) || p.numbers[0] > 1e6) fail(p, "expected a temperature in kelvin");
 }
 
-void PbrtParams::check_sampled_spectrum(const PbrtParam& p) const {
+color::PiecewiseLinearSpectrum PbrtParams::sampled_spectrum(const PbrtParam& p) const {
   const auto& v = p.numbers;
   if (v.size() < 4 || v.size() % 2 != 0) fail(p, "expected (wavelength, value) pairs");
-  for (std::size_t i = 0; i < v.size(); i += 2)
+  std::vector<double> nm, values;
+  for (std::size_t i = 0; i < v.size(); i += 2) {
     if ((i > 0 && v[i] <= v[i - 2]) || v[i + 1] < 0.0) fail(p, "wavelengths must increase and values be non-negative");
+    nm.push_back(v[i]);
+    values.push_back(v[i + 1]);
+  }
+  return color::PiecewiseLinearSpectrum(std::move(nm), std::move(values));
 }
 
 std::optional<color::PiecewiseLinearSpectrum> PbrtParams::get_spectrum(std::string_view name,
@@ -213,13 +209,7 @@ std::optional<color::PiecewiseLinearSpectrum> PbrtParams::get_spectrum(std::stri
     if (!light || p->strings.size() != 1 || !p->strings[0].starts_with(kPrefix)) return std::nullopt;
     return named_emission_spectrum(std::string_view(p->strings[0]).substr(kPrefix.size()));
   }
-  check_sampled_spectrum(*p);
-  std::vector<double> nm, values;
-  for (std::size_t i = 0; i < p->numbers.size(); i += 2) {
-    nm.push_back(p->numbers[i]);
-    values.push_back(p->numbers[i + 1]);
-  }
-  color::PiecewiseLinearSpectrum s(std::move(nm), std::move(values));
+  color::PiecewiseLinearSpectrum s = sampled_spectrum(*p);
   if (light ? !(color::spectrum_to_xyz(s).y > 0.0) : *std::max_element(s.values().begin(), s.values().end()) > 1.0)
     return std::nullopt;  // no visible light, or not a reflectance: get_color's colour stands
   return s;

@@ -54,7 +54,8 @@ class PbrtParams {
 
  private:
   void check_blackbody(const PbrtParam& p) const;
-  void check_sampled_spectrum(const PbrtParam& p) const;
+  // (λ, value) pairs, checked (an even count ≥ 4, λ increasing, values ≥ 0): fails at `p` otherwise.
+  color::PiecewiseLinearSpectrum sampled_spectrum(const PbrtParam& p) const;
 };
 
 // Reads parameters until the next token is not a quoted string.

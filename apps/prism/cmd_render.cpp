@@ -50,6 +50,7 @@ struct RenderOptions {
   double time_limit_seconds = 0.0;
   int width = 0, height = 0;  // 0: the scene's default
   std::string estimator = "mis";
+  std::string normal_mapping = "classic";
   std::string sampler = std::string(sampler_name(PathSettings{}.sampler));
   std::string mode = "spectral";
   int wavelengths = 4;
@@ -154,6 +155,7 @@ void write_outputs(const std::vector<std::filesystem::path>& outputs, const Rend
       meta.strings["prism:scene"] = scene_name;
       meta.strings["prism:transport"] = describe(settings.transport);
       meta.strings["prism:sampler"] = std::string(sampler_name(settings.path.sampler));
+      meta.strings["prism:normalMapping"] = o.normal_mapping;
       meta.ints["prism:spp"] = result.passes_done;
       meta.doubles["prism:renderSeconds"] = result.elapsed_seconds;
       // What `prism merge` needs to combine partial renders of one image.
@@ -181,6 +183,9 @@ int run_render(const RenderOptions& o) {
   settings.samples_per_pixel = o.spp;
   settings.path.max_depth = o.max_depth;
   settings.path.estimator = parse_estimator(o.estimator);
+  if (o.normal_mapping != "classic" && o.normal_mapping != "microfacet")
+    throw UsageError(fmt::format("unknown --normal-mapping '{}' (classic, microfacet)", o.normal_mapping));
+  settings.path.normal_mapping = o.normal_mapping == "microfacet" ? NormalMapping::microfacet : NormalMapping::classic;
   settings.path.sampler = parse_sampler_option(o.sampler);
   if (o.mode != "spectral" && o.mode != "rgb") throw UsageError(fmt::format("unknown --mode '{}' (spectral, rgb)", o.mode));
   settings.transport.kind = o.mode == "rgb" ? TransportKind::rgb : TransportKind::spectral;
@@ -348,6 +353,11 @@ void add_render_command(CLI::App& root, Action& action) {
   cmd->add_option("--estimator", options->estimator,
                   "Direct-light estimator: mis (NEE + BSDF sampling, power heuristic), nee (light sampling only), "
                   "bsdf (BSDF sampling only); all converge to the same image")
+      ->capture_default_str();
+  cmd->add_option("--normal-mapping", options->normal_mapping,
+                  "Normal and bump maps: classic (shade around the mapped normal, as glTF viewers do; loses light "
+                  "where it tilts) or microfacet (the mapped normal as a facet of a microsurface, Schuessler et al. "
+                  "2017: energy-conserving, a different look at grazing angles); transmitting materials stay classic")
       ->capture_default_str();
   cmd->add_option("--sampler", options->sampler,
                   "Random numbers of each path: independent (PCG32), sobol (padded Owen-scrambled Sobol', "

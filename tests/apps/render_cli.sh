@@ -39,6 +39,7 @@ expect_error 2 "unknown --aov ''" render cornell-box --aov albedo, "${o[@]}"
 expect_error 2 "lists 'depth' twice" render cornell-box --aov depth,normal,depth "${o[@]}"
 expect_error 2 "unknown --aov 'Z'" render cornell-box --aov Z "${o[@]}"
 expect_error 2 "unknown --sampler 'halton' (independent, sobol, zsobol)" render cornell-box --sampler halton "${o[@]}"
+expect_error 2 "unknown --normal-mapping 'bent' (classic, microfacet)" render cornell-box --normal-mapping bent "${o[@]}"
 expect_error 2 "" render cornell-box --no-such-option
 expect_error 2 "" frobnicate
 
@@ -80,6 +81,14 @@ for sampler in independent sobol zsobol; do
     >"$work/stdout" 2>"$work/stderr" || fail "--sampler $sampler failed: $(cat "$work/stderr")"
   grep -aq "$sampler" "$work/out/s.exr" || fail "--sampler $sampler: EXR lacks prism:sampler metadata"
 done
+# Either normal-mapping model renders, and the EXR says which one made it.
+for model in classic microfacet; do
+  rm -rf "$work/out"; mkdir -p "$work/out"
+  "$prism" render cornell-box --width 16 --height 16 --spp 2 --normal-mapping "$model" -o "$work/out/n.exr" \
+    >"$work/stdout" 2>"$work/stderr" || fail "--normal-mapping $model failed: $(cat "$work/stderr")"
+  grep -aq "prism:normalMapping" "$work/out/n.exr" && grep -aq "$model" "$work/out/n.exr" ||
+    fail "--normal-mapping $model: EXR lacks prism:normalMapping metadata"
+done
 
 # SIGINT/SIGTERM mid-render: exit 128+signal with both images holding the passes so far.
 for sig in INT TERM; do
@@ -108,7 +117,7 @@ expect_error 1 "bad.json" render cornell-box --camera-json "$work/bad.json" -o "
 
 # --help documents every option of render.
 "$prism" render --help >"$work/help" 2>&1 || fail "render --help exited non-zero"
-for opt in --output --spp --max-depth --seed --threads --time-limit --width --height --estimator --sampler --mode --wavelengths --wavelength-sampling --upsampling --working-space --camera-json --checkpoint --resume --sample-range --odt --ev100; do
+for opt in --output --spp --max-depth --seed --threads --time-limit --width --height --estimator --normal-mapping --sampler --mode --wavelengths --wavelength-sampling --upsampling --working-space --camera-json --checkpoint --resume --sample-range --odt --ev100; do
   grep -q -- "$opt" "$work/help" || fail "render --help does not document $opt"
 done
 "$prism" info >"$work/info" || fail "info failed"

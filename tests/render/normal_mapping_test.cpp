@@ -13,6 +13,7 @@
 
 #include "prism/render/renderer.h"
 #include "prism/scene/loaders/mesh_tangents.h"
+#include "support/film_statistics.h"
 #include "support/test_scenes.h"
 
 namespace prism {
@@ -21,6 +22,17 @@ namespace {
 constexpr float kDegree = std::numbers::pi_v<float> / 180.0f;
 
 Vec3f encode(const Vec3f& n) { return n * 0.5f + Vec3f(0.5f); }  // a normal map's texel
+
+// A normal map of one texel holding the unit normal `n` (tangent space).
+TextureImage one_texel_normal_map(const Vec3f& n) {
+  TextureImage t;
+  t.name = "normal-map";
+  t.width = t.height = 1;
+  t.channels = 3;
+  const Vec3f rgb = encode(n / length(n));
+  t.texels = {rgb.x, rgb.y, rgb.z};
+  return t;
+}
 
 void expect_orthonormal(const Frame& f) {
   EXPECT_NEAR(length(f.s), 1.0f, 1e-6f);
@@ -139,13 +151,7 @@ double floor_red(const Vec3f& toward_light, const Vec3f* map_normal, bool mirror
                  bool per_vertex_tangents = false) {
   Scene scene = test::make_sunlit_uv_floor(toward_light, mirrored_u);
   if (map_normal) {
-    TextureImage t;
-    t.name = "normal-map";
-    t.width = t.height = 1;
-    t.channels = 3;
-    const Vec3f rgb = encode(*map_normal / length(*map_normal));
-    t.texels = {rgb.x, rgb.y, rgb.z};
-    scene.textures.push_back(t);
+    scene.textures.push_back(one_texel_normal_map(*map_normal));
     scene.materials[0].normal_texture = 0;
   }
   if (per_vertex_tangents) loaders::generate_tangents(scene.meshes[0]);
@@ -196,12 +202,7 @@ TEST(NormalMapping, MirroredUvsMirrorTheMapsXOnly) {
 
 TEST(NormalMapping, TheNormalAovShowsTheMappedNormal) {
   Scene scene = test::make_sunlit_uv_floor(Vec3f(0, 1, 0));
-  TextureImage t;
-  t.width = t.height = 1;
-  t.channels = 3;
-  const Vec3f rgb = encode(Vec3f(0.6f, 0.0f, 0.8f));
-  t.texels = {rgb.x, rgb.y, rgb.z};
-  scene.textures.push_back(t);
+  scene.textures.push_back(one_texel_normal_map(Vec3f(0.6f, 0.0f, 0.8f)));
   scene.materials[0].normal_texture = 0;
   RenderSettings settings;
   settings.width = settings.height = 4;
@@ -213,6 +214,46 @@ TEST(NormalMapping, TheNormalAovShowsTheMappedNormal) {
   EXPECT_NEAR(n.x, 0.6, 1e-5);
   EXPECT_NEAR(n.y, 0.8, 1e-5);
   EXPECT_NEAR(n.z, 0.0, 1e-5);
+}
+
+// The white furnace at render level: a white (ρ = 1) floor whose map tilts its normal by
+// 50°, under a uniform sky of luminance 1. Whatever the floor's relief, an albedo-1 surface
+// under a uniform sky sends back the sky's radiance: 1. Microfacet normal mapping does
+// (the walk on the microsurface loses nothing); classic normal mapping keeps only the
+// directions above both the shading and the geometric surface, ∫ cos θs / π over them =
+// (1 + cos 50°)/2 = 0.821. Both within 5σ of the render's own noise (MIS of the sky's
+// light samples and the BSDF's; with microfacet mapping also light or BSDF sampling alone,
+// which the walks longer than one facet event must complement in the same way).
+test::BlockEstimate furnace_floor(NormalMapping model, LightEstimator estimator = LightEstimator::mis) {
+  Scene scene = test::make_sunlit_uv_floor(Vec3f(0, 1, 0));
+  scene.lights.clear();
+  Light sky;
+  sky.type = LightType::environment;
+  sky.intensity = 1.0f;
+  scene.lights.push_back(sky);
+  scene.materials[0].base_color = Vec3f(1.0f);
+  scene.textures.push_back(one_texel_normal_map(Vec3f(std::sin(50.0f * kDegree), 0.0f, std::cos(50.0f * kDegree))));
+  scene.materials[0].normal_texture = 0;
+  RenderSettings settings;
+  settings.width = settings.height = 8;
+  settings.samples_per_pixel = 256;
+  settings.path.max_depth = 1;  // the floor sees only the sky
+  settings.path.normal_mapping = model;
+  settings.path.estimator = estimator;
+  settings.transport.kind = TransportKind::rgb;
+  return test::block_estimate(render(scene, settings, RenderHooks{}).film, 0, 0, 8, 8);
+}
+
+TEST(NormalMapping, MicrofacetNormalMappingPassesTheWhiteFurnace) {
+  for (const LightEstimator estimator : {LightEstimator::mis, LightEstimator::nee_only, LightEstimator::bsdf_only}) {
+    const test::BlockEstimate microfacet = furnace_floor(NormalMapping::microfacet, estimator);
+    // BSDF sampling alone gives every sample exactly the sky's 1 (each walk's weight is 1):
+    // no noise, only float rounding (≈ 10⁻⁸), hence the 10⁻⁶ floor.
+    EXPECT_NEAR(microfacet.mean.y, 1.0, 5.0 * std::sqrt(microfacet.variance.y) + 1e-6) << static_cast<int>(estimator);
+  }
+  const test::BlockEstimate classic = furnace_floor(NormalMapping::classic);
+  EXPECT_NEAR(classic.mean.y, (1.0 + std::cos(50.0 * std::numbers::pi / 180.0)) / 2.0,
+              5.0 * std::sqrt(classic.variance.y));
 }
 
 }  // namespace

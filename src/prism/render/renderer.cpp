@@ -111,6 +111,7 @@ std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settin
     h.value(settings.path.light.triangle);
     h.value(settings.path.light.reuse_selection_sample);
   }
+  if (settings.path.normal_mapping != NormalMapping::classic) h.value(settings.path.normal_mapping);  // as above
   h.value(settings.transport.kind);
   h.value(settings.transport.wavelengths);
   h.value(settings.transport.wavelength_strategy);

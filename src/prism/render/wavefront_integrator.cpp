@@ -165,6 +165,22 @@ void WavefrontIntegrator<Mode>::apply_bump_map(const Material& m, SurfaceInterac
 }
 
 template <class Mode>
+std::optional<bsdf::NormalMapMicrosurface> WavefrontIntegrator<Mode>::apply_maps(const Material& m,
+                                                                               SurfaceInteraction& si,
+                                                                               float cone_width, const Ray& ray) const {
+  const Frame unmapped = si.shading;
+  if (m.normal_texture >= 0) apply_normal_map(m, si, cone_width, ray);
+  if (m.bump_texture >= 0) apply_bump_map(m, si, cone_width, ray);
+  // Microfacet normal mapping: the mapped frame becomes facet p of a microsurface around
+  // the unmapped normal, and the vertex is shaded in the unmapped frame. Dielectrics (the
+  // only materials whose BSDFs transmit, material_bsdf.h) stay classic.
+  if (settings_.normal_mapping != NormalMapping::microfacet || m.type == MaterialType::dielectric) return std::nullopt;
+  auto microsurface = bsdf::NormalMapMicrosurface::between(unmapped, si.shading);
+  if (microsurface) si.shading = unmapped;
+  return microsurface;
+}
+
+template <class Mode>
 MaterialPoint WavefrontIntegrator<Mode>::material_point(const Material& m, const SurfaceInteraction& si,
                                                         float cone_width, const Ray& ray) const {
   MaterialPoint point = untextured_point(m);
@@ -191,6 +207,12 @@ Spectrum<Mode> WavefrontIntegrator<Mode>::textured_emitted_radiance(std::uint32_
   // texels): RGB modes convert to the working space, spectral modes upsample with the
   // E-relative scaling, so a grey texel gives the same spectrum as the untextured emitter.
   return colors_.rgb_radiance(Vec3f(textured_emission_[material] * texel), wl);
+}
+
+template <class Mode>
+Vec2f WavefrontIntegrator<Mode>::facet_numbers(const Paths& p, std::uint32_t slot) const {
+  const PixelSample s{seed_, p.first_pixel + slot, static_cast<std::uint32_t>(width_), p.sample_index[slot]};
+  return sample_2d(settings_.sampler, s, kFirstFacetDimension + 2 * static_cast<std::uint32_t>(p.depth[slot]));
 }
 
 template <class Mode>
@@ -243,8 +265,9 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   SurfaceInteraction si = surface_interaction(scene_, p.hit[slot], ray);
   const Material& material = scene_.materials[si.material];
   p.cone_width[slot] += p.cone_spread[slot] * p.hit[slot].t;  // the ray cone's width at this hit
-  if (material.normal_texture >= 0) apply_normal_map(material, si, p.cone_width[slot], ray);
-  if (material.bump_texture >= 0) apply_bump_map(material, si, p.cone_width[slot], ray);
+  std::optional<bsdf::NormalMapMicrosurface> microsurface;
+  if (material.normal_texture >= 0 || material.bump_texture >= 0)
+    microsurface = apply_maps(material, si, p.cone_width[slot], ray);
   if (material.is_emissive() && (si.front_face || material.emission.two_sided)) {
     float w = 1.0f;
     if (!p.prev_specular[slot] && use_nee) {
@@ -299,11 +322,14 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
       const Vec3f wi_local = si.shading.to_local(ls->wi);
       // The geometric and the shading side must agree, or light leaks through edges.
       if ((dot(ls->wi, si.geometric_normal) > 0.0f) == (wi_local.z > 0.0f) && ls->pdf > 0.0f) {
-        const Spectrum<Mode> f = bsdf.eval(wo_local, wi_local);
+        // (the microsurface_* functions are found by argument-dependent lookup, in prism::bsdf)
+        const Spectrum<Mode> f =
+            microsurface ? microsurface_eval(bsdf, *microsurface, wo_local, wi_local) : bsdf.eval(wo_local, wi_local);
         if (!f.is_black()) {
           float w = 1.0f;
           if (!ls->is_delta && settings_.estimator == LightEstimator::mis)
-            w = power_heuristic(ls->pdf, bsdf.pdf(wo_local, wi_local));
+            w = power_heuristic(ls->pdf, microsurface ? microsurface_pdf(bsdf, *microsurface, wo_local, wi_local)
+                                                      : bsdf.pdf(wo_local, wi_local));
           const Vec3f origin = offset_ray_origin(si.position, si.geometric_normal, ls->wi);
           float t_max;
           Vec3f dir = ls->wi;
@@ -327,7 +353,9 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     }
   }
 
-  const auto bs = bsdf.sample(wo_local, u.lobe, u.direction);
+  const auto bs = microsurface ? microsurface_sample(bsdf, *microsurface, wo_local, u.lobe, u.direction,
+                                                    facet_numbers(p, slot))
+                              : bsdf.sample(wo_local, u.lobe, u.direction);
   if (!bs || bs->pdf <= 0.0f || bs->f.is_black()) {
     p.finished[slot] = 1;
     return;

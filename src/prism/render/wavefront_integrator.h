@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "prism/accel/embree_accel.h"
+#include "prism/bsdf/microfacet_normal_mapping.h"
 #include "prism/core/mat3.h"
 #include "prism/render/aov.h"
 #include "prism/render/color_context.h"
@@ -43,6 +44,13 @@ struct SurfaceInteraction;
 // lowest variance. nee_only and bsdf_only exist to test that claim.
 enum class LightEstimator { mis, nee_only, bsdf_only };
 
+// What a normal or bump map does to a reflecting surface. classic: the BSDF is evaluated
+// around the mapped normal (what glTF viewers and most renderers do; not energy
+// conserving). microfacet: the mapped normal is a facet of a two-facet microsurface whose
+// mean normal is the unperturbed one (Schüßler et al. 2017, bsdf/microfacet_normal_mapping.h):
+// no light is lost to directions below the surface. Transmitting materials stay classic.
+enum class NormalMapping { classic, microfacet };
+
 struct PathSettings {
   int max_depth = 8;               // scattering events; 1 = direct lighting only
   int russian_roulette_depth = 3;  // roulette starts after this many bounces
@@ -54,6 +62,7 @@ struct PathSettings {
   // How next-event estimation picks an emitter and a point on it (scene/light_sampler.h,
   // scene/triangle_light_sampling.h); the defaults by measurement (BENCHMARKS.md "Peer").
   LightSamplerOptions light;
+  NormalMapping normal_mapping = NormalMapping::classic;
 };
 
 // Pixels per tile: a tile's queue is run by one thread from its first step to its last, in
@@ -117,7 +126,15 @@ class WavefrontIntegrator {
   float level_of_detail_at_hit(int texture, const SurfaceInteraction& si, float cone_width, const Ray& ray) const;
   bool has_texture(int texture, std::uint32_t mesh) const;
   // Replaces si.shading by the material's normal-mapped frame, where it has a normal map.
+  // Applies the material's normal and bump maps to si.shading. With microfacet normal
+  // mapping (and a material that does not transmit), returns the microsurface of the
+  // mapped frame instead and leaves si.shading unmapped.
+  [[gnu::noinline]] std::optional<bsdf::NormalMapMicrosurface> apply_maps(const Material& material,
+                                                                          SurfaceInteraction& si, float cone_width,
+                                                                          const Ray& ray) const;
   void apply_normal_map(const Material& material, SurfaceInteraction& si, float cone_width, const Ray& ray) const;
+  // Microfacet normal mapping's two numbers for the slot's current bounce (pixel_sampler.h).
+  Vec2f facet_numbers(const Paths& paths, std::uint32_t slot) const;
   // Replaces si.shading by the material's bump-mapped frame, where it has a bump map.
   void apply_bump_map(const Material& material, SurfaceInteraction& si, float cone_width, const Ray& ray) const;
   // Roughness and metallic after the metallic-roughness texture (G, B; linear).

@@ -10,6 +10,9 @@
 //   then per bounce (depth d ≥ 0) a block of 7 at 5 + 7·d: light select, light 2D, lobe,
 //   direction 2D, Russian roulette. A block is drawn whole whether or not a branch uses
 //   all of it.
+//   Microfacet normal mapping's two facet choices at depth d are the 2D request at
+//   dimension 2^31 + 2d (sample_2d), outside the blocks, so that turning it on leaves every
+//   other number as it was.
 //
 // Samplers:
 //   independent: a PCG32 stream (O'Neill 2014) per (seed, pixel, sample, block).
@@ -45,6 +48,7 @@ inline constexpr std::uint32_t kLensDimension = 2;
 inline constexpr std::uint32_t kWavelengthDimension = 4;
 inline constexpr std::uint32_t kFirstBounceDimension = 5;
 inline constexpr std::uint32_t kDimensionsPerBounce = 7;
+inline constexpr std::uint32_t kFirstFacetDimension = 0x80000000u;
 
 struct PixelSample {
   std::uint64_t seed = 0;
@@ -85,8 +89,8 @@ CameraSamples camera_samples(SamplerKind kind, const PixelSample& sample, bool l
 BounceSamples bounce_samples(SamplerKind kind, const PixelSample& sample, int depth,
                              unsigned needs = kNeedAllBounceSamples);
 
-// Single requests, for tests and tools: dimension `dimension` (and `dimension + 1` for 2D)
-// of a sample, as laid out above for the low-discrepancy samplers.
+// Single requests (tests, tools, and the numbers outside the blocks): dimension
+// `dimension` (and `dimension + 1` for 2D) of a sample, as laid out above.
 float sample_1d(SamplerKind kind, const PixelSample& sample, std::uint32_t dimension);
 Vec2f sample_2d(SamplerKind kind, const PixelSample& sample, std::uint32_t dimension);
 

@@ -109,6 +109,11 @@ bool render_settings_panel(RenderControls& c) {
     c.settings.path.sampler = static_cast<SamplerKind>(sampler);
     changed = true;
   }
+  int normal_mapping = static_cast<int>(c.settings.path.normal_mapping);  // NormalMapping's order
+  if (combo("normal maps", normal_mapping, {"classic", "microfacet"})) {
+    c.settings.path.normal_mapping = static_cast<NormalMapping>(normal_mapping);
+    changed = true;
+  }
   changed |= ImGui::SliderInt("max depth", &c.settings.path.max_depth, 1, 64);
   // The integrator's pass is a group of whole samples per pixel; bounces per pass (the
   // seed's #Bounce/Frame) also shows the film every N bounces inside a pass (0: off).

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "prism/core/error.h"
+#include "prism/scene/spectrum_table_checks.h"
 
 namespace prism {
 
@@ -36,7 +37,7 @@ void validate_scene(const Scene& scene) {
     if (!l.spectrum) continue;
     if (l.type == LightType::environment)
       throw SceneError(fmt::format("light '{}': an environment takes a colour, not a spectrum", l.name));
-    validate_spectrum(*l.spectrum, fmt::format("light '{}'", l.name), 0.0);
+    validate_spectrum(*l.spectrum, fmt::format("light '{}'", l.name), kNoSpectrumMaximum);
   }
 }
 
@@ -45,19 +46,14 @@ void validate_material(const Material& m) {
       m.emission.luminance_nits < 0.0f)
     throw SceneError(fmt::format("material '{}' has non-finite values", m.name));
   if (m.base_color_spectrum) validate_spectrum(*m.base_color_spectrum, fmt::format("material '{}'", m.name), 1.0);
-  if (m.emission.spectrum) validate_spectrum(*m.emission.spectrum, fmt::format("material '{}'", m.name), 0.0);
+  if (m.emission.spectrum)
+    validate_spectrum(*m.emission.spectrum, fmt::format("material '{}'", m.name), kNoSpectrumMaximum);
 }
 
 
 void validate_spectrum(const color::PiecewiseLinearSpectrum& s, std::string_view owner, double max_value) {
-  const auto values = s.values();
-  if (values.empty()) throw SceneError(fmt::format("{}: empty spectrum", owner));
-  for (const double v : values)
-    if (!std::isfinite(v) || v < 0.0 || (max_value > 0.0 && v > max_value))
-      throw SceneError(max_value > 0.0 ? fmt::format("{}: spectrum value {} outside [0, {}]", owner, v, max_value)
-                                       : fmt::format("{}: spectrum value {} negative or not finite", owner, v));
-  for (const double nm : s.wavelengths_nm())
-    if (!std::isfinite(nm)) throw SceneError(fmt::format("{}: non-finite wavelength in spectrum", owner));
+  const std::string problem = spectrum_table_problem(s.wavelengths_nm(), s.values(), max_value);
+  if (!problem.empty()) throw SceneError(fmt::format("{}: {}", owner, problem));
 }
 
 }  // namespace prism

@@ -73,8 +73,8 @@ struct Scene {
 void validate_scene(const Scene& scene);
 // Throws SceneError when a material's colours or emission are not finite (or negative).
 void validate_material(const Material& material);
-// A spectrum given as data: non-empty, finite, values in [0, max_value] (0: no upper bound).
-// SceneError naming `owner` otherwise.
+// A spectrum given as data: the rules of spectrum_table_checks.h, `max_value` 1 for
+// reflectances and kNoSpectrumMaximum for emitters. SceneError naming `owner` otherwise.
 void validate_spectrum(const color::PiecewiseLinearSpectrum& spectrum, std::string_view owner, double max_value);
 
 }  // namespace prism

@@ -300,6 +300,19 @@ AttributeBegin
   EXPECT_NE(warnings.find("6500"), std::string::npos) << warnings;
 }
 
+// A sampled spectrum breaking the scene-data rules (spectrum_table_checks.h) is an error at
+// its line, with the same message as in a JSON scene.
+TEST(PbrtLoader, MalformedSampledSpectraAreErrorsAtTheirLine) {
+  const std::string decreasing =
+      parse_error("WorldBegin\nMaterial \"diffuse\" \"spectrum reflectance\" [500 0.1 400 0.9]\n");
+  EXPECT_NE(decreasing.find("wavelengths must increase: 400 nm follows 500 nm"), std::string::npos) << decreasing;
+  EXPECT_NE(decreasing.find("test.pbrt:2: parameter 'reflectance'"), std::string::npos) << decreasing;
+  const std::string micrometres = parse_error("WorldBegin\nLightSource \"point\" \"spectrum I\" [0.4 1 0.7 1]\n");
+  EXPECT_NE(micrometres.find("wavelength 0.4 nm is outside [100, 3000] nm"), std::string::npos) << micrometres;
+  const std::string negative = parse_error("WorldBegin\nLightSource \"point\" \"spectrum I\" [400 1 700 -1]\n");
+  EXPECT_NE(negative.find("negative value -1 at 700 nm"), std::string::npos) << negative;
+}
+
 TEST(PbrtLoader, ShapesSphereBilinearAndPly) {
   test::ScratchFolder dir;
   dir.write("quad.ply",

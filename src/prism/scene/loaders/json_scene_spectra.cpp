@@ -12,29 +12,16 @@
 #include "prism/scene/loaders/json_scene_reader.h"
 #include "prism/scene/loaders/spectrum_csv.h"
 #include "prism/scene/spectral_inputs.h"
+#include "prism/scene/spectrum_table_checks.h"
 
 namespace prism::loaders {
 namespace {
 
-// Wavelengths a scene may tabulate: past the visible range on both sides (UV and IR data
-// often come with it), but nothing that is clearly not in nanometres.
-constexpr double kMinWavelengthNm = 100.0, kMaxWavelengthNm = 3000.0;
-constexpr std::size_t kMaxPoints = 100000;
-
 color::PiecewiseLinearSpectrum checked_spectrum(std::vector<double> nm, std::vector<double> values, SpectrumUse use,
                                                 const std::function<void(std::string_view)>& fail) {
-  if (nm.size() < 2) fail("a tabulated spectrum needs at least 2 points");
-  if (nm.size() > kMaxPoints) fail(fmt::format("more than {} points", kMaxPoints));
-  for (std::size_t i = 0; i < nm.size(); ++i) {
-    if (!(nm[i] >= kMinWavelengthNm && nm[i] <= kMaxWavelengthNm))
-      fail(fmt::format("wavelength {} nm is outside [{}, {}] nm", nm[i], kMinWavelengthNm, kMaxWavelengthNm));
-    if (i > 0 && !(nm[i] > nm[i - 1]))
-      fail(fmt::format("wavelengths must increase: {} nm follows {} nm", nm[i], nm[i - 1]));
-    if (!(values[i] >= 0.0)) fail(fmt::format("negative value {} at {} nm", values[i], nm[i]));
-    if (use == SpectrumUse::reflectance && values[i] > 1.0)
-      fail(fmt::format("reflectance {} at {} nm is above 1 (a surface cannot reflect more than it receives)",
-                       values[i], nm[i]));
-  }
+  const std::string problem =
+      spectrum_table_problem(nm, values, use == SpectrumUse::reflectance ? 1.0 : kNoSpectrumMaximum);
+  if (!problem.empty()) fail(problem);
   return color::PiecewiseLinearSpectrum(std::move(nm), std::move(values));
 }
 
@@ -74,12 +61,9 @@ color::PiecewiseLinearSpectrum JsonSceneReader::read_spectrum(const JsonValue& v
       spectrum = checked_spectrum(std::move(data.wavelengths_nm), std::move(data.values), use, fail_in_file);
     } else {
       const JsonValue nm_value = value["wavelengths_nm"], values_value = value["values"];
-      const auto nm_elements = nm_value.elements(kMaxPoints), value_elements = values_value.elements(kMaxPoints);
-      if (nm_elements.size() != value_elements.size())
-        value.fail(fmt::format("{} wavelengths but {} values", nm_elements.size(), value_elements.size()));
       std::vector<double> nm, values;
-      for (const JsonValue& e : nm_elements) nm.push_back(e.as_double());
-      for (const JsonValue& e : value_elements) values.push_back(e.as_double());
+      for (const JsonValue& e : nm_value.elements(kMaxSpectrumPoints)) nm.push_back(e.as_double());
+      for (const JsonValue& e : values_value.elements(kMaxSpectrumPoints)) values.push_back(e.as_double());
       spectrum = checked_spectrum(std::move(nm), std::move(values), use, fail);
     }
   }

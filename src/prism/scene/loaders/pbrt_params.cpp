@@ -12,6 +12,7 @@
 #include "prism/color/spectrum.h"
 #include "prism/core/error.h"
 #include "prism/scene/spectral_inputs.h"
+#include "prism/scene/spectrum_table_checks.h"
 
 namespace prism::loaders {
 namespace {
@@ -185,10 +186,12 @@ color::PiecewiseLinearSpectrum PbrtParams::sampled_spectrum(const PbrtParam& p) 
   if (v.size() < 4 || v.size() % 2 != 0) fail(p, "expected (wavelength, value) pairs");
   std::vector<double> nm, values;
   for (std::size_t i = 0; i < v.size(); i += 2) {
-    if ((i > 0 && v[i] <= v[i - 2]) || v[i + 1] < 0.0) fail(p, "wavelengths must increase and values be non-negative");
     nm.push_back(v[i]);
     values.push_back(v[i + 1]);
   }
+  // Reflectances above 1 are not an error here: get_spectrum falls back to the colour.
+  const std::string problem = spectrum_table_problem(nm, values, kNoSpectrumMaximum);
+  if (!problem.empty()) fail(p, problem);
   return color::PiecewiseLinearSpectrum(std::move(nm), std::move(values));
 }
 

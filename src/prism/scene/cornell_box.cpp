@@ -112,14 +112,10 @@ Scene make_cornell_box_measured() {
   for (Material& m : scene.materials) {
     const int c = m.name == "white" ? 1 : m.name == "green" ? 2 : m.name == "red" ? 3 : 0;
     if (c == 0) continue;
-    m.base_color_spectrum = column(walls, c);
-    m.base_color = reflectance_spectrum_srgb(*m.base_color_spectrum);
+    set_base_color_spectrum(m, column(walls, c));
   }
   for (Material& m : scene.materials)
-    if (m.is_emissive()) {
-      m.emission.spectrum = column(color::data::cornell_box_light(), 1);
-      m.emission.color = emission_spectrum_srgb(*m.emission.spectrum);
-    }
+    if (m.is_emissive()) set_emission_spectrum(m.emission, column(color::data::cornell_box_light(), 1));
   return scene;
 }
 

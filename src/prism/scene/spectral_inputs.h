@@ -8,6 +8,7 @@
 // Emission::color: previews, light-power estimates, exporters to RGB-only formats).
 #include <optional>
 #include <string_view>
+#include <utility>
 
 #include "prism/color/spectrum.h"
 #include "prism/core/vec.h"
@@ -28,5 +29,19 @@ color::PiecewiseLinearSpectrum blackbody_emission_spectrum(double temperature_k)
 Vec3f emission_spectrum_srgb(const color::PiecewiseLinearSpectrum& spd);
 // A reflectance's colour under D65 as linear Rec.709, clipped to [0, 1].
 Vec3f reflectance_spectrum_srgb(const color::PiecewiseLinearSpectrum& reflectance);
+
+// Gives an emitter (Emission, Light, or a loader's record with `color` and `spectrum`) its
+// spectrum, and its colour the spectrum's Rec.709 approximation.
+template <class Emitter>
+void set_emission_spectrum(Emitter& emitter, color::PiecewiseLinearSpectrum spd) {
+  emitter.color = emission_spectrum_srgb(spd);
+  emitter.spectrum = std::move(spd);
+}
+// The same for a material's measured reflectance and its base colour.
+template <class Surface>
+void set_base_color_spectrum(Surface& material, color::PiecewiseLinearSpectrum reflectance) {
+  material.base_color = reflectance_spectrum_srgb(reflectance);
+  material.base_color_spectrum = std::move(reflectance);
+}
 
 }  // namespace prism

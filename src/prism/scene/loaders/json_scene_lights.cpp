@@ -63,8 +63,7 @@ void JsonSceneReader::read_light(const JsonValue& value) {
   if (auto s = value.find("color_space")) light.color_space = read_color_space(*s);
   if (auto s = value.find("spectrum")) {
     if (value.has("color") || value.has("color_space")) value.fail("give either 'color' or 'spectrum', not both");
-    light.spectrum = read_spectrum(*s, SpectrumUse::emission);
-    light.color = emission_spectrum_srgb(*light.spectrum);
+    set_emission_spectrum(light, read_spectrum(*s, SpectrumUse::emission));
   }
   if (type == LightType::directional) {
     value.expect_keys({"type", "name", "color", "color_space", "spectrum", "direction", "illuminance_lux",

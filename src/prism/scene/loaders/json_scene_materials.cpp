@@ -68,8 +68,7 @@ void read_emission(JsonSceneReader& reader, Material& m, std::uint32_t index, co
   if (auto s = value.find("spectrum")) {
     if (value.has("color") || value.has("color_space")) value.fail("give either 'color' or 'spectrum', not both");
     if (value.has("texture")) value.fail("an emission texture multiplies a colour: it cannot go with 'spectrum'");
-    e.spectrum = reader.read_spectrum(*s, SpectrumUse::emission);
-    e.color = emission_spectrum_srgb(*e.spectrum);
+    set_emission_spectrum(e, reader.read_spectrum(*s, SpectrumUse::emission));
   }
   e.two_sided = value.get_bool("two_sided", false);
   if (value.has("luminance_nits") == value.has("power_lm"))
@@ -133,8 +132,7 @@ void JsonSceneReader::read_material(const JsonValue& value) {
     if (value.has("base_color")) value.fail("give either 'base_color' or 'base_color_spectrum', not both");
     if (value.has("base_color_texture"))
       value.fail("a base colour texture multiplies a colour: it cannot go with 'base_color_spectrum'");
-    m.base_color_spectrum = read_spectrum(*s, SpectrumUse::reflectance);
-    m.base_color = reflectance_spectrum_srgb(*m.base_color_spectrum);
+    set_base_color_spectrum(m, read_spectrum(*s, SpectrumUse::reflectance));
   }
   m.roughness = value.get_float("roughness", m.roughness, 0.0f, 1.0f);
   m.anisotropy = value.get_float("anisotropy", m.anisotropy, -1.0f, 1.0f);

@@ -35,9 +35,9 @@ LightColor light_color(const PbrtParams& p, std::string_view name, std::vector<s
                        bool with_spectrum = true) {
   LightColor c;
   if (with_spectrum) {
-    if ((c.spectrum = p.get_spectrum(name, PbrtSpectrumUse::illuminant))) {
+    if (auto spectrum = p.get_spectrum(name, PbrtSpectrumUse::illuminant)) {
       // Normalised to unit luminance, as pbrt-v4 normalises light spectra: `scale` is the luminance.
-      c.color = emission_spectrum_srgb(*c.spectrum);
+      set_emission_spectrum(c, std::move(*spectrum));
       c.luminance = static_cast<float>(light_scale(p));
       return c;
     }

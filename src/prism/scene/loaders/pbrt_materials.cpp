@@ -72,8 +72,8 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
   }
   if (effective == "diffuse") {
     m.type = MaterialType::diffuse;
-    if ((m.base_color_spectrum = p.get_spectrum("reflectance", PbrtSpectrumUse::reflectance)))
-      m.base_color = reflectance_spectrum_srgb(*m.base_color_spectrum);  // measured, rendered as data
+    if (auto measured = p.get_spectrum("reflectance", PbrtSpectrumUse::reflectance))
+      set_base_color_spectrum(m, std::move(*measured));  // rendered as data
     else
       m.base_color = reflectance(p, "reflectance", m.base_color_texture).value_or(Vec3f(0.5f));
     if (type != "diffuse")

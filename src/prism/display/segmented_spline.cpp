@@ -5,18 +5,10 @@
 #include <cmath>
 
 #include "prism/display/aces_common.h"
+#include "prism/display/log_segmented_spline.h"
 
 namespace prism::display {
 namespace {
-
-// Evaluates one quadratic B-spline span: cf are three consecutive control values and t
-// the position in the span, with the CTL's basis M = {{½,−1,½},{−1,1,½},{½,0,0}}.
-double bspline_span(double c0, double c1, double c2, double t) {
-  const double a = 0.5 * c0 - c1 + 0.5 * c2;
-  const double b = -c0 + c1;
-  const double c = 0.5 * c0 + 0.5 * c1;
-  return (a * t + b) * t + c;
-}
 
 template <std::size_t N>
 struct SplineParams {
@@ -28,23 +20,9 @@ struct SplineParams {
 // The shared evaluation of SegmentedSplineParams_c5/_c9: N − 2 knots per half.
 template <std::size_t N>
 double evaluate(const SplineParams<N>& p, double logx) {
-  constexpr int kKnots = static_cast<int>(N) - 2;
-  const double lmin = std::log10(p.min_x), lmid = std::log10(p.mid_x), lmax = std::log10(p.max_x);
-  double logy;
-  if (logx <= lmin) {
-    logy = logx * p.slope_low + (std::log10(p.min_y) - p.slope_low * lmin);
-  } else if (logx < lmid) {
-    const double knot = (kKnots - 1) * (logx - lmin) / (lmid - lmin);
-    const int j = static_cast<int>(knot);
-    logy = bspline_span(p.coefs_low[j], p.coefs_low[j + 1], p.coefs_low[j + 2], knot - j);
-  } else if (logx < lmax) {
-    const double knot = (kKnots - 1) * (logx - lmid) / (lmax - lmid);
-    const int j = static_cast<int>(knot);
-    logy = bspline_span(p.coefs_high[j], p.coefs_high[j + 1], p.coefs_high[j + 2], knot - j);
-  } else {
-    logy = logx * p.slope_high + (std::log10(p.max_y) - p.slope_high * lmax);
-  }
-  return std::pow(10.0, logy);
+  const LogSegmentedSpline s{p.min_x, p.min_y, p.slope_low, p.mid_x, p.max_x, p.max_y, p.slope_high,
+                             p.coefs_low, p.coefs_high, static_cast<int>(N) - 2};
+  return std::pow(10.0, evaluate_log10(s, logx));
 }
 
 // RRT_PARAMS of ACESlib.Tonescales.ctl (published Academy data).

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "prism/display/aces_common.h"
+#include "prism/display/log_segmented_spline.h"
 
 namespace prism::display {
 namespace {
@@ -33,17 +34,6 @@ double aces_max(double max_nits) {
 // The value at log10(p.x) ± half a knot on the tangent line through point p.
 double tangent_at(const TsPoint& p, double offset) {
   return p.slope * (std::log10(p.x) + offset) + (std::log10(p.y) - p.slope * std::log10(p.x));
-}
-
-double bspline_span(double c0, double c1, double c2, double t) {
-  return ((0.5 * c0 - c1 + 0.5 * c2) * t + (c1 - c0)) * t + 0.5 * (c0 + c1);
-}
-
-// The quadratic a·t² + b·t + c of one span (CTL: mult_f3_f33(cf, M1)).
-void span_polynomial(double c0, double c1, double c2, double& a, double& b, double& c) {
-  a = 0.5 * c0 - c1 + 0.5 * c2;
-  b = c1 - c0;
-  c = 0.5 * (c0 + c1);
 }
 
 double shift_stops(double x, double exp_shift) { return std::pow(2.0, std::log2(x) - exp_shift); }
@@ -91,24 +81,9 @@ TsParams make_output_ts_params(double y_min_nits, double y_mid_nits, double y_ma
 }
 
 double ssts(double x, const TsParams& p) {
-  constexpr int kKnots = 4;
-  const double logx = std::log10(std::max(x, kHalfMin));
-  const double lmin = std::log10(p.min.x), lmid = std::log10(p.mid.x), lmax = std::log10(p.max.x);
-  double logy;
-  if (logx <= lmin) {
-    logy = logx * p.min.slope + (std::log10(p.min.y) - p.min.slope * lmin);
-  } else if (logx < lmid) {
-    const double knot = (kKnots - 1) * (logx - lmin) / (lmid - lmin);
-    const int j = static_cast<int>(knot);
-    logy = bspline_span(p.coefs_low[j], p.coefs_low[j + 1], p.coefs_low[j + 2], knot - j);
-  } else if (logx < lmax) {
-    const double knot = (kKnots - 1) * (logx - lmid) / (lmax - lmid);
-    const int j = static_cast<int>(knot);
-    logy = bspline_span(p.coefs_high[j], p.coefs_high[j + 1], p.coefs_high[j + 2], knot - j);
-  } else {
-    logy = logx * p.max.slope + (std::log10(p.max.y) - p.max.slope * lmax);
-  }
-  return std::pow(10.0, logy);
+  const LogSegmentedSpline s{p.min.x, p.min.y, p.min.slope, p.mid.x, p.max.x, p.max.y, p.max.slope,
+                             p.coefs_low, p.coefs_high, 4};
+  return std::pow(10.0, evaluate_log10(s, std::log10(std::max(x, kHalfMin))));
 }
 
 double inv_ssts(double y_nits, const TsParams& p) {
@@ -121,7 +96,7 @@ double inv_ssts(double y_nits, const TsParams& p) {
     for (int i = 0; i < 2; ++i)
       if (logy <= 0.5 * (cf[i + 1] + cf[i + 2])) { j = i; break; }
     double a, b, c;
-    span_polynomial(cf[j], cf[j + 1], cf[j + 2], a, b, c);
+    bspline_span_polynomial(cf[j], cf[j + 1], cf[j + 2], a, b, c);
     c -= logy;
     const double d = std::sqrt(b * b - 4.0 * a * c);
     const double t = (2.0 * c) / (-d - b);

@@ -268,6 +268,9 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   std::optional<bsdf::NormalMapMicrosurface> microsurface;
   if (material.normal_texture >= 0 || material.bump_texture >= 0)
     microsurface = apply_maps(material, si, p.cone_width[slot], ray);
+  // Rare (an opt-in mode on mapped materials): told so, GCC keeps the BSDF's own calls
+  // inlined on the common path (Cachegrind, BENCHMARKS.md "Session 17").
+  const bool on_microsurface = __builtin_expect(microsurface.has_value(), 0);
   if (material.is_emissive() && (si.front_face || material.emission.two_sided)) {
     float w = 1.0f;
     if (!p.prev_specular[slot] && use_nee) {
@@ -323,13 +326,13 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
       // The geometric and the shading side must agree, or light leaks through edges.
       if ((dot(ls->wi, si.geometric_normal) > 0.0f) == (wi_local.z > 0.0f) && ls->pdf > 0.0f) {
         // (the microsurface_* functions are found by argument-dependent lookup, in prism::bsdf)
-        const Spectrum<Mode> f =
-            microsurface ? microsurface_eval(bsdf, *microsurface, wo_local, wi_local) : bsdf.eval(wo_local, wi_local);
+        const Spectrum<Mode> f = on_microsurface ? microsurface_eval(bsdf, *microsurface, wo_local, wi_local)
+                                                 : bsdf.eval(wo_local, wi_local);
         if (!f.is_black()) {
           float w = 1.0f;
           if (!ls->is_delta && settings_.estimator == LightEstimator::mis)
-            w = power_heuristic(ls->pdf, microsurface ? microsurface_pdf(bsdf, *microsurface, wo_local, wi_local)
-                                                      : bsdf.pdf(wo_local, wi_local));
+            w = power_heuristic(ls->pdf, on_microsurface ? microsurface_pdf(bsdf, *microsurface, wo_local, wi_local)
+                                                         : bsdf.pdf(wo_local, wi_local));
           const Vec3f origin = offset_ray_origin(si.position, si.geometric_normal, ls->wi);
           float t_max;
           Vec3f dir = ls->wi;
@@ -353,9 +356,9 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     }
   }
 
-  const auto bs = microsurface ? microsurface_sample(bsdf, *microsurface, wo_local, u.lobe, u.direction,
-                                                    facet_numbers(p, slot))
-                              : bsdf.sample(wo_local, u.lobe, u.direction);
+  const auto bs = on_microsurface ? microsurface_sample(bsdf, *microsurface, wo_local, u.lobe, u.direction,
+                                                       facet_numbers(p, slot))
+                                 : bsdf.sample(wo_local, u.lobe, u.direction);
   if (!bs || bs->pdf <= 0.0f || bs->f.is_black()) {
     p.finished[slot] = 1;
     return;

@@ -125,13 +125,13 @@ class WavefrontIntegrator {
   // The mip level a hit's ray cone covers in `texture` (which the mesh must have uvs for).
   float level_of_detail_at_hit(int texture, const SurfaceInteraction& si, float cone_width, const Ray& ray) const;
   bool has_texture(int texture, std::uint32_t mesh) const;
-  // Replaces si.shading by the material's normal-mapped frame, where it has a normal map.
   // Applies the material's normal and bump maps to si.shading. With microfacet normal
   // mapping (and a material that does not transmit), returns the microsurface of the
   // mapped frame instead and leaves si.shading unmapped.
   [[gnu::noinline]] std::optional<bsdf::NormalMapMicrosurface> apply_maps(const Material& material,
                                                                           SurfaceInteraction& si, float cone_width,
                                                                           const Ray& ray) const;
+  // Replaces si.shading by the material's normal-mapped frame, where it has a normal map.
   void apply_normal_map(const Material& material, SurfaceInteraction& si, float cone_width, const Ray& ray) const;
   // Microfacet normal mapping's two numbers for the slot's current bounce (pixel_sampler.h).
   Vec2f facet_numbers(const Paths& paths, std::uint32_t slot) const;

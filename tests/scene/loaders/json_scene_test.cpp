@@ -141,6 +141,12 @@ TEST(JsonScene, NumberTooLargeForADoubleIsMalformedJson) {
   EXPECT_NE(message.find("number overflow"), std::string::npos) << message;
 }
 
+// Two values for one key are a mistake to report, not a choice to make silently.
+TEST(JsonScene, DuplicateKeysAreMalformedJson) {
+  const std::string message = error_of<SceneError>([] { parse(quad_scene(R"(, "type": "conductor")")); });
+  EXPECT_NE(message.find("test.json:5:69: malformed JSON: duplicate key \"type\""), std::string::npos) << message;
+}
+
 TEST(JsonScene, TextPositionCountsLinesAndColumns) {
   EXPECT_EQ(loaders::text_position("ab\ncd", 0).line, 1u);
   EXPECT_EQ(loaders::text_position("ab\ncd", 4).line, 2u);
@@ -161,10 +167,17 @@ TEST(JsonScene, SchemaErrorsNameTheJsonPath) {
   EXPECT_NE(error_of<SceneError>([] { parse(R"({"name": "x"})"); }).find("missing required key 'format'"),
             std::string::npos);
   EXPECT_NE(error_of<SceneError>([] { parse(R"([1, 2])"); }).find("expected an object"), std::string::npos);
-  EXPECT_NE(error_of<SceneError>([] { parse(quad_scene(R"(, "type": "velvet")")); }).find("unknown value 'velvet'"),
+  // The quad's material with one of its members changed.
+  const auto changed = [](std::string_view from, std::string_view to) {
+    std::string text = quad_scene();
+    text.replace(text.find(from), from.size(), to);
+    return text;
+  };
+  EXPECT_NE(error_of<SceneError>([&] { parse(changed(R"("type": "diffuse")", R"("type": "velvet")")); })
+                .find("unknown value 'velvet'"),
             std::string::npos);
   // Out of single precision (JSON has no NaN/Inf literals; this is the way to get an Inf).
-  EXPECT_NE(error_of<SceneError>([] { parse(quad_scene(R"(, "base_color": [1e39, 0, 0])")); })
+  EXPECT_NE(error_of<SceneError>([&] { parse(changed("[0.5, 0.5, 0.5]", "[1e39, 0, 0]")); })
                 .find("materials[0].base_color[0]"),
             std::string::npos);
 }

@@ -1,29 +1,18 @@
 #include "prism/scene/loaders/json_scene.h"
 
-#include <fstream>
-#include <sstream>
+#include <optional>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "prism/core/error.h"
+#include "prism/io/json_tree.h"
+#include "prism/io/read_to_end.h"
 #include "prism/scene/loaders/json_scene_reader.h"
 #include "prism/scene/loaders/scene_camera.h"
 
 namespace prism::loaders {
 namespace {
-
-// nlohmann's messages read "[json.exception.parse_error.101] parse error at line 3,
-// column 7: syntax error while parsing ..."; keep only what follows the position.
-std::string parse_error_reason(const std::string& what) {
-  const std::size_t column = what.find("column ");
-  if (column == std::string::npos) {  // "[json.exception.out_of_range.406] number overflow ..."
-    const std::size_t bracket = what.find("] ");
-    return bracket == std::string::npos ? what : what.substr(bracket + 2);
-  }
-  const std::size_t colon = what.find(": ", column == std::string::npos ? 0 : column);
-  return colon == std::string::npos ? what : what.substr(colon + 2);
-}
 
 void read_render_settings(Scene& scene, const JsonValue& render) {
   render.expect_keys({"width", "height", "spp", "max_depth"});
@@ -104,35 +93,20 @@ TextPosition text_position(std::string_view text, std::size_t offset) {
 
 Scene parse_json_scene(std::string_view text, std::string_view source, const std::filesystem::path& scene_dir,
                        std::string_view default_name, const LoadOptions& options) {
-  nlohmann::json root;
+  std::optional<JsonTree> tree;
   try {
-    root = nlohmann::json::parse(text.begin(), text.end());
-  } catch (const nlohmann::json::parse_error& e) {
-    // e.byte counts from 1 and points just past the offending character.
-    const TextPosition p = text_position(text, e.byte > 0 ? e.byte - 1 : 0);
-    throw SceneError(fmt::format("{}:{}:{}: malformed JSON: {}", source, p.line, p.column, parse_error_reason(e.what())));
-  } catch (const nlohmann::json::exception& e) {
-    // A number too large for a double (out_of_range 406) carries no byte position, only
-    // the token: locate its first occurrence (found by the JSON fuzz target).
-    const std::string what = e.what();
-    const std::size_t open = what.find('\''), close = what.rfind('\'');
-    const std::string token = open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : "";
-    const std::size_t at = token.empty() ? std::string_view::npos : text.find(token);
-    const TextPosition p = text_position(text, at == std::string_view::npos ? 0 : at);
-    throw SceneError(fmt::format("{}:{}:{}: malformed JSON: {}", source, p.line, p.column, parse_error_reason(what)));
+    tree.emplace(text);
+  } catch (const JsonSyntaxError& e) {
+    const TextPosition p = text_position(text, e.offset());
+    throw SceneError(fmt::format("{}:{}:{}: malformed JSON: {}", source, p.line, p.column, e.what()));
   }
   Scene scene;
   scene.name = std::string(default_name);
   JsonDocument document{std::string(source), {}, {}};
   JsonSceneReader reader(scene, document, scene_dir, options);
   try {
-    try {
-      read_document(reader, JsonValue(root, "", document));
-      reader.textures.finish();  // the images, decoded together (texture_cache.h)
-    } catch (const nlohmann::json::exception& e) {
-      // Defensive: the readers check types first, so this is only reached through a bug.
-      throw SceneError(fmt::format("{}: {}", source, e.what()));
-    }
+    read_document(reader, JsonValue(*tree, document));
+    reader.textures.finish();  // the images, decoded together (texture_cache.h)
   } catch (...) {
     reader.textures.rethrow_first_error(std::current_exception());
   }
@@ -142,14 +116,10 @@ Scene parse_json_scene(std::string_view text, std::string_view source, const std
 }
 
 Scene load_json_scene(const std::filesystem::path& path, const LoadOptions& options) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError(fmt::format("cannot read scene '{}': cannot open it", path.string()));
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw IoError(fmt::format("cannot read scene '{}': read error", path.string()));
+  const std::string text = read_file_text(path, "scene");
   std::filesystem::path dir = path.parent_path();
   if (dir.empty()) dir = ".";
-  return parse_json_scene(text.str(), path.string(), dir, path.stem().string(), options);
+  return parse_json_scene(text, path.string(), dir, path.stem().string(), options);
 }
 
 }  // namespace prism::loaders

@@ -35,7 +35,7 @@ template <int N>
 std::vector<std::array<float, N>> read_vectors(const JsonValue& value) {
   const std::size_t count = value.size();
   std::vector<std::array<float, N>> out;
-  if (count > 0 && value.raw().front().is_array()) {
+  if (value.is_array_of_arrays()) {
     out.reserve(count);
     value.for_each_element([&](const JsonValue& e) {
       if (e.size(N) != N) e.fail(fmt::format("expected {} numbers", N));

@@ -8,11 +8,6 @@
 #include "prism/core/error.h"
 
 namespace prism::loaders {
-namespace {
-
-std::string_view type_name(const nlohmann::json& j) { return j.type_name(); }
-
-}  // namespace
 
 std::string JsonValue::path() const {
   if (!array_path_) return path_;
@@ -27,24 +22,35 @@ void JsonValue::fail(std::string_view what) const {
 }
 
 void JsonValue::expect_keys(std::initializer_list<std::string_view> keys) const {
-  if (!is_object()) fail(fmt::format("expected an object, found {}", type_name(*value_)));
-  for (const auto& [key, value] : value_->items()) {
+  if (!is_object()) fail(fmt::format("expected an object, found {}", json_type_name(type())));
+  const std::size_t members = tree_->size(node_);
+  JsonTree::Node k = tree_->first_child(node_);
+  for (std::size_t i = 0; i < members; ++i, k = tree_->next(k + 1)) {
+    const std::string_view key = tree_->string(k);
     bool known = false;
     for (const auto k : keys) known = known || k == key;
     if (known) continue;
     const std::string where = path();
-    document_->unknown_keys.push_back(where.empty() ? key : where + "." + key);
+    document_->unknown_keys.push_back(where.empty() ? std::string(key) : where + "." + std::string(key));
   }
 }
 
-bool JsonValue::has(std::string_view key) const { return is_object() && value_->contains(key); }
+std::optional<JsonTree::Node> JsonValue::member(std::string_view key) const {
+  const std::size_t members = tree_->size(node_);
+  JsonTree::Node k = tree_->first_child(node_);
+  for (std::size_t i = 0; i < members; ++i, k = tree_->next(k + 1))
+    if (tree_->string(k) == key) return k + 1;
+  return std::nullopt;
+}
+
+bool JsonValue::has(std::string_view key) const { return is_object() && member(key); }
 
 std::optional<JsonValue> JsonValue::find(std::string_view key) const {
-  if (!is_object()) fail(fmt::format("expected an object, found {}", type_name(*value_)));
-  const auto it = value_->find(key);
-  if (it == value_->end()) return std::nullopt;
+  if (!is_object()) fail(fmt::format("expected an object, found {}", json_type_name(type())));
+  const std::optional<JsonTree::Node> value = member(key);
+  if (!value) return std::nullopt;
   const std::string where = path();
-  return JsonValue(*it, where.empty() ? std::string(key) : where + "." + std::string(key), *document_);
+  return JsonValue(*tree_, *value, where.empty() ? std::string(key) : where + "." + std::string(key), *document_);
 }
 
 JsonValue JsonValue::operator[](std::string_view key) const {
@@ -54,9 +60,10 @@ JsonValue JsonValue::operator[](std::string_view key) const {
 }
 
 std::size_t JsonValue::size(std::size_t max_size) const {
-  if (!is_array()) fail(fmt::format("expected an array, found {}", type_name(*value_)));
-  if (value_->size() > max_size) fail(fmt::format("expected at most {} elements, found {}", max_size, value_->size()));
-  return value_->size();
+  if (!is_array()) fail(fmt::format("expected an array, found {}", json_type_name(type())));
+  const std::size_t count = tree_->size(node_);
+  if (count > max_size) fail(fmt::format("expected at most {} elements, found {}", max_size, count));
+  return count;
 }
 
 JsonValue::ElementPaths JsonValue::element_paths(std::size_t max_size) const {
@@ -68,16 +75,16 @@ JsonValue::ElementPaths JsonValue::element_paths(std::size_t max_size) const {
 std::vector<JsonValue> JsonValue::elements(std::size_t max_size) const {
   const ElementPaths paths = element_paths(max_size);
   std::vector<JsonValue> out;
-  out.reserve(value_->size());
-  for (std::size_t i = 0; i < value_->size(); ++i) out.push_back(element(paths, i));
+  const std::size_t count = tree_->size(node_);
+  out.reserve(count);
+  JsonTree::Node child = tree_->first_child(node_);
+  for (std::size_t i = 0; i < count; ++i, child = tree_->next(child)) out.push_back(element(paths, child, i));
   return out;
 }
 
 double JsonValue::as_double() const {
-  if (!is_number()) fail(fmt::format("expected a number, found {}", type_name(*value_)));
-  const double v = value_->get<double>();
-  if (!std::isfinite(v)) fail("expected a finite number");
-  return v;
+  if (!is_number()) fail(fmt::format("expected a number, found {}", json_type_name(type())));
+  return tree_->number(node_);  // always finite: the parser refuses numbers beyond a double
 }
 
 float JsonValue::as_float() const {
@@ -93,32 +100,35 @@ float JsonValue::as_float(float min, float max) const {
 }
 
 std::int64_t JsonValue::as_integer(std::int64_t min, std::int64_t max) const {
-  if (!value_->is_number_integer()) fail(fmt::format("expected an integer, found {}", type_name(*value_)));
-  if (value_->is_number_unsigned() && value_->get<std::uint64_t>() > static_cast<std::uint64_t>(max))
-    fail(fmt::format("{} is out of range [{}, {}]", value_->get<std::uint64_t>(), min, max));
-  const std::int64_t v = value_->get<std::int64_t>();
+  if (type() == JsonType::number) {
+    // Integers beyond int64 are held as doubles: say what is wrong with them.
+    const double d = tree_->number(node_);
+    if (d == std::trunc(d) && std::abs(d) >= 0x1p63) fail(fmt::format("{} is out of range [{}, {}]", d, min, max));
+  }
+  if (type() != JsonType::integer) fail(fmt::format("expected an integer, found {}", json_type_name(type())));
+  const std::int64_t v = tree_->integer(node_);
   if (v < min || v > max) fail(fmt::format("{} is out of range [{}, {}]", v, min, max));
   return v;
 }
 
 bool JsonValue::as_bool() const {
-  if (!value_->is_boolean()) fail(fmt::format("expected true or false, found {}", type_name(*value_)));
-  return value_->get<bool>();
+  if (type() != JsonType::boolean) fail(fmt::format("expected true or false, found {}", json_type_name(type())));
+  return tree_->boolean(node_);
 }
 
 std::string JsonValue::as_string() const {
-  if (!is_string()) fail(fmt::format("expected a string, found {}", type_name(*value_)));
-  return value_->get<std::string>();
+  if (!is_string()) fail(fmt::format("expected a string, found {}", json_type_name(type())));
+  return std::string(tree_->string(node_));
 }
 
 Vec3f JsonValue::as_vec3() const {
-  if (!is_array() || value_->size() != 3) fail("expected an array of 3 numbers");
+  if (!is_array() || tree_->size(node_) != 3) fail("expected an array of 3 numbers");
   const auto e = elements();
   return {e[0].as_float(), e[1].as_float(), e[2].as_float()};
 }
 
 Vec2f JsonValue::as_vec2() const {
-  if (!is_array() || value_->size() != 2) fail("expected an array of 2 numbers");
+  if (!is_array() || tree_->size(node_) != 2) fail("expected an array of 2 numbers");
   const auto e = elements();
   return {e[0].as_float(), e[1].as_float()};
 }

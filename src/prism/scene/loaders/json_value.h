@@ -11,9 +11,8 @@
 #include <utility>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "prism/core/vec.h"
+#include "prism/io/json_tree.h"
 
 namespace prism::loaders {
 
@@ -27,17 +26,21 @@ struct JsonDocument {
 
 class JsonValue {
  public:
-  JsonValue(const nlohmann::json& value, std::string path, JsonDocument& document)
-      : value_(&value), path_(std::move(path)), document_(&document) {}
+  // The tree's root (path "").
+  JsonValue(const JsonTree& tree, JsonDocument& document) : tree_(&tree), node_(tree.root()), document_(&document) {}
 
   // Built when asked for (an error, a message): an array element keeps its array's path and
   // its index, not a formatted string of its own, since a mesh's arrays have millions.
   std::string path() const;
-  const nlohmann::json& raw() const { return *value_; }
-  bool is_string() const { return value_->is_string(); }
-  bool is_object() const { return value_->is_object(); }
-  bool is_array() const { return value_->is_array(); }
-  bool is_number() const { return value_->is_number(); }
+  JsonType type() const { return tree_->type(node_); }
+  bool is_string() const { return type() == JsonType::string; }
+  bool is_object() const { return type() == JsonType::object; }
+  bool is_array() const { return type() == JsonType::array; }
+  bool is_number() const { return type() == JsonType::integer || type() == JsonType::number; }
+  // A non-empty array whose first element is an array ([[x, y, z], ...]).
+  bool is_array_of_arrays() const {
+    return is_array() && tree_->size(node_) > 0 && tree_->type(tree_->first_child(node_)) == JsonType::array;
+  }
 
   // Throws SceneError "<source>: <path>: <what>".
   [[noreturn]] void fail(std::string_view what) const;
@@ -56,7 +59,9 @@ class JsonValue {
   template <class Visit>
   void for_each_element(Visit&& visit, std::size_t max_size = SIZE_MAX) const {
     const ElementPaths paths = element_paths(max_size);
-    for (std::size_t i = 0; i < value_->size(); ++i) visit(element(paths, i));
+    const std::size_t count = tree_->size(node_);
+    JsonTree::Node child = tree_->first_child(node_);
+    for (std::size_t i = 0; i < count; ++i, child = tree_->next(child)) visit(element(paths, child, i));
   }
 
   double as_double() const;  // a finite number
@@ -95,16 +100,22 @@ class JsonValue {
     std::size_t outer;  // kNoIndex: the elements' own index is the outer one
   };
   ElementPaths element_paths(std::size_t max_size) const;  // checks the array and its size
-  JsonValue element(const ElementPaths& paths, std::size_t i) const {
-    return paths.outer == kNoIndex ? JsonValue((*value_)[i], paths.array_path, i, kNoIndex, *document_)
-                                   : JsonValue((*value_)[i], paths.array_path, paths.outer, i, *document_);
+  std::optional<JsonTree::Node> member(std::string_view key) const;  // the value of an object's member
+  // Element i, at node `child`.
+  JsonValue element(const ElementPaths& paths, JsonTree::Node child, std::size_t i) const {
+    return paths.outer == kNoIndex ? JsonValue(*tree_, child, paths.array_path, i, kNoIndex, *document_)
+                                   : JsonValue(*tree_, child, paths.array_path, paths.outer, i, *document_);
   }
+  // An object's member.
+  JsonValue(const JsonTree& tree, JsonTree::Node node, std::string path, JsonDocument& document)
+      : tree_(&tree), node_(node), path_(std::move(path)), document_(&document) {}
   // Element `outer` of the array at *array_path, or element `inner` of that element.
-  JsonValue(const nlohmann::json& value, const std::string* array_path, std::size_t outer, std::size_t inner,
-            JsonDocument& document)
-      : value_(&value), array_path_(array_path), outer_(outer), inner_(inner), document_(&document) {}
+  JsonValue(const JsonTree& tree, JsonTree::Node node, const std::string* array_path, std::size_t outer,
+            std::size_t inner, JsonDocument& document)
+      : tree_(&tree), node_(node), array_path_(array_path), outer_(outer), inner_(inner), document_(&document) {}
 
-  const nlohmann::json* value_;
+  const JsonTree* tree_;
+  JsonTree::Node node_;
   std::string path_;                        // roots and object members: the whole path
   const std::string* array_path_ = nullptr;  // array elements: their array's path (in the document)
   std::size_t outer_ = kNoIndex, inner_ = kNoIndex;

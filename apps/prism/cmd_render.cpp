@@ -50,7 +50,7 @@ struct RenderOptions {
   double time_limit_seconds = 0.0;
   int width = 0, height = 0;  // 0: the scene's default
   std::string estimator = "mis";
-  std::string normal_mapping = "classic";
+  std::string normal_mapping;  // empty: the scene's choice, else classic
   std::string sampler = std::string(sampler_name(PathSettings{}.sampler));
   std::string mode = "spectral";
   int wavelengths = 4;
@@ -155,7 +155,7 @@ void write_outputs(const std::vector<std::filesystem::path>& outputs, const Rend
       meta.strings["prism:scene"] = scene_name;
       meta.strings["prism:transport"] = describe(settings.transport);
       meta.strings["prism:sampler"] = std::string(sampler_name(settings.path.sampler));
-      meta.strings["prism:normalMapping"] = o.normal_mapping;
+      meta.strings["prism:normalMapping"] = std::string(normal_mapping_name(settings.path.normal_mapping));
       meta.ints["prism:spp"] = result.passes_done;
       meta.doubles["prism:renderSeconds"] = result.elapsed_seconds;
       // What `prism merge` needs to combine partial renders of one image.
@@ -183,9 +183,11 @@ int run_render(const RenderOptions& o) {
   settings.samples_per_pixel = o.spp;
   settings.path.max_depth = o.max_depth;
   settings.path.estimator = parse_estimator(o.estimator);
-  if (o.normal_mapping != "classic" && o.normal_mapping != "microfacet")
-    throw UsageError(fmt::format("unknown --normal-mapping '{}' (classic, microfacet)", o.normal_mapping));
-  settings.path.normal_mapping = o.normal_mapping == "microfacet" ? NormalMapping::microfacet : NormalMapping::classic;
+  if (!o.normal_mapping.empty()) {
+    const std::optional<NormalMapping> model = parse_normal_mapping(o.normal_mapping);
+    if (!model) throw UsageError(fmt::format("unknown --normal-mapping '{}' ({})", o.normal_mapping, kNormalMappingNames));
+    settings.path.normal_mapping = *model;
+  }
   settings.path.sampler = parse_sampler_option(o.sampler);
   if (o.mode != "spectral" && o.mode != "rgb") throw UsageError(fmt::format("unknown --mode '{}' (spectral, rgb)", o.mode));
   settings.transport.kind = o.mode == "rgb" ? TransportKind::rgb : TransportKind::spectral;
@@ -253,6 +255,8 @@ int run_render(const RenderOptions& o) {
   settings.height = o.height > 0 ? o.height : scene.default_height;
   if (o.spp_given == false && o.sample_range.empty() && scene.default_spp > 0) settings.samples_per_pixel = scene.default_spp;
   if (!o.max_depth_given && scene.default_max_depth > 0) settings.path.max_depth = scene.default_max_depth;
+  if (o.normal_mapping.empty() && scene.default_normal_mapping)
+    settings.path.normal_mapping = *scene.default_normal_mapping;
   // --render-scale: render a fraction of the pixels; display outputs are upscaled back.
   if (!(o.display.render_scale > 0.0 && o.display.render_scale <= 1.0))
     throw UsageError("--render-scale must be in (0, 1]");
@@ -357,8 +361,8 @@ void add_render_command(CLI::App& root, Action& action) {
   cmd->add_option("--normal-mapping", options->normal_mapping,
                   "Normal and bump maps: classic (shade around the mapped normal, as glTF viewers do; loses light "
                   "where it tilts) or microfacet (the mapped normal as a facet of a microsurface, Schuessler et al. "
-                  "2017: energy-conserving, a different look at grazing angles); transmitting materials stay classic")
-      ->capture_default_str();
+                  "2017: energy-conserving, a different look at grazing angles); transmitting materials stay classic. "
+                  "Default: the scene file's render.normal_mapping, else classic");
   cmd->add_option("--sampler", options->sampler,
                   "Random numbers of each path: independent (PCG32), sobol (padded Owen-scrambled Sobol', "
                   "stratified per pixel) or zsobol (blue-noise ordering across pixels, one layer per sample); "

@@ -24,6 +24,9 @@ void add_view_command(CLI::App& root, Action& action) {
                   "gamut-clip, sdr-hdr-split, chromaticity");
   cmd->add_option("--mode", o->mode, "Initial transport: spectral or rgb")->capture_default_str();
   cmd->add_option("--sampler", o->sampler, "Random numbers of each path: independent, sobol or zsobol (default: as render)");
+  cmd->add_option("--normal-mapping", o->normal_mapping,
+                  "Initial normal-map model: classic or microfacet (default: the scene file's, else classic; see "
+                  "prism render --help)");
   cmd->add_option("--samples-per-pass", o->samples_per_pass, "Samples per pixel per displayed pass")
       ->capture_default_str();
   cmd->add_option("--bounces-per-pass", o->bounces_per_pass,

@@ -89,6 +89,24 @@ for model in classic microfacet; do
   grep -aq "prism:normalMapping" "$work/out/n.exr" && grep -aq "$model" "$work/out/n.exr" ||
     fail "--normal-mapping $model: EXR lacks prism:normalMapping metadata"
 done
+# A JSON scene's render.normal_mapping is the default, --normal-mapping overrides it, and
+# `prism info` shows the scene's choice.
+printf '{"format": "prism-scene/1", "render": {"normal_mapping": "microfacet"},
+ "materials": [{"name": "m", "type": "diffuse"}],
+ "meshes": [{"name": "q", "material": "m", "positions": [[-1,-1,0],[1,-1,0],[1,1,0],[-1,1,0]],
+             "indices": [0,1,2, 0,2,3]}]}\n' >"$work/micro.json"
+"$prism" info "$work/micro.json" | grep -qx "normal mapping microfacet" || fail "info does not show the scene's model"
+"$prism" info cornell-box | grep -q "normal mapping" && fail "info shows a model for a scene that chose none"
+for given in "" classic; do
+  rm -rf "$work/out"; mkdir -p "$work/out"
+  "$prism" render "$work/micro.json" --width 8 --height 8 --spp 1 ${given:+--normal-mapping "$given"} \
+    -o "$work/out/m.exr" >"$work/stdout" 2>"$work/stderr" || fail "render of micro.json failed: $(cat "$work/stderr")"
+  if [ "$given" = classic ]; then
+    grep -aq microfacet "$work/out/m.exr" && fail "--normal-mapping classic did not override the scene's microfacet"
+  else
+    grep -aq microfacet "$work/out/m.exr" || fail "the scene's render.normal_mapping was not the default"
+  fi
+done
 
 # SIGINT/SIGTERM mid-render: exit 128+signal with both images holding the passes so far.
 for sig in INT TERM; do

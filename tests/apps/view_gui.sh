@@ -42,4 +42,20 @@ nsd=$(grep -o 'stddev=[0-9.]*' "$tmp/log_normal.txt" | cut -d= -f2)
 awk -v s="$nsd" 'BEGIN { exit !(s > 0.02) }' || { echo "FAIL: normal view is flat (stddev $nsd)"; exit 1; }
 awk -v n="$normal" -v b="$bright" 'BEGIN { d = n - b; exit !(d > 0.01 || d < -0.01) }' ||
   { echo "FAIL: normal view mean $normal looks like the beauty's $bright"; exit 1; }
+# The normal-map model: a JSON scene's render.normal_mapping is the viewer's start, and
+# --normal-mapping overrides it (the restart line names the one in use).
+printf '{"format": "prism-scene/1", "render": {"normal_mapping": "microfacet"},
+ "materials": [{"name": "m", "type": "diffuse"}],
+ "meshes": [{"name": "q", "material": "m", "positions": [[-1,-1,0],[1,-1,0],[1,1,0],[-1,1,0]],
+             "indices": [0,1,2, 0,2,3]}],
+ "environment": {"color": [1, 1, 1], "luminance_nits": 1}}\n' >"$tmp/micro.json"
+for given in "" classic; do
+  if ! timeout 300 "$prism" view "$tmp/micro.json" --frames 1 ${given:+--normal-mapping "$given"} --width 160 \
+       --height 120 --log-events >"$tmp/log_nm.txt" 2>"$tmp/err_nm.txt"; then
+    echo "FAIL: prism view of a scene choosing microfacet failed: $(cat "$tmp/err_nm.txt")" >&2; exit 1
+  fi
+  want=${given:-microfacet}
+  grep -q "^restart generation=.* normal_mapping=$want " "$tmp/log_nm.txt" ||
+    { echo "FAIL: --normal-mapping '$given' did not start with $want: $(grep restart "$tmp/log_nm.txt")"; exit 1; }
+done
 echo "ok: mean code value $bright at EV100 1, $dark at EV100 4, $normal in the normal view"

@@ -15,4 +15,10 @@ rc=$?
 if [ "$rc" -ne 1 ] || [ "$(printf '%s\n' "$out" | wc -l)" -ne 1 ]; then
   echo "FAIL: DISPLAY=:9999 gave exit $rc: $out"; exit 1
 fi
+# Options are checked before the display: a bad --normal-mapping is a usage error.
+out=$(env -u DISPLAY -u WAYLAND_DISPLAY "$prism" view cornell-box --normal-mapping bent 2>&1)
+rc=$?
+if [ "$rc" -ne 2 ] || [ "$out" != "prism: error: unknown --normal-mapping 'bent' (classic, microfacet)" ]; then
+  echo "FAIL: --normal-mapping bent gave exit $rc: $out"; exit 1
+fi
 echo "ok"

@@ -25,6 +25,7 @@
 
 #include "prism/accel/embree_accel.h"
 #include "prism/bsdf/microfacet_normal_mapping.h"
+#include "prism/bsdf/normal_mapping_model.h"
 #include "prism/core/mat3.h"
 #include "prism/render/aov.h"
 #include "prism/render/color_context.h"
@@ -44,13 +45,6 @@ struct SurfaceInteraction;
 // lowest variance. nee_only and bsdf_only exist to test that claim.
 enum class LightEstimator { mis, nee_only, bsdf_only };
 
-// What a normal or bump map does to a reflecting surface. classic: the BSDF is evaluated
-// around the mapped normal (what glTF viewers and most renderers do; not energy
-// conserving). microfacet: the mapped normal is a facet of a two-facet microsurface whose
-// mean normal is the unperturbed one (Schüßler et al. 2017, bsdf/microfacet_normal_mapping.h):
-// no light is lost to directions below the surface. Transmitting materials stay classic.
-enum class NormalMapping { classic, microfacet };
-
 struct PathSettings {
   int max_depth = 8;               // scattering events; 1 = direct lighting only
   int russian_roulette_depth = 3;  // roulette starts after this many bounces
@@ -62,7 +56,7 @@ struct PathSettings {
   // How next-event estimation picks an emitter and a point on it (scene/light_sampler.h,
   // scene/triangle_light_sampling.h); the defaults by measurement (BENCHMARKS.md "Peer").
   LightSamplerOptions light;
-  NormalMapping normal_mapping = NormalMapping::classic;
+  NormalMapping normal_mapping = NormalMapping::classic;  // bsdf/normal_mapping_model.h
 };
 
 // Pixels per tile: a tile's queue is run by one thread from its first step to its last, in

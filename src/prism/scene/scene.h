@@ -2,10 +2,12 @@
 // The renderer's view of a scene: flat arrays of meshes, materials and a camera.
 // Loaders fill it; the accelerator and integrator only read it.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "prism/bsdf/normal_mapping_model.h"
 #include "prism/core/transform.h"
 #include "prism/core/vec.h"
 #include "prism/scene/light.h"
@@ -62,6 +64,7 @@ struct Scene {
   int default_height = 512;
   int default_spp = 0;        // 0: the renderer's default (files like pbrt-v4 may set it)
   int default_max_depth = 0;  // 0: the renderer's default
+  std::optional<NormalMapping> default_normal_mapping;  // none: the renderer's default (classic)
   std::vector<std::string> warnings;  // loader warnings (unsupported features), one line each
 
   std::size_t triangle_count() const;

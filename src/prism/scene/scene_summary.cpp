@@ -103,6 +103,8 @@ std::string format_scene_summary(const Scene& scene) {
   if (scene.cameras.empty()) out += camera_line(scene.camera);
   for (const auto& c : scene.cameras) out += camera_line(c);
   out += fmt::format("resolution {}x{}\n", scene.default_width, scene.default_height);
+  if (scene.default_normal_mapping)
+    out += fmt::format("normal mapping {}\n", normal_mapping_name(*scene.default_normal_mapping));
   out += fmt::format("warnings {}\n", scene.warnings.size());
   for (const auto& w : scene.warnings) out += fmt::format("  warning: {}\n", w);
   return out;

@@ -89,6 +89,10 @@ class ViewerApp {
     RenderSettings& s = render_.settings;
     s.path.max_depth = options.max_depth;
     if (!options.sampler.empty()) s.path.sampler = *parse_sampler(options.sampler);  // checked by run_viewer
+    if (!options.normal_mapping.empty())
+      s.path.normal_mapping = *parse_normal_mapping(options.normal_mapping);  // checked by run_viewer
+    else if (scene.default_normal_mapping)
+      s.path.normal_mapping = *scene.default_normal_mapping;
     s.samples_per_pass = std::max(options.samples_per_pass, 1);
     s.bounces_per_pass = options.bounces_per_pass;
     s.threads = options.threads;
@@ -153,8 +157,9 @@ class ViewerApp {
     request.settings.width = std::max(16, static_cast<int>(std::lround(fb_w_ * render_.resolution_scale)));
     request.settings.height = std::max(16, static_cast<int>(std::lround(fb_h_ * render_.resolution_scale)));
     const std::uint64_t g = session_.restart(request);
-    log("restart generation={} reason={} film={}x{} scene_prepared={}", g, reason, request.settings.width,
-        request.settings.height, session_.prepare_count());
+    log("restart generation={} reason={} film={}x{} normal_mapping={} scene_prepared={}", g, reason,
+        request.settings.width, request.settings.height, normal_mapping_name(request.settings.path.normal_mapping),
+        session_.prepare_count());
   }
 
   // One UI frame; true when the viewer should exit.
@@ -336,6 +341,8 @@ int run_viewer(const ViewerOptions& options) {
   if (options.bounces_per_pass < 0) throw UsageError("--bounces-per-pass must be 0 (off) or more");
   if (!options.sampler.empty() && !parse_sampler(options.sampler))
     throw UsageError(fmt::format("unknown --sampler '{}' (independent, sobol, zsobol)", options.sampler));
+  if (!options.normal_mapping.empty() && !parse_normal_mapping(options.normal_mapping))
+    throw UsageError(fmt::format("unknown --normal-mapping '{}' ({})", options.normal_mapping, kNormalMappingNames));
   if (options.threads < 0) throw UsageError("--threads must be at least 1 (omit it to use all cores)");
   display::parse_odt(options.odt);
   if (!options.view.empty()) display::parse_debug_view(options.view);

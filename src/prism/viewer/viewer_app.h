@@ -20,6 +20,7 @@ struct ViewerOptions {
   std::string view;                // initial debug view (display/debug_views.h); empty: none
   std::string mode = "spectral";   // spectral | rgb
   std::string sampler;             // independent | sobol | zsobol; empty: the renderer's default
+  std::string normal_mapping;      // classic | microfacet; empty: the scene's choice, else classic
   int samples_per_pass = 1;
   int bounces_per_pass = 0;        // > 0: show the film every N bounces inside a pass
   int max_depth = 8;

@@ -141,6 +141,20 @@ TEST(JsonScene, NumberTooLargeForADoubleIsMalformedJson) {
   EXPECT_NE(message.find("number overflow"), std::string::npos) << message;
 }
 
+TEST(JsonScene, RenderObjectMayChooseTheNormalMappingModel) {
+  EXPECT_FALSE(parse(quad_scene()).default_normal_mapping.has_value());  // none: the renderer's default
+  const Scene micro = parse(quad_scene("", R"(, "render": {"normal_mapping": "microfacet"})"));
+  ASSERT_TRUE(micro.default_normal_mapping.has_value());
+  EXPECT_EQ(*micro.default_normal_mapping, NormalMapping::microfacet);
+  EXPECT_EQ(parse(quad_scene("", R"(, "render": {"normal_mapping": "classic"})")).default_normal_mapping,
+            NormalMapping::classic);
+  const std::string message =
+      error_of<SceneError>([] { parse(quad_scene("", R"(, "render": {"normal_mapping": "bent"})")); });
+  EXPECT_NE(message.find("render.normal_mapping: unknown value 'bent' (expected one of: classic, microfacet)"),
+            std::string::npos)
+      << message;
+}
+
 // Two values for one key are a mistake to report, not a choice to make silently.
 TEST(JsonScene, DuplicateKeysAreMalformedJson) {
   const std::string message = error_of<SceneError>([] { parse(quad_scene(R"(, "type": "conductor")")); });

@@ -185,7 +185,8 @@ int run_render(const RenderOptions& o) {
   settings.path.estimator = parse_estimator(o.estimator);
   if (!o.normal_mapping.empty()) {
     const std::optional<NormalMapping> model = parse_normal_mapping(o.normal_mapping);
-    if (!model) throw UsageError(fmt::format("unknown --normal-mapping '{}' ({})", o.normal_mapping, kNormalMappingNames));
+    if (!model)
+      throw UsageError(fmt::format("unknown --normal-mapping '{}' ({})", o.normal_mapping, kNormalMappingNames));
     settings.path.normal_mapping = *model;
   }
   settings.path.sampler = parse_sampler_option(o.sampler);

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "prism/render/renderer.h"
+#include "support/direct_light_settings.h"
 #include "support/film_statistics.h"
 #include "support/test_scenes.h"
 
@@ -53,14 +54,7 @@ TextureImage grey_map(int width, int height, float (*value)(int x, int y)) {
 TextureImage square_map(int size, float (*value)(int x, int y)) { return grey_map(size, size, value); }
 
 RenderSettings settings(TransportKind kind, LightEstimator estimator, int spp) {
-  RenderSettings s;
-  s.width = s.height = 8;
-  s.samples_per_pixel = spp;
-  s.seed = 17;
-  s.transport.kind = kind;
-  s.path.max_depth = 1;
-  s.path.estimator = estimator;
-  return s;
+  return test::direct_light_settings(kind, estimator, spp, 17);
 }
 
 // Light sampling and BSDF sampling estimate the same integral, so NEE-only, BSDF-only and

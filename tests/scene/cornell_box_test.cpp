@@ -109,7 +109,10 @@ TEST(Scene, ValidationCatchesBadData) {
   sky.type = LightType::environment;
   sky.spectrum = color::PiecewiseLinearSpectrum({400.0, 700.0}, {1.0, 1.0});
   scene.lights.push_back(sky);
-  EXPECT_THROW(validate_scene(scene), SceneError);
+  EXPECT_NO_THROW(validate_scene(scene));  // a constant sky may have a spectrum
+  scene.textures.push_back(TextureImage{});
+  scene.lights.back().environment_texture = 0;
+  EXPECT_THROW(validate_scene(scene), SceneError);  // a map's texels are its colours
 }
 
 }  // namespace

@@ -412,13 +412,14 @@ bool LightSampler::fill_emitter_sample(std::size_t index, const Vec3f& reference
     }
     case Kind::environment: {
       s.distance = std::numeric_limits<float>::infinity();
-      s.has_rgb = true;
       if (!e.texture) {
+        // A constant sky is an emitter like the others: its colour (or spectrum) and its
+        // luminance through the emission rule (render/color_context.h), scale 1.
         s.wi = sample_uniform_sphere(u);
         s.pdf = uniform_sphere_pdf();
-        s.rgb = Vec3f(e.intensity_nits);
         return true;
       }
+      s.has_rgb = true;
       const PiecewiseConstant2D::Sample m = environment_distribution_.sample(u);
       const float jacobian = environment_solid_angle_per_uv_area(e.mapping, m.p);
       if (!(jacobian > 0.0f) || m.pdf <= 0.0f) return false;
@@ -446,8 +447,7 @@ std::optional<LightSampler::EscapedHit> LightSampler::escaped_hit(std::uint32_t 
   const Emitter& e = emitters_[index];
   if (e.kind == Kind::environment) {
     // The direction's texel coordinates once, for both its pdf and its radiance.
-    if (!e.texture)
-      return EscapedHit{e.emitter, 1.0f, selection_pmf_[index] * uniform_sphere_pdf(), true, Vec3f(e.intensity_nits)};
+    if (!e.texture) return EscapedHit{e.emitter, 1.0f, selection_pmf_[index] * uniform_sphere_pdf(), false, Vec3f()};
     const Vec2f uv = environment_direction_to_uv(e.mapping, map_direction(e, wi));
     return EscapedHit{e.emitter, 1.0f, selection_pmf_[index] * environment_pdf_at(e.mapping, uv), true,
                       environment_rgb_at(e, uv)};

@@ -35,8 +35,9 @@ void validate_scene(const Scene& scene) {
   for (const auto& m : scene.materials) validate_material(m);
   for (const auto& l : scene.lights) {
     if (!l.spectrum) continue;
-    if (l.type == LightType::environment)
-      throw SceneError(fmt::format("light '{}': an environment takes a colour, not a spectrum", l.name));
+    if (l.type == LightType::environment && l.environment_texture >= 0)
+      throw SceneError(fmt::format("light '{}': an environment map takes no spectrum (its texels are its colours)",
+                                   l.name));
     validate_spectrum(*l.spectrum, fmt::format("light '{}'", l.name), kNoSpectrumMaximum);
   }
 }

@@ -175,6 +175,8 @@ bool lights_panel(RenderControls& c) {
                                   "%.4g", ImGuiSliderFlags_Logarithmic);
       if (l.spectrum)
         ImGui::TextUnformatted("colour: the scene's spectrum");
+      else if (l.type == LightType::environment && l.environment_texture >= 0)
+        ImGui::TextUnformatted("colour: the map's texels");
       else
         changed |= light_colour(id.c_str(), l.color, l.color_space);
       ImGui::TreePop();

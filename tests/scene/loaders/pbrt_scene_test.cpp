@@ -283,7 +283,8 @@ AttributeBegin
   EXPECT_EQ(*s.lights[1].spectrum, *named_emission_spectrum("F11"));
   ASSERT_TRUE(s.lights[2].spectrum);
   EXPECT_DOUBLE_EQ((*s.lights[2].spectrum)(550.0), 2.5);
-  EXPECT_FALSE(s.lights[3].spectrum);  // environments stay RGB
+  ASSERT_TRUE(s.lights[3].spectrum);  // a constant sky's spectrum too (session 18)
+  EXPECT_EQ(*s.lights[3].spectrum, blackbody_emission_spectrum(6500.0));
   EXPECT_FALSE(s.lights[4].spectrum);  // FL3.1 is not one of Prism's tables
   const Material& lamp = s.materials[s.meshes[0].material];
   ASSERT_TRUE(lamp.emission.spectrum);
@@ -297,7 +298,7 @@ AttributeBegin
   EXPECT_EQ(warnings.find("blackbody I"), std::string::npos) << warnings;
   EXPECT_EQ(warnings.find("line 3"), std::string::npos) << warnings;
   EXPECT_NE(warnings.find("stdillum-F3.1"), std::string::npos) << warnings;
-  EXPECT_NE(warnings.find("6500"), std::string::npos) << warnings;
+  EXPECT_EQ(warnings.find("6500"), std::string::npos) << warnings;
 }
 
 // A sampled spectrum breaking the scene-data rules (spectrum_table_checks.h) is an error at

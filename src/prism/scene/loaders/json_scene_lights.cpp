@@ -101,13 +101,22 @@ void JsonSceneReader::read_light(const JsonValue& value) {
 }
 
 void JsonSceneReader::read_environment(const JsonValue& value) {
-  value.expect_keys({"type", "name", "color", "color_space", "luminance_nits", "texture", "mapping", "transform"});
+  value.expect_keys(
+      {"type", "name", "color", "color_space", "spectrum", "luminance_nits", "texture", "mapping", "transform"});
   Light light;
   light.type = LightType::environment;
   light.name = value.get_string("name", "environment");
+  // A constant sky has a colour or a spectrum; a map's texels are its colours.
+  if (value.has("texture"))
+    for (const char* key : {"color", "color_space", "spectrum"})
+      if (value.has(key)) value[key].fail("an environment with a 'texture' takes no colour: its texels are its colours");
   light.color = value.get_vec3("color", Vec3f(1.0f));
   if (min(light.color, Vec3f(0.0f)) != Vec3f(0.0f)) value["color"].fail("colour components must not be negative");
   if (auto s = value.find("color_space")) light.color_space = read_color_space(*s);
+  if (auto s = value.find("spectrum")) {
+    if (value.has("color") || value.has("color_space")) value.fail("give either 'color' or 'spectrum', not both");
+    set_emission_spectrum(light, read_spectrum(*s, SpectrumUse::emission));
+  }
   light.intensity = value["luminance_nits"].as_float(0.0f, 1e12f);
   if (auto t = value.find("texture")) light.environment_texture = read_texture(*t, TextureEncoding::srgb);
   if (auto m = value.find("mapping")) {

@@ -30,17 +30,13 @@ double light_scale(const PbrtParams& p) {
   return scale;
 }
 
-// `with_spectrum`: the light can carry a spectrum (every kind but the environment).
-LightColor light_color(const PbrtParams& p, std::string_view name, std::vector<std::string>& approximations,
-                       bool with_spectrum = true) {
+LightColor light_color(const PbrtParams& p, std::string_view name, std::vector<std::string>& approximations) {
   LightColor c;
-  if (with_spectrum) {
-    if (auto spectrum = p.get_spectrum(name, PbrtSpectrumUse::illuminant)) {
-      // Normalised to unit luminance, as pbrt-v4 normalises light spectra: `scale` is the luminance.
-      set_emission_spectrum(c, std::move(*spectrum));
-      c.luminance = static_cast<float>(light_scale(p));
-      return c;
-    }
+  if (auto spectrum = p.get_spectrum(name, PbrtSpectrumUse::illuminant)) {
+    // Normalised to unit luminance, as pbrt-v4 normalises light spectra: `scale` is the luminance.
+    set_emission_spectrum(c, std::move(*spectrum));
+    c.luminance = static_cast<float>(light_scale(p));
+    return c;
   }
   const Vec3f rgb = p.get_color(name, PbrtSpectrumUse::illuminant, approximations).value_or(Vec3f(1.0f));
   const double scale = light_scale(p);
@@ -146,9 +142,10 @@ void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
         light.intensity = static_cast<float>(light.intensity * (lux / map_lux));
       }
     } else {
-      const LightColor c = light_color(p, "L", approximations_, /*with_spectrum=*/false);
+      const LightColor c = light_color(p, "L", approximations_);
       light.color = c.color;
       light.intensity = c.luminance;
+      light.spectrum = c.spectrum;
       // A uniform sky of luminance L gives π L lux on any surface.
       if (p.has("illuminance"))
         light.intensity = static_cast<float>(light_scale(p) * illuminance_lux(p) / std::numbers::pi);

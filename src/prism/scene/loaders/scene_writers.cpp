@@ -45,9 +45,12 @@ class Writer {
 
 void check_writable(const Scene& scene) {
   if (!scene.instances.empty()) throw UsageError("scene writer: instances are not supported");
-  for (const Light& l : scene.lights)
+  for (const Light& l : scene.lights) {
     if (l.type != LightType::environment || l.environment_texture >= 0)
       throw UsageError("scene writer: only a constant environment light is supported");
+    if (l.spectrum)
+      throw UsageError(fmt::format("scene writer: light '{}' has a spectrum; only RGB colours are written", l.name));
+  }
   for (const Material& m : scene.materials)
     if (m.base_color_spectrum || m.emission.spectrum)
       throw UsageError(fmt::format("scene writer: material '{}' has a spectrum; only RGB colours are written", m.name));

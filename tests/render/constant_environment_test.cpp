@@ -28,8 +28,8 @@ using Estimate = test::BlockEstimate;
 // A grey floor (ρ = 0.5) seen from above, or (looking_up) nothing but the sky, under the
 // given environment object.
 Scene sky_scene(const std::string& environment, bool looking_up = false) {
-  const std::string camera = looking_up ? R"({"eye": [0, 1, 0], "target": [0, 2, 0], "up": [0, 0, 1], "fov_degrees": 30})"
-                                        : R"({"eye": [0, 1, 0], "target": [0, 0, 0], "up": [0, 0, 1], "fov_degrees": 30})";
+  const std::string target = looking_up ? "[0, 2, 0]" : "[0, 0, 0]";
+  const std::string camera = R"({"eye": [0, 1, 0], "target": )" + target + R"(, "up": [0, 0, 1], "fov_degrees": 30})";
   return loaders::parse_json_scene(R"({"format": "prism-scene/1",
     "materials": [{"name": "grey", "type": "diffuse", "base_color": [0.5, 0.5, 0.5]}],
     "meshes": [{"name": "floor", "material": "grey",

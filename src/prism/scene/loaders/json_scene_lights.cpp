@@ -109,7 +109,8 @@ void JsonSceneReader::read_environment(const JsonValue& value) {
   // A constant sky has a colour or a spectrum; a map's texels are its colours.
   if (value.has("texture"))
     for (const char* key : {"color", "color_space", "spectrum"})
-      if (value.has(key)) value[key].fail("an environment with a 'texture' takes no colour: its texels are its colours");
+      if (value.has(key))
+        value[key].fail("an environment with a 'texture' takes no colour: its texels are its colours");
   light.color = value.get_vec3("color", Vec3f(1.0f));
   if (min(light.color, Vec3f(0.0f)) != Vec3f(0.0f)) value["color"].fail("colour components must not be negative");
   if (auto s = value.find("color_space")) light.color_space = read_color_space(*s);

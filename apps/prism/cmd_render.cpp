@@ -102,10 +102,8 @@ OutputFormat output_format(const std::filesystem::path& path) {
 }
 
 LightEstimator parse_estimator(const std::string& name) {
-  if (name == "mis") return LightEstimator::mis;
-  if (name == "nee") return LightEstimator::nee_only;
-  if (name == "bsdf") return LightEstimator::bsdf_only;
-  throw UsageError(fmt::format("unknown --estimator '{}' (mis, nee, bsdf)", name));
+  if (const auto estimator = parse_light_estimator(name)) return *estimator;
+  throw UsageError(fmt::format("unknown --estimator '{}' ({})", name, kLightEstimatorNames));
 }
 
 SamplerKind parse_sampler_option(const std::string& name) {
@@ -155,6 +153,7 @@ void write_outputs(const std::vector<std::filesystem::path>& outputs, const Rend
       meta.strings["prism:scene"] = scene_name;
       meta.strings["prism:transport"] = describe(settings.transport);
       meta.strings["prism:sampler"] = std::string(sampler_name(settings.path.sampler));
+      meta.strings["prism:estimator"] = std::string(light_estimator_name(settings.path.estimator));
       meta.strings["prism:normalMapping"] = std::string(normal_mapping_name(settings.path.normal_mapping));
       meta.ints["prism:spp"] = result.passes_done;
       meta.doubles["prism:renderSeconds"] = result.elapsed_seconds;

@@ -81,6 +81,12 @@ for sampler in independent sobol zsobol; do
     >"$work/stdout" 2>"$work/stderr" || fail "--sampler $sampler failed: $(cat "$work/stderr")"
   grep -aq "$sampler" "$work/out/s.exr" || fail "--sampler $sampler: EXR lacks prism:sampler metadata"
 done
+# The EXR names the direct-light estimator that made it.
+rm -rf "$work/out"; mkdir -p "$work/out"
+"$prism" render cornell-box --width 8 --height 8 --spp 1 --estimator bsdf -o "$work/out/e.exr" >/dev/null 2>&1 ||
+  fail "--estimator bsdf failed"
+grep -aq "prism:estimator" "$work/out/e.exr" && grep -aq "bsdf" "$work/out/e.exr" ||
+  fail "--estimator bsdf: EXR lacks prism:estimator metadata"
 # Either normal-mapping model renders, and the EXR says which one made it.
 for model in classic microfacet; do
   rm -rf "$work/out"; mkdir -p "$work/out"

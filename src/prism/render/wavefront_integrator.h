@@ -26,6 +26,7 @@
 #include "prism/accel/embree_accel.h"
 #include "prism/bsdf/microfacet_normal_mapping.h"
 #include "prism/bsdf/normal_mapping_model.h"
+#include "prism/render/light_estimator.h"
 #include "prism/core/mat3.h"
 #include "prism/render/aov.h"
 #include "prism/render/color_context.h"
@@ -41,14 +42,11 @@ namespace prism {
 
 struct SurfaceInteraction;
 
-// How direct light is estimated. All three converge to the same image; mis has the
-// lowest variance. nee_only and bsdf_only exist to test that claim.
-enum class LightEstimator { mis, nee_only, bsdf_only };
 
 struct PathSettings {
   int max_depth = 8;               // scattering events; 1 = direct lighting only
   int russian_roulette_depth = 3;  // roulette starts after this many bounces
-  LightEstimator estimator = LightEstimator::mis;
+  LightEstimator estimator = LightEstimator::mis;  // render/light_estimator.h
   // Where each path's random numbers come from. sobol is the default by measurement
   // (BENCHMARKS.md "sampler": about half the RMSE of independent sampling at 256 spp on the
   // Cornell box, also at equal time).

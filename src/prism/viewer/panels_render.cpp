@@ -99,8 +99,11 @@ bool render_settings_panel(RenderControls& c) {
       changed = true;
     }
   }
-  int estimator = static_cast<int>(c.settings.path.estimator);
-  if (combo("estimator", estimator, {"mis", "nee", "bsdf"})) {
+  int estimator = static_cast<int>(c.settings.path.estimator);  // LightEstimator's order
+  if (combo("estimator", estimator,
+            {std::string(light_estimator_name(LightEstimator::mis)),
+             std::string(light_estimator_name(LightEstimator::nee_only)),
+             std::string(light_estimator_name(LightEstimator::bsdf_only))})) {
     c.settings.path.estimator = static_cast<LightEstimator>(estimator);
     changed = true;
   }
@@ -110,7 +113,9 @@ bool render_settings_panel(RenderControls& c) {
     changed = true;
   }
   int normal_mapping = static_cast<int>(c.settings.path.normal_mapping);  // NormalMapping's order
-  if (combo("normal maps", normal_mapping, {"classic", "microfacet"})) {
+  if (combo("normal maps", normal_mapping,
+            {std::string(normal_mapping_name(NormalMapping::classic)),
+             std::string(normal_mapping_name(NormalMapping::microfacet))})) {
     c.settings.path.normal_mapping = static_cast<NormalMapping>(normal_mapping);
     changed = true;
   }

@@ -87,6 +87,7 @@ TEST(Integrator, LosslessObjectsVanishInAUniformField) {
       object.base_color = Vec3f(1.0f);
     } else {
       object.type = MaterialType::dielectric;
+      object.base_color = Vec3f(1.0f);  // clear: the base colour tints transmission
       object.roughness = 0.0f;
       object.ior = 1.5f;
       if (std::string(kind) == "dispersive-glass") {

@@ -29,6 +29,7 @@ Scene floor_behind_pane(int pane_kind) {  // 0: none, 1: thin-walled, 2: plain d
   floor.emission.texture = 0;
   Material glass;
   glass.type = MaterialType::dielectric;
+  glass.base_color = Vec3f(1.0f);  // clear: the base colour tints transmission
   glass.roughness = 0.0f;
   glass.ior = 1.5f;
   glass.thin_walled = pane_kind == 1;

@@ -48,6 +48,9 @@ template <int N>
 struct Dielectric {
   color::SampledSpectrum<N> eta{1.5f};
   MicrofacetDistribution distribution = MicrofacetDistribution::isotropic(MicrofacetType::ggx, 0.0f);
+  // Multiplies transmitted light at each crossing, in [0, 1] per channel; reflection is
+  // untinted (glTF KHR_materials_transmission: the BTDF is weighted by the base colour).
+  color::SampledSpectrum<N> transmission_tint{1.0f};
 
   bool is_specular() const { return distribution.effectively_smooth(); }
   bool is_dispersive() const {
@@ -60,9 +63,12 @@ struct Dielectric {
                                  TransportMode mode = TransportMode::radiance) const {
     if (is_specular()) return {};
     color::SampledSpectrum<N> f;
-    if (!is_dispersive()) return color::SampledSpectrum<N>(detail::rough_dielectric_f_pdf(distribution, wo, wi, eta[0], mode, nullptr));
-    for (int c = 0; c < N; ++c) f[c] = detail::rough_dielectric_f_pdf(distribution, wo, wi, eta[c], mode, nullptr);
-    return f;
+    if (!is_dispersive()) {
+      f = color::SampledSpectrum<N>(detail::rough_dielectric_f_pdf(distribution, wo, wi, eta[0], mode, nullptr));
+    } else {
+      for (int c = 0; c < N; ++c) f[c] = detail::rough_dielectric_f_pdf(distribution, wo, wi, eta[c], mode, nullptr);
+    }
+    return wo.z * wi.z < 0.0f ? f * transmission_tint : f;
   }
 
   float pdf(const Vec3f& wo, const Vec3f& wi) const {
@@ -102,12 +108,14 @@ struct Dielectric {
         if (s.is_transmission && mode == TransportMode::radiance) weight[c] /= s.eta * s.eta;
       }
       s.f = weight * (1.0f / abs_cos_theta(s.wi));
+      if (s.is_transmission) s.f = s.f * transmission_tint;
       return s.pdf > 0.0f ? std::optional(s) : std::nullopt;
     }
     const float f0 = detail::rough_dielectric_f_pdf(distribution, wo, s.wi, eta0, mode, &s.pdf);
     if (s.pdf == 0.0f || f0 == 0.0f) return std::nullopt;
     if (s.dispersive) s.f[0] = f0;
     else s.f = color::SampledSpectrum<N>(f0);
+    if (s.is_transmission) s.f = s.f * transmission_tint;
     return s;
   }
 };

@@ -29,6 +29,7 @@ inline float thin_slab_reflectance(float r) {
 template <int N>
 struct ThinDielectric {
   color::SampledSpectrum<N> eta{1.5f};  // η_slab / η_surrounding per channel
+  color::SampledSpectrum<N> transmission_tint{1.0f};  // multiplies T' (glTF: the base colour), in [0, 1]
 
   // R' per channel at the incidence cosine (either side: the slab is symmetric).
   color::SampledSpectrum<N> reflectance(float cos_theta) const {
@@ -57,7 +58,7 @@ struct ThinDielectric {
       s.pdf = p_reflect;
     } else {
       s.wi = -wo;
-      s.f = (color::SampledSpectrum<N>(1.0f) - r) * inv_cos;
+      s.f = (color::SampledSpectrum<N>(1.0f) - r) * transmission_tint * inv_cos;
       s.pdf = 1.0f - p_reflect;
       s.is_transmission = true;
     }

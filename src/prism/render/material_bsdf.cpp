@@ -78,10 +78,14 @@ bsdf::Bsdf<Mode::kChannels> make_bsdf(const Material& m, std::uint32_t material_
         const double nm = Mode::kSpectral ? channel_wavelength_nm<Mode>(w, c) : kDLineWavelengthNm;
         eta[c] = static_cast<float>(dielectric_ior(m, nm));
       }
+      // The base colour tints transmitted light (glTF KHR_materials_transmission, MTL Ks,
+      // JSON base_color), clamped to [0, 1] so that no crossing adds energy.
+      color::SampledSpectrum<N> tint;
+      for (int c = 0; c < N; ++c) tint[c] = std::clamp(base[c], 0.0f, 1.0f);
       // Thin-walled (glTF transmission without KHR_materials_volume, pbrt's
       // thindielectric): a smooth slab, roughness ignored (bsdf/thin_dielectric.h).
-      if (m.thin_walled) return {bsdf::ThinDielectric<N>{eta}};
-      return {bsdf::Dielectric<N>{eta, distribution}};
+      if (m.thin_walled) return {bsdf::ThinDielectric<N>{eta, tint}};
+      return {bsdf::Dielectric<N>{eta, distribution, tint}};
     }
     case MaterialType::metallic_roughness:
       return {bsdf::MetallicRoughness<N>::from_roughness(base, std::clamp(point.metallic, 0.0f, 1.0f), point.roughness)};

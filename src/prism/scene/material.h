@@ -17,7 +17,7 @@ enum class MaterialType : std::uint8_t {
   diffuse,             // Lambertian, reflectance = base_color
   mirror,              // perfect specular reflection, tinted by base_color
   conductor,           // rough (GGX) metal: Schlick from F0 = base_color, or complex IOR by name
-  dielectric,          // smooth or rough (GGX) glass; constant or dispersive IOR
+  dielectric,          // smooth or rough glass; constant or dispersive IOR; transmission tinted by base_color
   metallic_roughness,  // glTF 2.0: Lambert + GGX specular, dielectric F0 0.04 blended by metallic
 };
 
@@ -49,7 +49,7 @@ struct Emission {
 struct Material {
   std::string name;
   MaterialType type = MaterialType::diffuse;
-  Vec3f base_color{0.8f};        // albedo / specular tint / F0, linear Rec.709
+  Vec3f base_color{0.8f};        // albedo / specular tint / F0 / glass tint (1: clear), linear Rec.709
   int base_color_texture = -1;   // index into Scene::textures; multiplies base_color
   // Measured reflectance in [0, 1] instead of an RGB base colour (no texture then);
   // base_color holds its colour under D65 (scene/spectral_inputs.h).

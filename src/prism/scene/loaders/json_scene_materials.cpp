@@ -125,7 +125,8 @@ void JsonSceneReader::read_material(const JsonValue& value) {
                                                 {"conductor", MaterialType::conductor},
                                                 {"dielectric", MaterialType::dielectric},
                                                 {"metallic_roughness", MaterialType::metallic_roughness}});
-  m.base_color = value.get_vec3("base_color", m.base_color);
+  // Glass is untinted unless a colour is given (the 0.8 albedo default would darken it).
+  m.base_color = value.get_vec3("base_color", m.type == MaterialType::dielectric ? Vec3f(1.0f) : m.base_color);
   if (min(m.base_color, Vec3f(0.0f)) != Vec3f(0.0f)) value["base_color"].fail("colour components must not be negative");
   if (auto t = value.find("base_color_texture")) m.base_color_texture = read_texture(*t, TextureEncoding::srgb);
   if (auto s = value.find("base_color_spectrum")) {
@@ -148,9 +149,13 @@ void JsonSceneReader::read_material(const JsonValue& value) {
   m.normal_scale = value.get_float("normal_scale", m.normal_scale, -100.0f, 100.0f);
   if (auto t = value.find("bump_texture")) m.bump_texture = read_texture(*t, TextureEncoding::linear);
   m.bump_scale = value.get_float("bump_scale", m.bump_scale, -1e6f, 1e6f);
-  if (auto mf = value.find("microfacet"))
+  if (auto mf = value.find("microfacet")) {
     m.microfacet = mf->as_enum<MicrofacetModel>(
         {{"ggx", MicrofacetModel::ggx}, {"beckmann", MicrofacetModel::beckmann}, {"blinn_phong", MicrofacetModel::blinn_phong}});
+    // Only conductors and glass take a distribution; glTF's metallic-roughness model is GGX.
+    if (m.microfacet != MicrofacetModel::ggx && m.type != MaterialType::conductor && m.type != MaterialType::dielectric)
+      mf->fail("only conductor and dielectric materials take another distribution than ggx");
+  }
   if (auto c = value.find("conductor")) {
     m.conductor_name = c->as_string();
     if (m.conductor_name != "Au" && m.conductor_name != "Ag" && m.conductor_name != "Cu" && m.conductor_name != "Al")
@@ -163,7 +168,20 @@ void JsonSceneReader::read_material(const JsonValue& value) {
     read_dispersion(m, *d);
   }
   m.thin_walled = value.get_bool("thin_walled", m.thin_walled);
-  m.transmission = value.get_float("transmission", m.transmission, 0.0f, 1.0f);
+  if (auto t = value.find("transmission")) {
+    // glTF's rule (KHR_materials_transmission, as the glTF reader applies it): a
+    // transmitting metallic-roughness material is glass tinted by its base colour.
+    m.transmission = t->as_float(0.0f, 1.0f);
+    if (m.transmission > 0.0f && m.type == MaterialType::metallic_roughness) {
+      m.type = MaterialType::dielectric;
+      if (!value.has("base_color") && !m.base_color_spectrum) m.base_color = Vec3f(1.0f);  // as for glass
+      if (m.transmission < 1.0f || m.metallic > 0.0f)
+        scene.warnings.push_back(fmt::format("{}: {}: partial transmission/metallic mixed into a dielectric",
+                                             document.source, t->path()));
+    } else if (m.transmission > 0.0f && m.type != MaterialType::dielectric) {
+      t->fail("only metallic_roughness (glTF's transmission) and dielectric materials transmit");
+    }
+  }
   if (auto a = value.find("alpha_mode"))
     m.alpha_mode = a->as_enum<AlphaMode>({{"opaque", AlphaMode::opaque}, {"mask", AlphaMode::mask}, {"blend", AlphaMode::blend}});
   m.alpha_cutoff = value.get_float("alpha_cutoff", m.alpha_cutoff, 0.0f, 1.0f);

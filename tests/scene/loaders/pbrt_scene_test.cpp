@@ -258,6 +258,28 @@ AttributeBegin
   EXPECT_NEAR(s.materials[s.meshes[1].material].emission.luminance_nits, 2.0f, 1e-4f);
 }
 
+// pbrt-v4 multiplies the intensity or radiance that `power` sets by `scale` (its
+// PointLight, SpotLight and DiffuseAreaLight ::Create), and ignores a power of 0.
+TEST(PbrtLoader, ScaleMultipliesWhatPowerSets) {
+  const Scene s = parse(std::string(R"(
+WorldBegin
+LightSource "point" "float power" 100 "float scale" 2
+LightSource "spot" "point3 from" [0 0 0] "point3 to" [0 -1 0] "float coneangle" 40 "float conedelta" 10 "float power" 10 "float scale" 3
+LightSource "point" "float power" 0 "float scale" 4
+AttributeBegin
+  AreaLightSource "diffuse" "float power" 3.14159265 "float scale" 2
+)") + std::string(kTriangle) + "AttributeEnd\n");
+  ASSERT_EQ(s.lights.size(), 3u);
+  EXPECT_NEAR(s.lights[0].intensity, 2.0 * 100.0 / (4.0 * 3.14159265), 1e-3);
+  // Spot: Φ over 2π (1 − (cos 30° + cos 40°)/2), times 3.
+  const double spot_solid_angle = 2.0 * 3.14159265 * (1.0 - 0.5 * (std::cos(30.0 * 3.14159265 / 180.0) +
+                                                                  std::cos(40.0 * 3.14159265 / 180.0)));
+  EXPECT_NEAR(s.lights[1].intensity, 3.0 * 10.0 / spot_solid_angle, 1e-3);
+  EXPECT_NEAR(s.lights[2].intensity, 4.0, 1e-4);  // power 0: the light as given, I = 1 × scale
+  // power π on a triangle of area 1/2, one side: L = Φ / (π A) = 2, times 2.
+  EXPECT_NEAR(s.materials[s.meshes[0].material].emission.luminance_nits, 4.0f, 1e-4f);
+}
+
 // Light spectra pbrt-v4 can name or tabulate are rendered as data (scene/spectral_inputs.h),
 // normalised to unit luminance times `scale` as pbrt-v4 does; so are sampled reflectances
 // within [0, 1]. Other named spectra keep their RGB approximation (and its warning).

@@ -89,8 +89,10 @@ void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
       const double co = std::cos(cone * std::numbers::pi / 180.0);
       solid_angle = 2.0 * std::numbers::pi * (1.0 - 0.5 * (ci + co));
     }
+    // pbrt-v4 (PointLight/SpotLight::Create): `scale` multiplies the intensity that
+    // `power` sets, and a power of 0 leaves the light as given.
     const double power = optional_power(p);
-    if (power >= 0.0) light.intensity = static_cast<float>(power / std::max(solid_angle, 1e-12));
+    if (power > 0.0) light.intensity = static_cast<float>(light_scale(p) * power / std::max(solid_angle, 1e-12));
   } else if (type == "distant") {
     const LightColor c = light_color(p, "L", approximations_);
     light.type = LightType::directional;
@@ -178,8 +180,10 @@ void PbrtBuilder::area_light_source(const std::string& type, const PbrtParams& p
   light.luminance_nits = c.luminance;
   light.spectrum = c.spectrum;
   light.two_sided = p.get_bool("twosided", false);
+  // pbrt-v4 (DiffuseAreaLight::Create): `scale` multiplies the radiance `power` sets; a
+  // power of 0 leaves the light as given.
   const double power = optional_power(p);
-  if (power >= 0.0) light.power = power;
+  if (power > 0.0) light.power = light_scale(p) * power;
   if (p.has("filename")) ignore("AreaLightSource \"filename\"", p);
   note_unused("AreaLightSource", p);
   state_.area_light = light;

@@ -172,7 +172,8 @@ TEST(GltfLoader, MaterialsExtensionsAndLights) {
   EXPECT_TRUE(glass.thin_walled);
   ASSERT_EQ(s.lights.size(), 3u);
   EXPECT_EQ(s.lights[0].type, LightType::point);
-  EXPECT_FLOAT_EQ(s.lights[0].intensity, 100.0f);
+  // KHR_lights_punctual: color × intensity, so the luminous intensity is 100 × Y(color).
+  EXPECT_NEAR(s.lights[0].intensity, 100.0 * relative_luminance(Vec3f(1, 0.5f, 0.5f), ColorPickerSpace::srgb), 1e-4);
   EXPECT_EQ(s.lights[0].position, Vec3f(1, 2, 3));
   EXPECT_EQ(s.lights[1].type, LightType::spot);
   EXPECT_NEAR(s.lights[1].spot_outer_angle_degrees, 0.5 * 180.0 / std::numbers::pi, 1e-4);

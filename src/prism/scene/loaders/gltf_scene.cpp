@@ -11,6 +11,7 @@
 
 #include "prism/core/error.h"
 #include "prism/io/read_to_end.h"
+#include "prism/scene/emission.h"
 #include "prism/scene/loaders/gltf_accessors.h"
 #include "prism/scene/loaders/gltf_builder.h"
 #include "prism/scene/loaders/mesh_checks.h"
@@ -251,8 +252,13 @@ void GltfBuilder::add_light(int index, const Transform& to_world) {
   light.name = l.name.empty() ? fmt::format("light{}", index) : l.name;
   if (l.color.size() == 3)
     light.color = Vec3f(static_cast<float>(l.color[0]), static_cast<float>(l.color[1]), static_cast<float>(l.color[2]));
+  if (!is_finite(light.color) || min(light.color, Vec3f(0.0f)) != Vec3f(0.0f))
+    fail(fmt::format("light {}: color components must be finite and ≥ 0", index));
   if (!(l.intensity >= 0.0) || !std::isfinite(l.intensity)) fail(fmt::format("light {}: intensity must be ≥ 0", index));
-  light.intensity = static_cast<float>(l.intensity);  // candela (point, spot) or lux (directional)
+  // KHR_lights_punctual: the emitted light is color × intensity, intensity in candela
+  // (point, spot) or lux (directional): Prism's intensity is the luminance of that product
+  // (its colour is the chromaticity), so a darker colour is a dimmer light.
+  light.intensity = static_cast<float>(l.intensity * relative_luminance(light.color, ColorPickerSpace::srgb));
   light.position = to_world.apply_point(Vec3f(0.0f));
   const Vec3f axis = to_world.apply_vector(Vec3f(0.0f, 0.0f, -1.0f));
   if (l.type == "point") {

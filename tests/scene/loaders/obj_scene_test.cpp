@@ -3,6 +3,7 @@
 #include "prism/core/error.h"
 #include "prism/io/png.h"
 #include "prism/scene/load_scene.h"
+#include "prism/scene/texture_sampling.h"
 #include "prism/scene/loaders/mtl_material.h"
 #include "prism/scene/loaders/obj_scene.h"
 #include "scene/loaders/loader_test_files.h"
@@ -123,6 +124,47 @@ TEST(ObjLoader, BumpAndNormalMapsFromMtl) {
   dir.write("quad.mtl", "newmtl bumpy\nmap_Bump missing.png\n");
   message = error_of<IoError>([&] { load_scene(dir.write("missing.obj", obj).string()); });
   EXPECT_NE(message.find("material 'bumpy' bump: cannot read image"), std::string::npos) << message;
+}
+
+// MTL -s and -o scale and offset the texture coordinates (uv_t = s·uv + o with the OBJ's
+// upward v, as three.js and Blender read them): a vertex's vt (u, v) must look the image up
+// at (s_u u + o_u, 1 − (s_v v + o_v)) in Prism's downward-v image coordinates.
+TEST(ObjLoader, MtlScaleAndOffsetMoveTheTextureCoordinates) {
+  test::ScratchFolder dir;
+  dir.write("quad.mtl", "newmtl moved\nKd 1 1 1\nmap_Kd -s 2 3 1 -o 0.25 0.5 0 tex.png\n"
+                        "newmtl plain\nKd 1 1 1\nmap_Kd tex.png\n");
+  write_png(dir / "tex.png", EncodedImage{1, 1, 3, 8, {10, 20, 30}});
+  const Scene scene = load_scene(dir.write("quad.obj", std::string(kQuadObj)).string());
+  const TextureImage& moved = scene.textures[static_cast<std::size_t>(scene.materials[0].base_color_texture)];
+  const TextureImage& plain = scene.textures[static_cast<std::size_t>(scene.materials[1].base_color_texture)];
+  EXPECT_NE(scene.materials[0].base_color_texture, scene.materials[1].base_color_texture);
+  EXPECT_EQ(moved.width, plain.width);  // the same image, its own addressing
+  EXPECT_FLOAT_EQ(moved.value(2), plain.value(2));
+  const float u = 0.1f, v = 0.2f;  // an OBJ vt; Prism's uv is (u, 1 − v)
+  const Vec2f t = apply_uv_transform(moved, Vec2f(u, 1.0f - v));
+  EXPECT_NEAR(t.x, 2.0f * u + 0.25f, 1e-6f);
+  EXPECT_NEAR(t.y, 1.0f - (3.0f * v + 0.5f), 1e-6f);
+  const Vec2f p = apply_uv_transform(plain, Vec2f(u, 1.0f - v));
+  EXPECT_NEAR(p.x, u, 1e-6f);
+  EXPECT_NEAR(p.y, 1.0f - v, 1e-6f);
+  for (const std::string& w : scene.warnings) EXPECT_EQ(w.find("map_Kd"), std::string::npos) << w;
+}
+
+// What the MTL reader does not read is named in its one warning: the PBR extension and a
+// coloured transmission filter; a white Tf (what exporters write) and Ka are not noise.
+TEST(ObjLoader, UnreadPbrExtensionAndTfAreWarned) {
+  test::ScratchFolder dir;
+  const auto warnings_for = [&](std::string_view mtl) {
+    dir.write("quad.mtl", std::string("newmtl m\nKd 0.5 0.5 0.5\n") + std::string(mtl));
+    std::string all;
+    for (const std::string& w : load_scene(dir.write("quad.obj", std::string(kQuadObj)).string()).warnings)
+      all += w + "\n";
+    return all;
+  };
+  EXPECT_NE(warnings_for("Pr 0.3\nPm 1\n").find("PBR extension"), std::string::npos);
+  EXPECT_NE(warnings_for("Tf 0.2 0.8 0.2\n").find("Tf"), std::string::npos);
+  const std::string quiet = warnings_for("Ka 0.1 0.1 0.1\nTf 1 1 1\n");
+  EXPECT_EQ(quiet.find("MTL parameters ignored"), std::string::npos) << quiet;
 }
 
 TEST(ObjLoader, PhongExponentToRoughness) {

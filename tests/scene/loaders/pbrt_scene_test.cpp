@@ -190,6 +190,22 @@ TEST(PbrtLoader, TheFirstBadImageIsReportedWithItsLine) {
   EXPECT_NE(message.find("scene.pbrt:3"), std::string::npos) << message;
 }
 
+// "bool invert" is not applied, and says so (it used to be marked as read and dropped).
+TEST(PbrtLoader, InvertedImageMapsAreWarned) {
+  test::ScratchFolder dir;
+  write_png(dir / "g.png", EncodedImage{1, 1, 1, 8, {128}});
+  const auto warnings_for = [&](std::string_view invert) {
+    const std::string text = "WorldBegin\nTexture \"g\" \"spectrum\" \"imagemap\" \"string filename\" \"g.png\" " +
+                             std::string(invert) + "\nMaterial \"diffuse\" \"texture reflectance\" \"g\"\n";
+    std::string all;
+    for (const std::string& w : load_pbrt_scene(dir.write("scene.pbrt", text + std::string(kTriangle))).warnings)
+      all += w + "\n";
+    return all;
+  };
+  EXPECT_NE(warnings_for("\"bool invert\" true").find("imagemap \"invert\""), std::string::npos);
+  EXPECT_EQ(warnings_for("\"bool invert\" false").find("invert"), std::string::npos);
+}
+
 // A material's "texture displacement" (a float texture) is a bump map: the image, with the
 // texture's "scale" as the bump scale; a constant "float displacement" bends nothing.
 TEST(PbrtLoader, DisplacementIsABumpMap) {

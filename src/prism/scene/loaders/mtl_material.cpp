@@ -74,6 +74,14 @@ Material material_from_mtl(const tinyobj::material_t& mtl, std::vector<std::stri
   if (!mtl.specular_texname.empty()) ignored.push_back("map_Ks");
   if (!mtl.alpha_texname.empty()) ignored.push_back("map_d");
   if (!mtl.ambient_texname.empty()) ignored.push_back("map_Ka");
+  // The PBR extension (Pr, Pm, Ps, Pc, Pcr and their maps) and a coloured transmission
+  // filter are not read; tinyobjloader gives 0 for what a file leaves out, and exporters
+  // write a white Tf for every material.
+  if (mtl.roughness != 0.0f || mtl.metallic != 0.0f || mtl.sheen != 0.0f || mtl.clearcoat_thickness != 0.0f ||
+      mtl.clearcoat_roughness != 0.0f || !mtl.roughness_texname.empty() || !mtl.metallic_texname.empty() ||
+      !mtl.sheen_texname.empty())
+    ignored.push_back("PBR extension (Pr, Pm, Ps, Pc, Pcr, map_Pr, map_Pm, map_Ps)");
+  if (rgb(mtl.transmittance) != Vec3f(1.0f) && rgb(mtl.transmittance) != Vec3f(0.0f)) ignored.push_back("Tf");
   return m;
 }
 

@@ -201,7 +201,8 @@ PbrtTexture PbrtBuilder::imagemap(const std::string& name, const PbrtParams& p) 
   }
   const double scale = p.get_float("scale", 1.0);
   t.value = Vec3f(static_cast<float>(scale));
-  for (const char* n : {"filter", "maxanisotropy", "invert"}) p.find(n);
+  for (const char* n : {"filter", "maxanisotropy"}) p.find(n);
+  if (p.get_bool("invert", false)) ignore("imagemap \"invert\"", p);  // 1 − value: not applied
   return t;
 }
 

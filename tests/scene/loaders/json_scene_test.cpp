@@ -121,6 +121,23 @@ TEST(JsonScene, InstancesTransformsAndSpheres) {
   EXPECT_EQ(scene.instances[2].mesh, 0u);
 }
 
+// A prototype appears only through instances, also in a scene without any: the other
+// meshes are placed once, and a scene of prototypes alone is an error, not an empty image.
+TEST(JsonScene, PrototypesWithoutInstancesAreNotPlaced) {
+  std::string text = quad_scene();
+  text.replace(text.find("\n  ]\n}"), 4, R"(,
+    {"name": "ball", "material": "m", "shape": "sphere", "center": [0,0,0], "radius": 1, "prototype": true}
+  ])");
+  const Scene scene = parse(text);
+  ASSERT_EQ(scene.meshes.size(), 2u);
+  ASSERT_EQ(scene.instances.size(), 1u);  // the quad alone
+  EXPECT_EQ(scene.instances[0].mesh, 0u);
+  std::string only = quad_scene();
+  only.replace(only.find(R"("indices": [0,1,2, 0,2,3]})"), 29, R"("indices": [0,1,2, 0,2,3], "prototype": true})");
+  const std::string message = error_of<SceneError>([&] { parse(only); });
+  EXPECT_NE(message.find("meshes: every mesh is a prototype"), std::string::npos) << message;
+}
+
 TEST(JsonScene, MalformedJsonReportsLineAndColumn) {
   const std::string text = "{\n  \"format\": \"prism-scene/1\",\n  \"materials\": [,]\n}\n";
   const std::string message = error_of<SceneError>([&] { parse(text); });

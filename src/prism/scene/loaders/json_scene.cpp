@@ -1,5 +1,6 @@
 #include "prism/scene/loaders/json_scene.h"
 
+#include <algorithm>
 #include <optional>
 
 #include <fmt/format.h>
@@ -53,12 +54,18 @@ void read_document(JsonSceneReader& reader, const JsonValue& root) {
     for (const JsonValue& m : ms->elements()) reader.read_material(m);
   if (auto ms = root.find("meshes"))
     for (const JsonValue& m : ms->elements()) reader.read_mesh(m);
-  if (auto is = root.find("instances")) {
+  if (auto is = root.find("instances"))
     for (const JsonValue& i : is->elements()) reader.read_instance(i);
-    // With explicit instances, every mesh that is not a prototype is still placed once.
-    if (!scene.instances.empty())
-      for (std::uint32_t m = 0; m < scene.meshes.size(); ++m)
-        if (!reader.mesh_is_prototype[m]) scene.instances.push_back({m, Transform{}});
+  // With instances or prototypes, every mesh that is not a prototype is placed once where it
+  // is, and prototypes only through instances (no instances at all: every mesh once).
+  const auto& prototypes = reader.mesh_is_prototype;
+  const bool has_prototype = std::find(prototypes.begin(), prototypes.end(), true) != prototypes.end();
+  if (!scene.instances.empty() || has_prototype) {
+    const std::size_t placed = scene.instances.size();
+    for (std::uint32_t m = 0; m < scene.meshes.size(); ++m)
+      if (!reader.mesh_is_prototype[m]) scene.instances.push_back({m, Transform{}});
+    if (scene.instances.empty() && placed == 0)
+      root["meshes"].fail("every mesh is a prototype and no instance places one: the scene would be empty");
   }
   if (auto ls = root.find("lights"))
     for (const JsonValue& l : ls->elements()) reader.read_light(l);

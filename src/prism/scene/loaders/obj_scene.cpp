@@ -137,11 +137,10 @@ class MeshBuilder {
 // The image is decoded with the others at the end of the load (texture_cache.h); an error
 // decoding it names the material and map that asked for it, then the file.
 // MTL's -s (scale) and -o (origin offset) of the texture coordinates become the texture's
-// own (a copy of the image, as pbrt-v4's uscale/udelta do). uv_t = s·uv + o in the OBJ's
-// upward v, as three.js's MTLLoader (repeat = s, offset = o) and Blender's importer read
-// them; with Prism's downward v (v' = 1 − v) the v offset is 1 − s_v − o_v.
-int load_material_texture(Scene& scene, const ObjContext& context, const std::string& name,
-                          TextureEncoding encoding, const tinyobj::texture_option_t& option, const std::string& where,
+// own (a copy of the image, as pbrt-v4's uscale/udelta do): uv_t = s·uv + o in the OBJ's
+// upward v, as three.js's MTLLoader (repeat = s, offset = o) and Blender's importer read them.
+int load_material_texture(const ObjContext& context, const std::string& name, TextureEncoding encoding,
+                          const tinyobj::texture_option_t& option, const std::string& where,
                           TextureCache::ImageCheck check = {}) {
   const std::filesystem::path path =
       resolve_scene_reference(context.dir, name, context.options.allow_external_paths, where);
@@ -151,13 +150,7 @@ int load_material_texture(Scene& scene, const ObjContext& context, const std::st
   if (su == 1.0f && sv == 1.0f && ou == 0.0f && ov == 0.0f) return index;
   if (!std::isfinite(su) || !std::isfinite(sv) || !std::isfinite(ou) || !std::isfinite(ov))
     throw SceneError(fmt::format("{}: -s and -o must be finite numbers", where));
-  TextureImage copy = context.textures->image(index);  // the texels again, with this addressing
-  copy.scale_u = su;
-  copy.scale_v = sv;
-  copy.offset_u = ou;
-  copy.offset_v = 1.0f - sv - ov;
-  scene.textures.push_back(std::move(copy));
-  return static_cast<int>(scene.textures.size() - 1);
+  return context.textures->add_with_uv_transform(index, su, sv, ou, ov);
 }
 
 std::vector<std::uint32_t> add_materials(Scene& scene, const std::vector<tinyobj::material_t>& materials,
@@ -173,22 +166,22 @@ std::vector<std::uint32_t> add_materials(Scene& scene, const std::vector<tinyobj
         ignored.push_back("map_Kd/map_Ke/bump/norm (no texture support here)");
       } else {
         if (!mtl.diffuse_texname.empty())
-          m.base_color_texture = load_material_texture(scene, context, mtl.diffuse_texname,
-                                                       TextureEncoding::srgb, mtl.diffuse_texopt, where + " map_Kd");
+          m.base_color_texture = load_material_texture(context, mtl.diffuse_texname, TextureEncoding::srgb,
+                                                       mtl.diffuse_texopt, where + " map_Kd");
         if (!mtl.emissive_texname.empty())
-          m.emission.texture = load_material_texture(scene, context, mtl.emissive_texname,
-                                                     TextureEncoding::srgb, mtl.emissive_texopt, where + " map_Ke");
+          m.emission.texture = load_material_texture(context, mtl.emissive_texname, TextureEncoding::srgb,
+                                                     mtl.emissive_texopt, where + " map_Ke");
         // bump / map_Bump: heights (linear data) times its -bm multiplier, in scene units.
         if (!mtl.bump_texname.empty()) {
-          m.bump_texture = load_material_texture(scene, context, mtl.bump_texname, TextureEncoding::linear,
-                                                 mtl.bump_texopt, where + " bump");
+          m.bump_texture = load_material_texture(context, mtl.bump_texname, TextureEncoding::linear, mtl.bump_texopt,
+                                                 where + " bump");
           const float multiplier = mtl.bump_texopt.bump_multiplier;
           m.bump_scale = std::isfinite(multiplier) ? multiplier : 1.0f;
         }
         // norm: a tangent-space normal map, +y up the image (glTF's convention).
         if (!mtl.normal_texname.empty()) {
           m.normal_texture = load_material_texture(
-              scene, context, mtl.normal_texname, TextureEncoding::linear, mtl.normal_texopt, where + " norm",
+              context, mtl.normal_texname, TextureEncoding::linear, mtl.normal_texopt, where + " norm",
               [where](const TextureImage& image) {
                 if (image.channels < 3)
                   throw SceneError(fmt::format("{} norm: a normal map needs an RGB image", where));

@@ -185,20 +185,12 @@ PbrtTexture PbrtBuilder::imagemap(const std::string& name, const PbrtParams& p) 
   } catch (const IoError& e) {
     throw IoError(fmt::format("{}: {}", context, e.what()));
   }
-  // pbrt-v4 looks images up at t = 1 − (vscale·v + vdelta) with v up the image, Prism at
-  // offset + scale·v' with v' = 1 − v down it (uvs are flipped in pbrt_shapes.cpp):
-  // scale = vscale, offset = 1 − vscale − vdelta.
+  // pbrt-v4 looks images up at t = 1 − (vscale·v + vdelta) with v up the image (uvs are
+  // flipped in pbrt_shapes.cpp; texture_cache.h turns that into Prism's addressing).
   const double su = p.get_float("uscale", 1.0), sv = p.get_float("vscale", 1.0);
   const double du = p.get_float("udelta", 0.0), dv = p.get_float("vdelta", 0.0);
-  if (su != 1.0 || sv != 1.0 || du != 0.0 || dv != 0.0) {
-    TextureImage copy = textures_->image(t.image);  // the texels again, with this addressing
-    copy.scale_u = static_cast<float>(su);
-    copy.scale_v = static_cast<float>(sv);
-    copy.offset_u = static_cast<float>(du);
-    copy.offset_v = static_cast<float>(1.0 - sv - dv);
-    scene_.textures.push_back(std::move(copy));
-    t.image = static_cast<int>(scene_.textures.size() - 1);
-  }
+  if (su != 1.0 || sv != 1.0 || du != 0.0 || dv != 0.0)
+    t.image = textures_->add_with_uv_transform(t.image, su, sv, du, dv);
   const double scale = p.get_float("scale", 1.0);
   t.value = Vec3f(static_cast<float>(scale));
   for (const char* n : {"filter", "maxanisotropy"}) p.find(n);

@@ -99,6 +99,17 @@ const TextureImage& TextureCache::image(int index) {
   return scene_.textures.at(static_cast<std::size_t>(index));
 }
 
+int TextureCache::add_with_uv_transform(int index, double scale_u, double scale_v, double offset_u,
+                                        double offset_v_upward) {
+  TextureImage copy = image(index);  // the texels again, with this addressing
+  copy.scale_u = static_cast<float>(scale_u);
+  copy.scale_v = static_cast<float>(scale_v);
+  copy.offset_u = static_cast<float>(offset_u);
+  copy.offset_v = static_cast<float>(1.0 - scale_v - offset_v_upward);
+  scene_.textures.push_back(std::move(copy));
+  return static_cast<int>(scene_.textures.size() - 1);
+}
+
 void TextureCache::rethrow_first_error(std::exception_ptr error) {
   finish();  // throws the first failure among the images asked for before `error`
   std::rethrow_exception(error);

@@ -48,6 +48,11 @@ class TextureCache {
   void finish();
   // The decoded image of `index` (a sync: finish() first).
   const TextureImage& image(int index);
+  // A new texture: the image of `index` (a sync) looked up at s·uv + d, uv with v UP the
+  // image (pbrt-v4's uscale/vscale/udelta/vdelta, MTL's -s/-o). Prism's v runs down it
+  // (v' = 1 − v, as the loaders flip uvs): scale (s_u, s_v), offset (d_u, 1 − s_v − d_v).
+  // Returns the new texture's index.
+  int add_with_uv_transform(int index, double scale_u, double scale_v, double offset_u, double offset_v_upward);
   // For a loader that failed with `error`: what decoding one image at a time would have
   // reported instead, i.e. the first failure among the images asked for before it, if any.
   [[noreturn]] void rethrow_first_error(std::exception_ptr error);

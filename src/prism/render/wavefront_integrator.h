@@ -26,11 +26,11 @@
 #include "prism/accel/embree_accel.h"
 #include "prism/bsdf/microfacet_normal_mapping.h"
 #include "prism/bsdf/normal_mapping_model.h"
-#include "prism/render/light_estimator.h"
 #include "prism/core/mat3.h"
 #include "prism/render/aov.h"
 #include "prism/render/color_context.h"
 #include "prism/render/film.h"
+#include "prism/render/light_estimator.h"
 #include "prism/render/material_bsdf.h"
 #include "prism/sampling/pixel_sampler.h"
 #include "prism/scene/camera_rays.h"
@@ -41,7 +41,6 @@
 namespace prism {
 
 struct SurfaceInteraction;
-
 
 struct PathSettings {
   int max_depth = 8;               // scattering events; 1 = direct lighting only

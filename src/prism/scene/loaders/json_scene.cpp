@@ -61,10 +61,9 @@ void read_document(JsonSceneReader& reader, const JsonValue& root) {
   const auto& prototypes = reader.mesh_is_prototype;
   const bool has_prototype = std::find(prototypes.begin(), prototypes.end(), true) != prototypes.end();
   if (!scene.instances.empty() || has_prototype) {
-    const std::size_t placed = scene.instances.size();
     for (std::uint32_t m = 0; m < scene.meshes.size(); ++m)
-      if (!reader.mesh_is_prototype[m]) scene.instances.push_back({m, Transform{}});
-    if (scene.instances.empty() && placed == 0)
+      if (!prototypes[m]) scene.instances.push_back({m, Transform{}});
+    if (scene.instances.empty())
       root["meshes"].fail("every mesh is a prototype and no instance places one: the scene would be empty");
   }
   if (auto ls = root.find("lights"))

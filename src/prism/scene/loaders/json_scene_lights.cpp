@@ -49,6 +49,16 @@ double transformed_area(const TriangleMesh& mesh, const Transform& t) {
 
 }  // namespace
 
+void JsonSceneReader::read_light_color(const JsonValue& value, Light& light) const {
+  light.color = value.get_vec3("color", Vec3f(1.0f));
+  if (min(light.color, Vec3f(0.0f)) != Vec3f(0.0f)) value["color"].fail("colour components must not be negative");
+  if (auto s = value.find("color_space")) light.color_space = read_color_space(*s);
+  if (auto s = value.find("spectrum")) {
+    if (value.has("color") || value.has("color_space")) value.fail("give either 'color' or 'spectrum', not both");
+    set_emission_spectrum(light, read_spectrum(*s, SpectrumUse::emission));
+  }
+}
+
 void JsonSceneReader::read_light(const JsonValue& value) {
   const LightType type = value["type"].as_enum<LightType>({{"point", LightType::point},
                                                            {"spot", LightType::spot},
@@ -58,13 +68,7 @@ void JsonSceneReader::read_light(const JsonValue& value) {
   Light light;
   light.type = type;
   light.name = value.get_string("name", fmt::format("light{}", scene.lights.size()));
-  light.color = value.get_vec3("color", Vec3f(1.0f));
-  if (min(light.color, Vec3f(0.0f)) != Vec3f(0.0f)) value["color"].fail("colour components must not be negative");
-  if (auto s = value.find("color_space")) light.color_space = read_color_space(*s);
-  if (auto s = value.find("spectrum")) {
-    if (value.has("color") || value.has("color_space")) value.fail("give either 'color' or 'spectrum', not both");
-    set_emission_spectrum(light, read_spectrum(*s, SpectrumUse::emission));
-  }
+  read_light_color(value, light);
   if (type == LightType::directional) {
     value.expect_keys({"type", "name", "color", "color_space", "spectrum", "direction", "illuminance_lux",
                        "angular_diameter_degrees"});
@@ -111,13 +115,7 @@ void JsonSceneReader::read_environment(const JsonValue& value) {
     for (const char* key : {"color", "color_space", "spectrum"})
       if (value.has(key))
         value[key].fail("an environment with a 'texture' takes no colour: its texels are its colours");
-  light.color = value.get_vec3("color", Vec3f(1.0f));
-  if (min(light.color, Vec3f(0.0f)) != Vec3f(0.0f)) value["color"].fail("colour components must not be negative");
-  if (auto s = value.find("color_space")) light.color_space = read_color_space(*s);
-  if (auto s = value.find("spectrum")) {
-    if (value.has("color") || value.has("color_space")) value.fail("give either 'color' or 'spectrum', not both");
-    set_emission_spectrum(light, read_spectrum(*s, SpectrumUse::emission));
-  }
+  read_light_color(value, light);
   light.intensity = value["luminance_nits"].as_float(0.0f, 1e12f);
   if (auto t = value.find("texture")) light.environment_texture = read_texture(*t, TextureEncoding::srgb);
   if (auto m = value.find("mapping")) {

@@ -43,6 +43,8 @@ struct JsonSceneReader {
   void read_material(const JsonValue& value);
   void read_light(const JsonValue& value);
   void read_environment(const JsonValue& value);
+  // A light's `color` (≥ 0) and `color_space`, or its `spectrum` instead.
+  void read_light_color(const JsonValue& value, Light& light) const;
   void read_camera(const JsonValue& value);
   void read_mesh(const JsonValue& value);
   void read_instance(const JsonValue& value);

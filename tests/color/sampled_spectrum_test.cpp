@@ -7,14 +7,55 @@
 namespace prism::color {
 namespace {
 
-TEST(SampledSpectrum, ArithmeticIsPerWavelength) {
-  SampledSpectrum<4> a(2.0f), b;
-  b.values = {1.0f, 2.0f, 0.0f, 4.0f};
-  EXPECT_EQ((a * b).values, (std::array<float, 4>{2, 4, 0, 8}));
-  EXPECT_EQ((a / b).values, (std::array<float, 4>{2, 1, 0, 0.5f}));  // x/0 → 0
-  EXPECT_FLOAT_EQ((a + b).average(), 3.75f);
-  EXPECT_TRUE(SampledSpectrum<8>().is_black());
+// The same arithmetic for every storage: vector lanes (N ≤ 4) and arrays (N > 4).
+template <int N>
+void expect_per_wavelength_arithmetic() {
+  SampledSpectrum<N> a(2.0f), b;
+  std::array<float, N> b_values{}, product{}, quotient{}, sum{}, difference{};
+  for (int i = 0; i < N; ++i) {
+    const float v = i % 3 == 2 ? 0.0f : static_cast<float>(i + 1);
+    b[static_cast<std::size_t>(i)] = v;
+    b_values[static_cast<std::size_t>(i)] = v;
+    product[static_cast<std::size_t>(i)] = 2.0f * v;
+    quotient[static_cast<std::size_t>(i)] = v != 0.0f ? 2.0f / v : 0.0f;  // x/0 → 0
+    sum[static_cast<std::size_t>(i)] = 2.0f + v;
+    difference[static_cast<std::size_t>(i)] = 2.0f - v;
+  }
+  EXPECT_EQ(b.array(), b_values);
+  EXPECT_EQ((a * b).array(), product);
+  EXPECT_EQ((a / b).array(), quotient);
+  EXPECT_EQ((a + b).array(), sum);
+  EXPECT_EQ((a - b).array(), difference);
+  EXPECT_EQ((b * 3.0f).array(), (SampledSpectrum<N>(b_values) * SampledSpectrum<N>(3.0f)).array());
+  float mean = 0.0f;
+  for (float v : sum) mean += v;
+  EXPECT_FLOAT_EQ((a + b).average(), mean / N);
+  EXPECT_TRUE(SampledSpectrum<N>().is_black());
+  EXPECT_FALSE(a.is_black());
 }
+
+TEST(SampledSpectrum, ArithmeticIsPerWavelength) {
+  expect_per_wavelength_arithmetic<1>();
+  expect_per_wavelength_arithmetic<3>();
+  expect_per_wavelength_arithmetic<4>();
+  expect_per_wavelength_arithmetic<8>();
+}
+
+// RGB (N = 3) lives in four lanes: the fourth must stay 0 through every operator, or
+// is_black and average (which read N lanes) would still be right but a later division
+// would not be, and the lanes are what the next spectrum is built from.
+TEST(SampledSpectrum, LanesPastTheChannelsStayZero) {
+  using Rgb = SampledSpectrum<3>;
+  static_assert(Rgb::kVectorLanes && sizeof(Rgb) == 16);
+  const Rgb a(2.0f), b(Rgb(std::array<float, 3>{1.0f, 0.0f, 4.0f}));
+  for (const Rgb& r : {Rgb(1.0f), a + b, a - b, a * b, a / b, b / a, a * 5.0f, Rgb(1.0f) - b})
+    EXPECT_EQ(r.values[3], 0.0f);
+}
+
+// A 4-wavelength spectrum is one 16-byte vector: it is passed and returned in one SSE
+// register (the reason for the storage, sampled_spectrum.h).
+static_assert(sizeof(SampledSpectrum<4>) == 16 && alignof(SampledSpectrum<4>) == 16);
+static_assert(!SampledSpectrum<8>::kVectorLanes && sizeof(SampledSpectrum<8>) == 32);
 
 TEST(SampledSpectrum, XyzWeightsEachWavelengthByItsPdf) {
   SampledWavelengths<3> w;

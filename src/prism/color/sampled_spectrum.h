@@ -4,6 +4,7 @@
 // parameter so RGB (N = 3 channels) and spectral paths share one integrator source).
 #include <array>
 #include <cstddef>
+#include <type_traits>
 
 #include "prism/color/cie_1931.h"
 #include "prism/core/vec.h"
@@ -20,45 +21,74 @@ struct SampledWavelengths {
   std::array<float, N> pdf{};
 };
 
+// Four float lanes as one SSE register's type (a GCC vector extension).
+typedef float SpectrumLanes4 __attribute__((vector_size(16)));
+
 template <int N>
 struct SampledSpectrum {
   static_assert(N >= 1);
-  std::array<float, N> values{};
+  // Up to four channels (RGB, the default 4-wavelength tuple) are held as one 16-byte
+  // vector, lanes past N zero. A 16-byte vector is one SSE register in the System V x86-64
+  // ABI (class SSE + SSEUP, §3.2.3), so a spectrum passed to or returned from a function
+  // that is not inlined travels in one register. As std::array<float, 4> it travelled as
+  // two 8-byte halves, which callers put back together through the stack: two 8-byte
+  // stores then a 16-byte load, which cannot be store-forwarded (a stall of the whole
+  // load's latency on every such call; perf annotate of shade, BENCHMARKS.md "Session 19").
+  // The operators also become one SSE instruction each. Wider tuples keep an array.
+  static constexpr bool kVectorLanes = N <= 4;
+  using Storage = std::conditional_t<kVectorLanes, SpectrumLanes4, std::array<float, N>>;
+  Storage values{};
 
   constexpr SampledSpectrum() = default;
-  constexpr explicit SampledSpectrum(float v) { values.fill(v); }
+  constexpr explicit SampledSpectrum(float v) {
+    for (int i = 0; i < N; ++i) values[i] = v;
+  }
+  constexpr explicit SampledSpectrum(const std::array<float, N>& a) {
+    for (int i = 0; i < N; ++i) values[i] = a[static_cast<std::size_t>(i)];
+  }
   constexpr float operator[](std::size_t i) const { return values[i]; }
   constexpr float& operator[](std::size_t i) { return values[i]; }
+  constexpr std::array<float, N> array() const {
+    std::array<float, N> a{};
+    for (int i = 0; i < N; ++i) a[static_cast<std::size_t>(i)] = values[i];
+    return a;
+  }
 
   constexpr SampledSpectrum& operator+=(const SampledSpectrum& o) {
-    for (int i = 0; i < N; ++i) values[i] += o.values[i];
+    if constexpr (kVectorLanes) values += o.values;
+    else for (int i = 0; i < N; ++i) values[i] += o.values[i];
     return *this;
   }
   constexpr SampledSpectrum& operator-=(const SampledSpectrum& o) {
-    for (int i = 0; i < N; ++i) values[i] -= o.values[i];
+    if constexpr (kVectorLanes) values -= o.values;
+    else for (int i = 0; i < N; ++i) values[i] -= o.values[i];
     return *this;
   }
   constexpr SampledSpectrum& operator*=(const SampledSpectrum& o) {
-    for (int i = 0; i < N; ++i) values[i] *= o.values[i];
+    if constexpr (kVectorLanes) values *= o.values;
+    else for (int i = 0; i < N; ++i) values[i] *= o.values[i];
     return *this;
   }
   constexpr SampledSpectrum& operator*=(float s) {
-    for (float& v : values) v *= s;
+    if constexpr (kVectorLanes) values *= s;
+    else for (float& v : values) v *= s;
     return *this;
   }
-  // Division that maps x/0 to 0: a zero pdf marks a wavelength that carries no estimate.
+  // Division that maps x/0 to 0: a zero pdf marks a wavelength that carries no estimate
+  // (and keeps the unused lanes 0).
   constexpr SampledSpectrum& operator/=(const SampledSpectrum& o) {
-    for (int i = 0; i < N; ++i) values[i] = o.values[i] != 0.0f ? values[i] / o.values[i] : 0.0f;
+    if constexpr (kVectorLanes) values = o.values != 0.0f ? values / o.values : SpectrumLanes4{};
+    else for (int i = 0; i < N; ++i) values[i] = o.values[i] != 0.0f ? values[i] / o.values[i] : 0.0f;
     return *this;
   }
   constexpr bool is_black() const {
-    for (float v : values)
-      if (v != 0.0f) return false;
+    for (int i = 0; i < N; ++i)
+      if (values[i] != 0.0f) return false;
     return true;
   }
   constexpr float average() const {
     float sum = 0.0f;
-    for (float v : values) sum += v;
+    for (int i = 0; i < N; ++i) sum += values[i];
     return sum / N;
   }
 };

@@ -118,7 +118,7 @@ Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::reflectance(const Vec3f
     const color::MallettYukselSpectrum my{Vec3d(srgb)};
     for (int i = 0; i < N; ++i) s[i] = static_cast<float>(my(w.wavelength_nm[i]));
   } else {
-    s.values = color::evaluate_sigmoid_polynomial(srgb_table_->lookup(Vec3d(srgb)), w.wavelength_nm);
+    s = Spectrum<Mode>(color::evaluate_sigmoid_polynomial(srgb_table_->lookup(Vec3d(srgb)), w.wavelength_nm));
   }
   return s;
 }
@@ -140,7 +140,7 @@ Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::rgb_radiance(const Vec3
   const color::SigmoidPolynomial c = srgb_table_->lookup(Vec3d(rgb / (2.0f * m)));
   // 683 ∫ L ȳ ≈ Y(rgb): L(λ) = 2m s(λ) / (683 ∫ ȳ), exact for greys (s = ½).
   const double k = 2.0 * m / (color::kMaxLuminousEfficacyLmPerW * color::cie1931_y_integral());
-  s.values = color::evaluate_sigmoid_polynomial(c, w.wavelength_nm, static_cast<float>(k));
+  s = Spectrum<Mode>(color::evaluate_sigmoid_polynomial(c, w.wavelength_nm, static_cast<float>(k)));
   return s;
 }
 

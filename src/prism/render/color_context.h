@@ -81,7 +81,7 @@ class ColorContext<SpectralMode<N>> {
   // spectrum_tables_[table] at the path's wavelengths.
   Spectrum<Mode> tabulated(std::int32_t table, const Wavelengths<Mode>& w) const {
     Spectrum<Mode> s;
-    s.values = spectrum_tables_[static_cast<std::size_t>(table)].evaluate(w.wavelength_nm);
+    s = Spectrum<Mode>(spectrum_tables_[static_cast<std::size_t>(table)].evaluate(w.wavelength_nm));
     return s;
   }
 
@@ -106,7 +106,7 @@ inline Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::base_color(std::
   if (const std::int32_t table = base_color_table_[material]; table >= 0) return tabulated(table, w);
   if (settings_.upsampling == Upsampling::mallett_yuksel) return mallett_yuksel_base_color(material, w);
   Spectrum<Mode> s;
-  s.values = color::evaluate_sigmoid_polynomial(base_color_jh_[material], w.wavelength_nm);
+  s = Spectrum<Mode>(color::evaluate_sigmoid_polynomial(base_color_jh_[material], w.wavelength_nm));
   return s;
 }
 
@@ -116,7 +116,7 @@ inline Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::emission(std::ui
   if (const std::int32_t table = emitter_table_[emitter]; table >= 0) return tabulated(table, w);
   const color::EmissionSpectrum& e = emitters_[emitter];
   Spectrum<Mode> s;
-  s.values = color::evaluate_sigmoid_polynomial(e.shape, w.wavelength_nm, static_cast<float>(e.scale));
+  s = Spectrum<Mode>(color::evaluate_sigmoid_polynomial(e.shape, w.wavelength_nm, static_cast<float>(e.scale)));
   return s;
 }
 

@@ -52,7 +52,11 @@ struct Dielectric {
   // untinted (glTF KHR_materials_transmission: the BTDF is weighted by the base colour).
   color::SampledSpectrum<N> transmission_tint{1.0f};
 
-  bool is_specular() const { return distribution.effectively_smooth(); }
+  // An index-matched interface (η = 1) does not scatter, however rough: light passes it
+  // unbent, as through a smooth one (pbrt-v4's DielectricBxDF does the same). The rough
+  // model cannot say so: its transmission half-vector −(wo + η wi) vanishes at η = 1, and
+  // rough glass of ior 1 rendered black.
+  bool is_specular() const { return distribution.effectively_smooth() || (eta[0] == 1.0f && !is_dispersive()); }
   bool is_dispersive() const {
     for (int c = 1; c < N; ++c)
       if (eta[c] != eta[0]) return true;

@@ -61,6 +61,7 @@ template <typename T> constexpr Vec3<T> max(const Vec3<T>& a, const Vec3<T>& b) 
   return {std::max(a.x, b.x), std::max(a.y, b.y), std::max(a.z, b.z)};
 }
 template <typename T> constexpr T max_component(const Vec3<T>& a) { return std::max({a.x, a.y, a.z}); }
+template <typename T> constexpr T min_component(const Vec3<T>& a) { return std::min({a.x, a.y, a.z}); }
 template <typename T> bool is_finite(const Vec3<T>& a) {
   return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
 }

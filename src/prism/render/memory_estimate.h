@@ -13,7 +13,7 @@ namespace prism {
 
 struct MemoryEstimate {
   std::uint64_t film = 0;       // sums, squared sums (2 × Vec3d) and counts (u32) per pixel, plus AOV sums
-  std::uint64_t path_pool = 0;  // wavefront path state, about 250 B per slot: a tile per thread (or per pixel)
+  std::uint64_t path_pool = 0;  // wavefront path state, about 270 B per slot: a tile per thread (or per pixel)
   std::uint64_t images = 0;     // output conversion buffers (float RGB per pixel, twice)
   std::uint64_t textures = 0;   // loaded texels, the renderer's copy (if copied) and mip levels 1 and up
   std::uint64_t meshes = 0;     // vertex and index arrays, loaded and (if copied or instanced) flattened, plus the BVH
@@ -29,7 +29,7 @@ inline constexpr std::uint64_t kNormalBytesPerPixel = 3 * sizeof(double);
 inline constexpr std::uint64_t kDepthBytesPerPixel = sizeof(double) + sizeof(std::uint32_t);
 inline constexpr std::uint64_t kCrossSumBytesPerPixel = 3 * sizeof(double);  // variance AOV
 inline constexpr std::uint64_t kAovBytesPerSlot = 32;  // sizeof(AovSample), checked in memory_estimate.cpp
-inline constexpr std::uint64_t kPathPoolBytesPerSlot = 250;
+inline constexpr std::uint64_t kPathPoolBytesPerSlot = 270;  // 4 wavelengths, with the interior medium (σ, flag)
 inline constexpr std::uint64_t kImageBytesPerPixel = 2 * 3 * sizeof(float);
 // Output conversion buffers per AOV channel (one float image per channel, like the beauty).
 inline constexpr std::uint64_t kAovImageBytesPerChannel = sizeof(float);

@@ -13,6 +13,7 @@
 #include "prism/render/material_bsdf.h"
 #include "prism/render/normal_mapping.h"
 #include "prism/render/surface_interaction.h"
+#include "prism/render/volume_absorption.h"
 #include "prism/scene/emission.h"
 #include "prism/sampling/warps.h"
 
@@ -26,7 +27,7 @@ struct WavefrontIntegrator<Mode>::Paths {
       : ray(n), throughput(n), radiance(n), wavelengths(n), hit(n), hit_found(n), shadow_ray(n),
         shadow_contribution(n), shadow_pending(n), shadow_blocked(n), prev_position(n), prev_normal(n), prev_pdf(n),
         eta_scale(n), cone_width(n), cone_spread(n), prev_specular(n), depth(n), finished(n), sample_index(n),
-        sample_end(n) {}
+        sample_end(n), inside_absorbing(n), interior_sigma(n) {}
   std::size_t capacity() const { return ray.size(); }
   std::uint32_t first_pixel = 0;
   std::vector<Ray> ray;
@@ -47,6 +48,11 @@ struct WavefrontIntegrator<Mode>::Paths {
   std::vector<std::int32_t> depth;
   std::vector<std::uint8_t> finished;
   std::vector<std::uint32_t> sample_index, sample_end;
+  // The path travels inside an absorbing dielectric (volume_absorption.h), whose σ per scene
+  // unit at the path's wavelengths is interior_sigma: set on refracting in through a front
+  // face, cleared on refracting out through a back face.
+  std::vector<std::uint8_t> inside_absorbing;
+  std::vector<Spectrum<Mode>> interior_sigma;
   // The AOVs of each slot's current sample, written by shade() at depth 0 and added to the
   // film with the sample. Empty unless the film keeps AOVs.
   std::vector<AovSample> first_hit_aovs;
@@ -234,6 +240,7 @@ void WavefrontIntegrator<Mode>::generate(Paths& p, std::uint32_t slot, std::uint
   p.cone_spread[slot] = camera_.pixel_spread_angle();
   p.prev_specular[slot] = 1;  // camera rays see emitters directly, unweighted
   p.finished[slot] = 0;
+  p.inside_absorbing[slot] = 0;
   p.sample_index[slot] = sample_index;
 }
 
@@ -249,6 +256,13 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   if (p.depth[slot] == 0 && !p.first_hit_aovs.empty())
     record_first_hit_aovs(p.first_hit_aovs[slot], ray, p.hit_found[slot] ? &p.hit[slot] : nullptr,
                           p.cone_spread[slot]);
+  // The segment that led here ran inside an absorbing dielectric: Beer–Lambert over its
+  // length (ray directions are unit vectors, so t is in scene units), before anything at
+  // its end is counted.
+  if (p.inside_absorbing[slot])
+    beta *= beer_lambert_transmittance(p.interior_sigma[slot], p.hit_found[slot]
+                                                                   ? p.hit[slot].t
+                                                                   : std::numeric_limits<float>::infinity());
 
   if (!p.hit_found[slot]) {
     // Escaped: only the environment and directional lights with an angular size can be hit.
@@ -350,6 +364,11 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
               ls->has_rgb ? colors_.rgb_radiance(ls->rgb, wl)
                           : emitted_radiance(ls->emitter, ls->has_uv, ls->uv, 0.0f, wl) * ls->scale;
           p.shadow_contribution[slot] = beta * f * Le * (std::abs(wi_local.z) * w / ls->pdf);
+          // A light inside the same absorbing medium: the shadow ray's whole length runs
+          // through it (leaving it needs a crossing, which blocks the shadow ray).
+          if (p.inside_absorbing[slot])
+            p.shadow_contribution[slot] *=
+                beer_lambert_transmittance(p.interior_sigma[slot], std::isinf(ls->distance) ? ls->distance : t_max);
           p.shadow_pending[slot] = 1;
         }
       }
@@ -372,6 +391,15 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   }
   beta *= bs->f * (std::abs(bs->wi.z) / bs->pdf);
   p.eta_scale[slot] *= bs->eta * bs->eta;
+  // Refraction through a solid dielectric's surface: in through its front face (the side
+  // its geometric normal faces), out through its back face. A medium left is always the
+  // one the path is in (media do not nest here); thin-walled surfaces have no inside.
+  if (bs->is_transmission && material.type == MaterialType::dielectric && !material.thin_walled) {
+    p.inside_absorbing[slot] = si.front_face && material.absorbs_inside();
+    if (p.inside_absorbing[slot])
+      p.interior_sigma[slot] =
+          absorption_coefficient(colors_.reflectance(material.attenuation_color, wl), material.attenuation_distance);
+  }
   p.prev_pdf[slot] = bs->pdf;
   p.prev_specular[slot] = bs->is_specular;
   // After a glossy or diffuse bounce the cone widens to roughly the lobe's extent; a
@@ -455,7 +483,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
   }
 
   // Tiles: each thread takes a run of kWavefrontTilePixels pixels and runs their whole wave alone,
-  // in a path state of its own (≈ 250 B per slot, 1 MB per tile) that stays in the core's
+  // in a path state of its own (≈ 270 B per slot, 1.1 MB per tile) that stays in the core's
   // caches for every stage, where a whole-image queue streams its state from memory once
   // per stage; the threads meet once per pass instead of three times per step, and the
   // path state is a few tiles' worth instead of one slot per pixel. A slot is still one

@@ -4,7 +4,9 @@
 // primaries unless a field says otherwise; the integrator converts them to its transport
 // mode (upsampled spectra or the working RGB space).
 #include <array>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -80,6 +82,12 @@ struct Material {
   DispersionModel dispersion = DispersionModel::none;
   std::array<float, 6> dispersion_coefficients{};
   bool thin_walled = false;  // glTF KHR_materials_volume absent: thin surface
+  // Absorption inside a solid (not thin-walled) dielectric, by the Beer–Lambert law (glTF
+  // KHR_materials_volume's attenuationColor and attenuationDistance): light that travels
+  // attenuation_distance scene units through the interior keeps attenuation_color of
+  // itself (linear Rec.709, each component in (0, 1]); infinite distance: clear.
+  Vec3f attenuation_color{1.0f};
+  float attenuation_distance = std::numeric_limits<float>::infinity();
   float transmission = 0.0f; // glTF KHR_materials_transmission factor (metallic_roughness)
 
   AlphaMode alpha_mode = AlphaMode::opaque;
@@ -89,6 +97,11 @@ struct Material {
   Emission emission;
 
   bool is_emissive() const { return emission.is_emissive(); }
+  // Whether paths inside this material lose light on the way (render/volume_absorption.h).
+  bool absorbs_inside() const {
+    return type == MaterialType::dielectric && !thin_walled && std::isfinite(attenuation_distance) &&
+           min_component(attenuation_color) < 1.0f;
+  }
 };
 
 }  // namespace prism

@@ -282,6 +282,48 @@ TEST(GltfLoader, ImageErrorsComeInTheMaterialsOrder) {
   }
 }
 
+// KHR_materials_volume: a volume with a thickness bounds absorbing glass; its default
+// thicknessFactor of 0 means thin-walled (the extension's text), as does no volume at all.
+TEST(GltfLoader, VolumeThicknessAndAttenuation) {
+  const auto glass = [](const std::string& volume) {
+    return R"({"extensions": {"KHR_materials_transmission": {"transmissionFactor": 1})" +
+           (volume.empty() ? std::string() : R"(, "KHR_materials_volume": )" + volume) + "}}";
+  };
+  const std::string materials = "[" + glass("") + ", " + glass("{}") + ", " +
+                                glass(R"({"thicknessFactor": 0.2})") + ", " +
+                                glass(R"({"thicknessFactor": 1, "attenuationColor": [0.5, 0.25, 1], "attenuationDistance": 2})") +
+                                ", " + glass(R"({"attenuationColor": [0.5, 0.5, 0.5], "attenuationDistance": 1})") + "]";
+  const Scene s = parse(quad_document(kDataUri + base64(quad_buffer()), "", materials));
+  ASSERT_EQ(s.materials.size(), 5u);
+  EXPECT_TRUE(s.materials[0].thin_walled);
+  EXPECT_TRUE(s.materials[1].thin_walled);  // thicknessFactor defaults to 0
+  EXPECT_FALSE(s.materials[2].thin_walled);
+  EXPECT_FALSE(s.materials[2].absorbs_inside());  // attenuationDistance defaults to +∞
+  const Material& absorbing = s.materials[3];
+  EXPECT_FALSE(absorbing.thin_walled);
+  EXPECT_TRUE(absorbing.absorbs_inside());
+  EXPECT_EQ(absorbing.attenuation_color, Vec3f(0.5f, 0.25f, 1.0f));
+  EXPECT_EQ(absorbing.attenuation_distance, 2.0f);
+  // Attenuation on a thin-walled volume has no inside to act in: said, not silently dropped.
+  EXPECT_TRUE(s.materials[4].thin_walled);
+  EXPECT_FALSE(s.materials[4].absorbs_inside());
+  int warned = 0;
+  for (const std::string& w : s.warnings)
+    warned += w.find("materials[4].extensions.KHR_materials_volume: attenuation ignored") != std::string::npos;
+  EXPECT_EQ(warned, 1);
+  for (const auto& [volume, expected] : std::initializer_list<std::pair<std::string, std::string>>{
+           {R"({"thicknessFactor": 1, "attenuationDistance": 0})", "attenuationDistance must be > 0"},
+           {R"({"thicknessFactor": 1, "attenuationColor": [2, 0, 0], "attenuationDistance": 1})",
+            "attenuationColor components must be in [0, 1]"},
+           {R"({"thicknessFactor": 1, "attenuationColor": [1, 0], "attenuationDistance": 1})",
+            "attenuationColor must be an array of three numbers"},
+           {R"({"thicknessFactor": -1})", "thicknessFactor must be"}}) {
+    const std::string message = parse_error(quad_document(kDataUri + base64(quad_buffer()), "", "[" + glass(volume) + "]"));
+    EXPECT_NE(message.find(expected), std::string::npos) << volume << " → " << message;
+    EXPECT_NE(message.find("KHR_materials_volume"), std::string::npos) << message;
+  }
+}
+
 TEST(GltfLoader, BadInputIsAOneLineError) {
   const std::string good_uri = kDataUri + base64(quad_buffer());
   const std::string doc = quad_document(good_uri);

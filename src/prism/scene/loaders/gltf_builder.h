@@ -26,6 +26,7 @@ class GltfBuilder {
   void decode_images_in_parallel();
   void build_materials();
   Material make_material(const tinygltf::Material& m, int index);
+  void read_volume(Material& m, const tinygltf::Value* volume, const std::string& where);
   int texture(const tinygltf::TextureInfo& info, TextureEncoding encoding, const std::string& where);
   int texture(int texture_index, const tinygltf::ExtensionMap& extensions, TextureEncoding encoding, const std::string& where);
   void visit_node(int node, const Transform& parent, int depth);

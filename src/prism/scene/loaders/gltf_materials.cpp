@@ -3,6 +3,8 @@
 // transforms and alpha modes. Mapping in docs/scene-formats.md.
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -35,6 +37,19 @@ TextureWrap wrap_mode(int mode) {
 Vec3f factor3(const std::vector<double>& v, Vec3f fallback) {
   if (v.size() < 3) return fallback;
   return Vec3f(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
+}
+
+// An extension's array of three numbers, or nullopt where it is absent or not one.
+std::optional<Vec3f> number3(const tinygltf::Value& object, const char* key) {
+  if (!object.IsObject() || !object.Has(key)) return std::nullopt;
+  const auto& v = object.Get(key);
+  if (!v.IsArray() || v.ArrayLen() != 3) return std::nullopt;
+  Vec3f out;
+  for (int i = 0; i < 3; ++i) {
+    if (!v.Get(i).IsNumber()) return std::nullopt;
+    out[i] = static_cast<float>(v.Get(i).GetNumberAsDouble());
+  }
+  return out;
 }
 
 }  // namespace
@@ -218,7 +233,7 @@ Material GltfBuilder::make_material(const tinygltf::Material& src, int index) {
     if (m.transmission > 0.0f) {
       // A transmissive glTF material becomes Prism's dielectric, tinted by the base colour.
       m.type = MaterialType::dielectric;
-      m.thin_walled = extension(src.extensions, "KHR_materials_volume") == nullptr;
+      read_volume(m, extension(src.extensions, "KHR_materials_volume"), where);
       if (m.transmission < 1.0f || m.metallic > 0.0f)
         warnings_.push_back(fmt::format("glTF: {}: partial transmission/metallic mixed into a dielectric", where));
     }
@@ -240,6 +255,43 @@ Material GltfBuilder::make_material(const tinygltf::Material& src, int index) {
     }
   }
   return m;
+}
+
+// KHR_materials_volume on a transmitting material: without it, or with its default
+// thicknessFactor of 0, the surface is thin-walled (the extension: "If the value is 0 the
+// material is thin-walled"); otherwise it bounds a volume, which absorbs by
+// attenuationColor (default white) after attenuationDistance (default +∞: clear). The
+// thickness itself only feeds rasterisers' refraction estimates; a path tracer has the
+// real geometry.
+void GltfBuilder::read_volume(Material& m, const tinygltf::Value* volume, const std::string& where) {
+  const std::string volume_where = where + ".extensions.KHR_materials_volume";
+  const double thickness = volume ? number(*volume, "thicknessFactor", 0.0) : 0.0;
+  if (!(thickness >= 0.0) || !std::isfinite(thickness))
+    fail(fmt::format("{}: thicknessFactor must be ≥ 0", volume_where));
+  m.thin_walled = thickness == 0.0;
+  if (!volume) return;
+  const double distance = number(*volume, "attenuationDistance", std::numeric_limits<double>::infinity());
+  if (!(distance > 0.0)) fail(fmt::format("{}: attenuationDistance must be > 0", volume_where));
+  Vec3f color(1.0f);
+  if (volume->Has("attenuationColor")) {
+    const auto c = number3(*volume, "attenuationColor");
+    if (!c) fail(fmt::format("{}: attenuationColor must be an array of three numbers", volume_where));
+    if (!(min_component(*c) >= 0.0f && max_component(*c) <= 1.0f))
+      fail(fmt::format("{}: attenuationColor components must be in [0, 1]", volume_where));
+    color = *c;
+  }
+  const bool absorbs = std::isfinite(distance) && min_component(color) < 1.0f;
+  if (absorbs && m.thin_walled) {
+    warnings_.push_back(fmt::format(
+        "glTF: {}: attenuation ignored: thicknessFactor 0 makes the surface thin-walled, with no inside", volume_where));
+    return;
+  }
+  // A component of exactly 0 (allowed by the extension) absorbs everything at once; the
+  // renderer clamps it to 1e-30 (render/volume_absorption.h).
+  m.attenuation_color = color;
+  m.attenuation_distance = std::isfinite(distance)
+                               ? static_cast<float>(std::min(distance, double(std::numeric_limits<float>::max())))
+                               : std::numeric_limits<float>::infinity();
 }
 
 void GltfBuilder::build_materials() {

@@ -97,7 +97,14 @@ json material_json(const Scene& scene, const Material& m) {
       // A solid (not thin-walled) dielectric needs KHR_materials_volume: without it glTF
       // readers, Prism's included, take a thin surface. The thickness only feeds
       // rasterisers' refraction approximations.
-      if (!m.thin_walled) j["extensions"]["KHR_materials_volume"] = {{"thicknessFactor", 1.0}};
+      if (!m.thin_walled) {
+        j["extensions"]["KHR_materials_volume"] = {{"thicknessFactor", 1.0}};
+        if (m.absorbs_inside()) {
+          const Vec3f& c = m.attenuation_color;
+          j["extensions"]["KHR_materials_volume"]["attenuationColor"] = {c.x, c.y, c.z};
+          j["extensions"]["KHR_materials_volume"]["attenuationDistance"] = m.attenuation_distance;
+        }
+      }
       break;
     case MaterialType::metallic_roughness: pbr["metallicFactor"] = m.metallic; break;
   }

@@ -1,5 +1,6 @@
 // prism-scene/1: materials and the textures they refer to.
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -112,11 +113,32 @@ std::uint32_t JsonSceneReader::material_index(const JsonValue& name) const {
   return it->second;
 }
 
+// Absorption inside solid glass (glTF KHR_materials_volume's attenuationColor and
+// attenuationDistance; render/volume_absorption.h). Only where a path can be inside: a
+// dielectric (after transmission made one) that is not thin-walled.
+void JsonSceneReader::read_attenuation(Material& m, const JsonValue& value) const {
+  const auto color = value.find("attenuation_color");
+  const auto distance = value.find("attenuation_distance");
+  if (!color && !distance) return;
+  const JsonValue& where = color ? *color : *distance;
+  if (m.type != MaterialType::dielectric)
+    where.fail("only dielectric materials (and transmitting metallic_roughness ones) have an inside to absorb in");
+  if (m.thin_walled) where.fail("a thin-walled dielectric has no inside to absorb in");
+  // Either alone would change nothing (glTF's defaults are white and an infinite distance).
+  if (!color || !distance) value.fail("give 'attenuation_color' and 'attenuation_distance' together");
+  m.attenuation_color = color->as_vec3();
+  if (!(min_component(m.attenuation_color) > 0.0f && max_component(m.attenuation_color) <= 1.0f))
+    color->fail("components must be in (0, 1]: the share of light left after attenuation_distance");
+  m.attenuation_distance = distance->as_float(0.0f, std::numeric_limits<float>::max());
+  if (!(m.attenuation_distance > 0.0f)) distance->fail("must be greater than 0 (scene units)");
+}
+
 void JsonSceneReader::read_material(const JsonValue& value) {
   value.expect_keys({"name", "type", "base_color", "base_color_spectrum", "base_color_texture", "roughness",
                      "anisotropy", "metallic", "metallic_roughness_texture", "normal_texture", "normal_scale",
                      "bump_texture", "bump_scale", "microfacet", "conductor", "ior", "dispersion", "thin_walled",
-                     "transmission", "alpha_mode", "alpha_cutoff", "opacity", "emission"});
+                     "transmission", "attenuation_color", "attenuation_distance", "alpha_mode", "alpha_cutoff",
+                     "opacity", "emission"});
   Material m;
   m.name = value["name"].as_string();
   if (material_indices.contains(m.name)) value["name"].fail(fmt::format("material '{}' is defined twice", m.name));
@@ -182,6 +204,7 @@ void JsonSceneReader::read_material(const JsonValue& value) {
       t->fail("only metallic_roughness (glTF's transmission) and dielectric materials transmit");
     }
   }
+  read_attenuation(m, value);
   if (auto a = value.find("alpha_mode"))
     m.alpha_mode = a->as_enum<AlphaMode>({{"opaque", AlphaMode::opaque}, {"mask", AlphaMode::mask}, {"blend", AlphaMode::blend}});
   m.alpha_cutoff = value.get_float("alpha_cutoff", m.alpha_cutoff, 0.0f, 1.0f);

@@ -41,6 +41,7 @@ struct JsonSceneReader {
   std::uint32_t material_index(const JsonValue& name) const;
 
   void read_material(const JsonValue& value);
+  void read_attenuation(Material& m, const JsonValue& value) const;
   void read_light(const JsonValue& value);
   void read_environment(const JsonValue& value);
   // A light's `color` (≥ 0) and `color_space`, or its `spectrum` instead.

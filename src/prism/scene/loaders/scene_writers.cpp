@@ -124,6 +124,8 @@ void write_scene_json(const Scene& scene, const std::filesystem::path& path) {
     if (m.type == MaterialType::conductor && m.conductor_fresnel == ConductorFresnel::complex_ior)
       w(", \"conductor\": \"{}\"", m.conductor_name);
     if (m.type == MaterialType::dielectric) w(", \"ior\": {}{}", m.ior, m.thin_walled ? ", \"thin_walled\": true" : "");
+    if (m.absorbs_inside())
+      w(", \"attenuation_color\": {}, \"attenuation_distance\": {}", vec(m.attenuation_color), m.attenuation_distance);
     if (m.type == MaterialType::metallic_roughness) w(", \"metallic\": {}", m.metallic);
     if (m.base_color_texture >= 0) w(", \"base_color_texture\": {}", json_texture(scene, files, m.base_color_texture));
     if (m.metallic_roughness_texture >= 0)
@@ -266,6 +268,10 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
     const Material& m = scene.materials[i];
     textures.push_back(write_pbrt_textures(w, scene, i, files, path));
+    if (m.absorbs_inside())
+      throw UsageError(fmt::format("pbrt writer: material '{}' absorbs light inside (attenuation), which pbrt-v4 "
+                                   "expresses as a medium; media are not written",
+                                   m.name));
     // Prism's perceptual roughness r has α = r²; written with remaproughness false.
     const float alpha = m.roughness * m.roughness;
     w("MakeNamedMaterial \"{}\"", m.name);

@@ -14,6 +14,7 @@
 #include "prism/core/error.h"
 #include "prism/render/renderer.h"
 #include "prism/scene/load_scene.h"
+#include "prism/scene/scene_summary.h"
 #include "prism/scene/loaders/gltf_writer.h"
 #include "prism/scene/loaders/json_scene.h"
 #include "prism/scene/loaders/scene_writers.h"
@@ -171,6 +172,9 @@ TEST(VolumeAbsorption, JsonKeysNeedASolidDielectricAndBothValues) {
       "attenuation_color": [0.5, 0.5, 0.5], "attenuation_distance": 3})");
   EXPECT_TRUE(s.materials[0].absorbs_inside());
   EXPECT_EQ(s.materials[0].attenuation_distance, 3.0f);
+  // `prism info` says so, so a user sees that the attenuation was read.
+  const std::string summary = format_scene_summary(s);
+  EXPECT_NE(summary.find("0 emissive, 1 absorbing inside"), std::string::npos) << summary;
 }
 
 TEST(VolumeAbsorption, JsonAndGlbWritersKeepItAndPbrtRefusesIt) {

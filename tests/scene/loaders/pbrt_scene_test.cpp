@@ -413,12 +413,73 @@ Material "hair"
   for (const auto& w : s.warnings)
     if (w.find("ignored") != std::string::npos) {
       ++ignored;
-      for (const char* what : {"PixelFilter (line 3)", "randomization", "MakeNamedMedium (line 6)", "goniometric",
+      for (const char* what : {"PixelFilter (line 3)", "randomization",
+                               "MakeNamedMedium \"fog\": a scattering medium (sigma_s > 0); media are rendered only as "
+                               "absorption inside glass (line 6)",
+                               "goniometric",
                                "curve", "hair", "Option"})
         EXPECT_NE(w.find(what), std::string::npos) << what << " in " << w;
     }
   EXPECT_EQ(ignored, 1);
   EXPECT_EQ(s.default_spp, 8);
+}
+
+// A medium that only absorbs, inside solid glass, is the glass's Beer–Lambert absorption
+// (pbrt_media.cpp): σ_a × scale per unit becomes the colour exp(−σ) after one unit. The
+// rest of media is warned, and names are checked.
+TEST(PbrtLoader, AbsorbingMediumInsideGlass) {
+  const Scene s = parse(std::string(R"(WorldBegin
+MakeNamedMedium "ink" "string type" "homogeneous" "rgb sigma_a" [0.5 1 0] "rgb sigma_s" [0 0 0] "float scale" 2
+MakeNamedMedium "fog" "string type" "homogeneous" "rgb sigma_a" [1 1 1]
+Material "dielectric" "float eta" 1.33
+AttributeBegin
+  MediumInterface "ink" ""
+)") + std::string(kTriangle) + R"(AttributeEnd
+AttributeBegin
+  MediumInterface "fog" ""
+)" + std::string(kTriangle) + R"(AttributeEnd
+AttributeBegin
+  Material "diffuse"
+  MediumInterface "ink" ""
+)" + std::string(kTriangle) + R"(AttributeEnd
+)" + std::string(kTriangle));
+  ASSERT_EQ(s.meshes.size(), 4u);
+  const Material& ink = s.materials[s.meshes[0].material];
+  EXPECT_EQ(ink.type, MaterialType::dielectric);
+  EXPECT_TRUE(ink.absorbs_inside());
+  EXPECT_EQ(ink.attenuation_distance, 1.0f);
+  EXPECT_FLOAT_EQ(ink.attenuation_color.x, std::exp(-1.0f));
+  EXPECT_FLOAT_EQ(ink.attenuation_color.y, std::exp(-2.0f));
+  EXPECT_EQ(ink.attenuation_color.z, 1.0f);
+  // A scattering medium (σ_s defaults to 1) is not rendered: clear glass, and a warning.
+  EXPECT_FALSE(s.materials[s.meshes[1].material].absorbs_inside());
+  // Outside any AttributeBegin with a MediumInterface, the glass has no medium.
+  EXPECT_FALSE(s.materials[s.meshes[3].material].absorbs_inside());
+  EXPECT_EQ(s.materials[s.meshes[3].material].type, MaterialType::dielectric);
+  ASSERT_FALSE(s.warnings.empty());
+  std::string warnings;
+  for (const std::string& w : s.warnings) warnings += w + "\n";
+  EXPECT_NE(warnings.find("MakeNamedMedium \"fog\": a scattering medium"), std::string::npos) << warnings;
+  EXPECT_NE(warnings.find("MediumInterface interior \"ink\" on a shape that is not solid glass"), std::string::npos)
+      << warnings;
+  EXPECT_EQ(warnings.find("\"ink\": a"), std::string::npos) << warnings;  // the ink itself is rendered
+  // Media around shapes (exterior) are not rendered either: said.
+  const Scene around = parse(std::string(R"(MakeNamedMedium "air" "string type" "homogeneous" "rgb sigma_s" [0 0 0]
+WorldBegin
+MediumInterface "" "air"
+)") + std::string(kTriangle));
+  ASSERT_EQ(around.warnings.size(), 1u);
+  EXPECT_NE(around.warnings[0].find("MediumInterface exterior medium \"air\""), std::string::npos) << around.warnings[0];
+  // Names must be defined, once.
+  EXPECT_NE(parse_error("MediumInterface \"nope\" \"\"").find("test.pbrt:1: medium \"nope\" is not defined"),
+            std::string::npos);
+  EXPECT_NE(parse_error("MakeNamedMedium \"m\" \"string type\" \"homogeneous\"\n"
+                        "MakeNamedMedium \"m\" \"string type\" \"homogeneous\"")
+                .find("test.pbrt:2: medium \"m\" is defined twice"),
+            std::string::npos);
+  EXPECT_NE(parse_error("MakeNamedMedium \"m\" \"string type\" \"homogeneous\" \"rgb sigma_a\" [1 -1 1]")
+                .find("test.pbrt:1:"),
+            std::string::npos);
 }
 
 TEST(PbrtLoader, BadInputIsAFileLineError) {

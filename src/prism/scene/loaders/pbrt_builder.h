@@ -31,6 +31,14 @@ struct PbrtGraphicsState {
   int material = -1;  // index into scene.materials; -1: pbrt's default (diffuse 0.5)
   std::optional<PbrtAreaLight> area_light;
   bool reverse_orientation = false;
+  std::string interior_medium;  // MediumInterface's first name ("": none)
+};
+
+// A MakeNamedMedium: what Prism renders of it, absorption inside glass (σ_a per scene unit,
+// linear Rec.709), or why it renders none of it.
+struct PbrtMedium {
+  Vec3f sigma_a{0.0f};
+  std::string unsupported;  // empty: an absorbing-only homogeneous medium
 };
 
 // A "reflectance"-like texture: an image (index into scene.textures) or a constant.
@@ -60,6 +68,9 @@ class PbrtBuilder {
   void shape(const std::string& type, const PbrtParams& params);
   void light_source(const std::string& type, const PbrtParams& params);
   void area_light_source(const std::string& type, const PbrtParams& params);
+  void make_medium(const std::string& name, const PbrtParams& params);
+  void medium_interface(const std::string& interior, const std::string& exterior, const PbrtParams& params);
+  std::uint32_t with_interior_medium(std::uint32_t material, const PbrtParams& shape_params);
 
   void add_mesh(TriangleMesh mesh, const PbrtParams& params, bool has_normals);
   std::uint32_t shape_material(const PbrtParams& params, double area);
@@ -86,6 +97,8 @@ class PbrtBuilder {
   std::vector<std::uint32_t> world_meshes_;
   std::vector<Instance> placements_;
   std::map<std::pair<int, int>, std::uint32_t> emissive_materials_;
+  std::map<std::string, PbrtMedium> media_;
+  std::map<std::pair<std::uint32_t, std::string>, std::uint32_t> absorbing_materials_;  // (material, medium) → material
   int area_light_id_ = 0;
   int default_material_ = -1;
   bool camera_seen_ = false, world_begun_ = false;

@@ -222,13 +222,18 @@ void PbrtBuilder::directive(PbrtTokenizer& tokens, const PbrtToken& name, int in
   } else if (d == "AreaLightSource") {
     const std::string type = expect_string(tokens, d);
     area_light_source(type, params());
-  } else if (d == "MakeNamedMedium" || d == "Attribute" || d == "ColorSpace") {
+  } else if (d == "MakeNamedMedium") {
+    const std::string n = expect_string(tokens, d);
+    make_medium(n, params());
+  } else if (d == "Attribute" || d == "ColorSpace") {
     expect_string(tokens, d);
     ignore(d, params());
   } else if (d == "MediumInterface") {
-    expect_string(tokens, d);
-    if (tokens.peek().kind == PbrtTokenKind::string) tokens.next();
-    ignore(d, PbrtParams{{}, tokens.source(), name.line});
+    // pbrt-v4: "interior" "exterior", or one name for both.
+    const std::string interior = expect_string(tokens, d);
+    std::string exterior = interior;
+    if (tokens.peek().kind == PbrtTokenKind::string) exterior = std::string(tokens.next().text);
+    medium_interface(interior, exterior, PbrtParams{{}, tokens.source(), name.line});
   } else if (d == "PixelFilter" || d == "Accelerator") {
     expect_string(tokens, d);
     ignore(d, params());

@@ -173,13 +173,14 @@ std::uint32_t PbrtBuilder::shape_material(const PbrtParams& p, double area) {
     }
     state_.material = default_material_;
   }
-  if (!state_.area_light || current_object_) return static_cast<std::uint32_t>(state_.material);
+  const std::uint32_t material = with_interior_medium(static_cast<std::uint32_t>(state_.material), p);
+  if (!state_.area_light || current_object_) return material;
   const PbrtAreaLight& light = *state_.area_light;
-  const auto key = std::make_pair(state_.material, area_light_id_);
+  const auto key = std::make_pair(static_cast<int>(material), area_light_id_);
   if (!light.power) {
     if (const auto it = emissive_materials_.find(key); it != emissive_materials_.end()) return it->second;
   }
-  Material m = scene_.materials[state_.material];
+  Material m = scene_.materials[material];
   m.name += "+light";
   m.emission.color = light.color;
   m.emission.spectrum = light.spectrum;

@@ -1,5 +1,6 @@
 #include "prism/scene/loaders/scene_writers.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <optional>
@@ -268,10 +269,16 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
     const Material& m = scene.materials[i];
     textures.push_back(write_pbrt_textures(w, scene, i, files, path));
-    if (m.absorbs_inside())
-      throw UsageError(fmt::format("pbrt writer: material '{}' absorbs light inside (attenuation), which pbrt-v4 "
-                                   "expresses as a medium; media are not written",
-                                   m.name));
+    if (m.absorbs_inside()) {
+      // pbrt-v4 says absorbing glass with a medium inside the shape: homogeneous, σ_s = 0,
+      // σ_a = −ln(c) / d per unit (render/volume_absorption.h); the shapes name it in their
+      // MediumInterface below (pbrt_media.cpp reads it back).
+      const Vec3f& c = m.attenuation_color;
+      const auto sigma = [&](float v) { return -std::log(std::max(v, 1e-30f)) / m.attenuation_distance; };
+      w("MakeNamedMedium \"{}-interior\" \"string type\" \"homogeneous\" \"rgb sigma_a\" [ {} {} {} ] "
+        "\"rgb sigma_s\" [ 0 0 0 ]\n",
+        m.name, sigma(c.x), sigma(c.y), sigma(c.z));
+    }
     // Prism's perceptual roughness r has α = r²; written with remaproughness false.
     const float alpha = m.roughness * m.roughness;
     w("MakeNamedMaterial \"{}\"", m.name);
@@ -313,6 +320,7 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
   for (const TriangleMesh& mesh : scene.meshes) {
     const Material& m = scene.materials[mesh.material];
     w("\n# {}\nAttributeBegin\n  NamedMaterial \"{}\"\n", mesh.name, m.name);
+    if (m.absorbs_inside()) w("  MediumInterface \"{}-interior\" \"\"\n", m.name);
     if (m.is_emissive()) {
       const Vec3f L = radiance_rgb(m.emission.color, m.emission.luminance_nits);
       w("  AreaLightSource \"diffuse\" \"rgb L\" [ {} {} {} ]{}\n", L.x, L.y, L.z,

@@ -1,5 +1,7 @@
 #include "prism/scene/texture.h"
 
+#include <algorithm>
+
 #include <cmath>
 
 #include "prism/color/transfer_functions.h"
@@ -37,6 +39,23 @@ std::vector<float> TextureImage::linear_values() const {
   std::vector<float> values(sample_count());
   for (std::size_t i = 0; i < values.size(); ++i) values[i] = value(i);
   return values;
+}
+
+TextureImage inverted_texture(const TextureImage& image, float scale) {
+  TextureImage out = image;
+  out.texels = image.linear_values();
+  out.codes.clear();
+  out.rgbe.clear();
+  out.halves.clear();
+  out.codes.shrink_to_fit();
+  out.rgbe.shrink_to_fit();
+  out.halves.shrink_to_fit();
+  const auto channels = static_cast<std::size_t>(image.channels);
+  for (std::size_t i = 0; i < out.texels.size(); ++i)
+    if (!is_alpha_channel(static_cast<int>(i % channels), image.channels))
+      out.texels[i] = std::max(0.0f, 1.0f - scale * out.texels[i]);
+  out.name += " (inverted)";
+  return out;
 }
 
 }  // namespace prism

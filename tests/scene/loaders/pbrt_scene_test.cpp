@@ -190,20 +190,38 @@ TEST(PbrtLoader, TheFirstBadImageIsReportedWithItsLine) {
   EXPECT_NE(message.find("scene.pbrt:3"), std::string::npos) << message;
 }
 
-// "bool invert" is not applied, and says so (it used to be marked as read and dropped).
-TEST(PbrtLoader, InvertedImageMapsAreWarned) {
+// "bool invert": pbrt-v4 inverts the scaled value, max(0, 1 − scale · v), on colour
+// channels. The texture becomes a float copy with the scale baked in (tint 1).
+TEST(PbrtLoader, InvertedImageMapsAreApplied) {
   test::ScratchFolder dir;
   write_png(dir / "g.png", EncodedImage{1, 1, 1, 8, {128}});
-  const auto warnings_for = [&](std::string_view invert) {
-    const std::string text = "WorldBegin\nTexture \"g\" \"spectrum\" \"imagemap\" \"string filename\" \"g.png\" " +
-                             std::string(invert) + "\nMaterial \"diffuse\" \"texture reflectance\" \"g\"\n";
-    std::string all;
-    for (const std::string& w : load_pbrt_scene(dir.write("scene.pbrt", text + std::string(kTriangle))).warnings)
-      all += w + "\n";
-    return all;
+  write_png(dir / "rgba.png", EncodedImage{1, 1, 4, 8, {255, 0, 128, 64}});
+  const auto load = [&](const std::string& file, std::string_view params) {
+    const std::string text = "WorldBegin\nTexture \"g\" \"spectrum\" \"imagemap\" \"string filename\" \"" + file +
+                             "\" \"string encoding\" \"linear\" " + std::string(params) +
+                             "\nMaterial \"diffuse\" \"texture reflectance\" \"g\"\n";
+    return load_pbrt_scene(dir.write("scene.pbrt", text + std::string(kTriangle)));
   };
-  EXPECT_NE(warnings_for("\"bool invert\" true").find("imagemap \"invert\""), std::string::npos);
-  EXPECT_EQ(warnings_for("\"bool invert\" false").find("invert"), std::string::npos);
+  const float v = 128.0f / 255.0f;
+  const Scene inverted = load("g.png", "\"bool invert\" true \"float scale\" 1.5");
+  const Material& m = inverted.materials[inverted.meshes[0].material];
+  ASSERT_GE(m.base_color_texture, 0);
+  const TextureImage& t = inverted.textures[static_cast<std::size_t>(m.base_color_texture)];
+  EXPECT_FLOAT_EQ(t.value(0), 1.0f - 1.5f * v);
+  EXPECT_EQ(m.base_color, Vec3f(1.0f));  // the scale is in the texels now
+  for (const std::string& w : inverted.warnings) EXPECT_EQ(w.find("invert"), std::string::npos) << w;
+  // Clamped at 0 where the scaled value passes 1; alpha is not inverted.
+  const Scene rgba = load("rgba.png", "\"bool invert\" true");
+  const TextureImage& c = rgba.textures[static_cast<std::size_t>(rgba.materials[rgba.meshes[0].material].base_color_texture)];
+  EXPECT_EQ(c.value(0), 0.0f);
+  EXPECT_EQ(c.value(1), 1.0f);
+  EXPECT_FLOAT_EQ(c.value(2), 1.0f - v);
+  EXPECT_FLOAT_EQ(c.value(3), 64.0f / 255.0f);
+  // Without invert, the image keeps its codes and the scale stays a tint.
+  const Scene plain = load("g.png", "\"bool invert\" false \"float scale\" 1.5");
+  const Material& p = plain.materials[plain.meshes[0].material];
+  EXPECT_TRUE(plain.textures[static_cast<std::size_t>(p.base_color_texture)].has_codes());
+  EXPECT_EQ(p.base_color, Vec3f(1.5f));
 }
 
 // A material's "texture displacement" (a float texture) is a bump map: the image, with the

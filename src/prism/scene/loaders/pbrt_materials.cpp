@@ -189,12 +189,19 @@ PbrtTexture PbrtBuilder::imagemap(const std::string& name, const PbrtParams& p) 
   // flipped in pbrt_shapes.cpp; texture_cache.h turns that into Prism's addressing).
   const double su = p.get_float("uscale", 1.0), sv = p.get_float("vscale", 1.0);
   const double du = p.get_float("udelta", 0.0), dv = p.get_float("vdelta", 0.0);
-  if (su != 1.0 || sv != 1.0 || du != 0.0 || dv != 0.0)
+  const bool invert = p.get_bool("invert", false);
+  // An inverted texture is a copy of its own (the uv transform's copy, or an identity one).
+  if (su != 1.0 || sv != 1.0 || du != 0.0 || dv != 0.0 || invert)
     t.image = textures_->add_with_uv_transform(t.image, su, sv, du, dv);
   const double scale = p.get_float("scale", 1.0);
   t.value = Vec3f(static_cast<float>(scale));
+  if (invert) {
+    // pbrt-v4 inverts the scaled value, max(0, 1 − scale · v): scale is baked in with it.
+    TextureImage& image = scene_.textures[static_cast<std::size_t>(t.image)];
+    image = inverted_texture(image, static_cast<float>(scale));
+    t.value = Vec3f(1.0f);
+  }
   for (const char* n : {"filter", "maxanisotropy"}) p.find(n);
-  if (p.get_bool("invert", false)) ignore("imagemap \"invert\"", p);  // 1 − value: not applied
   return t;
 }
 

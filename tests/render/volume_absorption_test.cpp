@@ -144,6 +144,19 @@ TEST(VolumeAbsorption, ShadowRaysInsideTheMediumAreAbsorbedToo) {
   EXPECT_NEAR(a.mean.y / b.mean.y, 1.0 / 32.0, 3e-4 / 32.0 + 1e-7);
 }
 
+// A checkpoint of one absorption does not resume as another (renderer.h's fingerprint).
+TEST(VolumeAbsorption, TheAbsorptionIsPartOfTheImageFingerprint) {
+  RenderSettings s;
+  s.width = s.height = 4;
+  Scene a = block_scene(kAbsorbingGlass);
+  const std::uint64_t before = image_fingerprint(a, s);
+  a.materials[0].attenuation_distance = 3.0f;
+  EXPECT_NE(image_fingerprint(a, s), before);
+  Scene b = block_scene(kAbsorbingGlass);
+  b.materials[0].attenuation_color.y = 0.5f;
+  EXPECT_NE(image_fingerprint(b, s), before);
+}
+
 TEST(VolumeAbsorption, JsonKeysNeedASolidDielectricAndBothValues) {
   const auto error = [](const std::string& glass) {
     return test::error_of<SceneError>([&] { block_scene(glass); });

@@ -91,6 +91,11 @@ std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settin
       h.value(m.bump_texture);
       h.value(m.bump_scale);
     }
+    // Likewise only for glass that absorbs inside.
+    if (m.absorbs_inside()) {
+      h.value(m.attenuation_color);
+      h.value(m.attenuation_distance);
+    }
   }
   const Camera& c = scene.camera;
   for (float v : {c.eye.x, c.eye.y, c.eye.z, c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z,

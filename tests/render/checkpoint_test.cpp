@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 #include "prism/core/error.h"
 #include "prism/render/aov_images.h"
@@ -209,6 +210,46 @@ TEST(Fingerprint, CoversWhatChangesPixelsOnly) {
   bumped.textures.push_back(TextureImage{"heights", 1, 1, 1, {0.5f}, {}});
   bumped.materials[0].bump_texture = 0;
   EXPECT_NE(image_fingerprint(scene, base), image_fingerprint(bumped, base));
+}
+
+// Everything else that changes pixels is covered too (renderer.cpp hash_scene_details),
+// each only where it is not the default: a checkpoint of one scene never resumes as a
+// scene that differs in texels, texture addressing, uvs, instances, glass or lights.
+TEST(Fingerprint, CoversTexturesGeometryMaterialsAndLightShapes) {
+  const Scene scene = make_cornell_box();
+  const RenderSettings base = settings_for_test(8);
+  const std::uint64_t reference = image_fingerprint(scene, base);
+  // A copy is the same scene.
+  EXPECT_EQ(image_fingerprint(Scene(scene), base), reference);
+  Scene textured = scene;
+  textured.textures.push_back(TextureImage{"albedo", 1, 1, 3, {0.6f, 0.5f, 0.9f}, {}});
+  textured.materials[0].base_color_texture = 0;
+  const std::uint64_t with_texture = image_fingerprint(textured, base);
+  EXPECT_NE(with_texture, reference);
+  const auto differs = [&](const char* what, const std::function<void(Scene&)>& change) {
+    Scene s = textured;
+    change(s);
+    EXPECT_NE(image_fingerprint(s, base), with_texture) << what;
+  };
+  differs("texels", [](Scene& s) { s.textures[0].texels[1] = 0.25f; });
+  differs("texture scale", [](Scene& s) { s.textures[0].scale_u = 2.0f; });
+  differs("wrap", [](Scene& s) { s.textures[0].wrap_v = TextureWrap::clamp; });
+  differs("uvs", [](Scene& s) { s.meshes[0].uvs.assign(s.meshes[0].positions.size(), Vec2f(0.5f, 0.5f)); });
+  differs("instances", [](Scene& s) { s.instances.push_back(Instance{0, Transform::translate(Vec3f(1, 0, 0))}); });
+  differs("thin glass", [](Scene& s) {
+    s.materials[0].type = MaterialType::dielectric;
+    s.materials[0].thin_walled = true;
+  });
+  differs("dispersion", [](Scene& s) {
+    s.materials[0].dispersion = DispersionModel::cauchy;
+    s.materials[0].dispersion_coefficients = {1.5f, 0.004f};
+  });
+  differs("opacity", [](Scene& s) { s.materials[0].opacity = 0.5f; });
+  differs("conductor", [](Scene& s) {
+    s.materials[0].conductor_fresnel = ConductorFresnel::complex_ior;
+    s.materials[0].conductor_name = "Au";
+  });
+  differs("two-sided emission", [](Scene& s) { s.materials[3].emission.two_sided = true; });
 }
 
 PartialRender partial(const Scene& scene, int begin, int end) {

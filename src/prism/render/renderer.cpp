@@ -42,6 +42,85 @@ void hash_spectrum(Fnv1a& h, const color::PiecewiseLinearSpectrum& s) {
   h.bytes(s.values().data(), s.values().size_bytes());
 }
 
+// What changes a scene's pixels beyond the fields image_fingerprint hashed from the start,
+// each only where it differs from its default, so that scenes without it keep the
+// fingerprints of earlier versions (and their checkpoints still resume): shading
+// attributes of meshes, instances, textures (texels and addressing), the material fields
+// the first version left out, and light shapes. A checkpoint of a scene that differs in any
+// of them no longer resumes as the other.
+void hash_scene_details(Fnv1a& h, const Scene& scene) {
+  const auto vector_if_any = [&h](const auto& v) {
+    if (v.empty()) return;
+    h.value(v.size());
+    h.bytes(v.data(), v.size() * sizeof(v[0]));
+  };
+  for (const TriangleMesh& mesh : scene.meshes) {
+    vector_if_any(mesh.normals);
+    vector_if_any(mesh.uvs);
+    vector_if_any(mesh.tangents);
+    vector_if_any(mesh.tangent_signs);
+  }
+  for (const Instance& instance : scene.instances) {
+    h.value(instance.mesh);
+    h.value(instance.object_to_world.m);
+    h.value(instance.object_to_world.translation);
+  }
+  for (const TextureImage& t : scene.textures) {
+    h.value(t.width);
+    h.value(t.height);
+    h.value(t.channels);
+    vector_if_any(t.texels);
+    vector_if_any(t.codes);
+    vector_if_any(t.rgbe);
+    vector_if_any(t.halves);
+    h.value(t.encoding);
+    for (float v : {t.offset_u, t.offset_v, t.scale_u, t.scale_v, t.rotation_radians}) h.value(v);
+    h.value(t.wrap_u);
+    h.value(t.wrap_v);
+  }
+  const Material plain;
+  for (const Material& m : scene.materials) {
+    if (m.base_color_texture != plain.base_color_texture) h.value(m.base_color_texture);
+    if (m.metallic_roughness_texture != plain.metallic_roughness_texture) h.value(m.metallic_roughness_texture);
+    if (m.emission.texture != plain.emission.texture) h.value(m.emission.texture);
+    if (m.emission.two_sided != plain.emission.two_sided) h.value(m.emission.two_sided);
+    if (m.anisotropy != plain.anisotropy) h.value(m.anisotropy);
+    if (m.microfacet != plain.microfacet) h.value(m.microfacet);
+    if (m.conductor_fresnel != plain.conductor_fresnel) {
+      h.value(m.conductor_fresnel);
+      h.bytes(m.conductor_name.data(), m.conductor_name.size());
+    }
+    if (m.dispersion != plain.dispersion) {
+      h.value(m.dispersion);
+      h.value(m.dispersion_coefficients);
+    }
+    if (m.thin_walled != plain.thin_walled) h.value(m.thin_walled);
+    if (m.transmission != plain.transmission) h.value(m.transmission);
+    if (m.alpha_mode != plain.alpha_mode) {
+      h.value(m.alpha_mode);
+      h.value(m.alpha_cutoff);
+    }
+    if (m.opacity != plain.opacity) h.value(m.opacity);
+  }
+  const Light point;
+  for (const Light& l : scene.lights) {
+    if (l.color_space != point.color_space) h.value(l.color_space);
+    if (l.type == LightType::spot) {
+      h.value(l.spot_inner_angle_degrees);
+      h.value(l.spot_outer_angle_degrees);
+    }
+    if (l.angular_diameter_degrees != point.angular_diameter_degrees) h.value(l.angular_diameter_degrees);
+    if (l.type == LightType::environment) {
+      if (l.environment_texture != point.environment_texture) h.value(l.environment_texture);
+      if (l.environment_mapping != point.environment_mapping) h.value(l.environment_mapping);
+      if (!(l.environment_to_world == Transform{})) {
+        h.value(l.environment_to_world.m);
+        h.value(l.environment_to_world.translation);
+      }
+    }
+  }
+}
+
 }  // namespace
 
 void validate_render_settings(const RenderSettings& s) {
@@ -131,6 +210,7 @@ std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settin
     h.value(l.intensity);
     if (l.spectrum) hash_spectrum(h, *l.spectrum);
   }
+  hash_scene_details(h, scene);
   // Only when requested, so renders without AOVs keep the fingerprints of earlier versions.
   if (settings.aovs.any()) h.value(settings.aovs.bits());
   return h.digest();

@@ -47,7 +47,12 @@ struct SampledSpectrum {
     for (int i = 0; i < N; ++i) values[i] = a[static_cast<std::size_t>(i)];
   }
   constexpr float operator[](std::size_t i) const { return values[i]; }
-  constexpr float& operator[](std::size_t i) { return values[i]; }
+  // A lane as a float lvalue. Clang binds no reference to a vector element (GCC does); both
+  // let a vector's element type alias it, as SSE code that reads __m128 through float* relies on.
+  float& operator[](std::size_t i) {
+    if constexpr (kVectorLanes) return reinterpret_cast<float*>(&values)[i];
+    else return values[i];
+  }
   constexpr std::array<float, N> array() const {
     std::array<float, N> a{};
     for (int i = 0; i < N; ++i) a[static_cast<std::size_t>(i)] = values[i];

@@ -1,8 +1,8 @@
 #include "prism/scene/texture.h"
 
 #include <algorithm>
-
 #include <cmath>
+#include <utility>
 
 #include "prism/color/transfer_functions.h"
 
@@ -41,21 +41,17 @@ std::vector<float> TextureImage::linear_values() const {
   return values;
 }
 
-TextureImage inverted_texture(const TextureImage& image, float scale) {
-  TextureImage out = image;
-  out.texels = image.linear_values();
-  out.codes.clear();
-  out.rgbe.clear();
-  out.halves.clear();
-  out.codes.shrink_to_fit();
-  out.rgbe.shrink_to_fit();
-  out.halves.shrink_to_fit();
+void invert_texture_values(TextureImage& image, float scale) {
+  std::vector<float> values = image.linear_values();
   const auto channels = static_cast<std::size_t>(image.channels);
-  for (std::size_t i = 0; i < out.texels.size(); ++i)
+  for (std::size_t i = 0; i < values.size(); ++i)
     if (!is_alpha_channel(static_cast<int>(i % channels), image.channels))
-      out.texels[i] = std::max(0.0f, 1.0f - scale * out.texels[i]);
-  out.name += " (inverted)";
-  return out;
+      values[i] = std::max(0.0f, 1.0f - scale * values[i]);
+  image.texels = std::move(values);
+  image.codes = {};
+  image.rgbe = {};
+  image.halves = {};
+  image.name += " (inverted)";
 }
 
 }  // namespace prism

@@ -94,9 +94,9 @@ struct TextureImage {
 };
 
 // pbrt-v4's imagemap "invert" (ImageTexture: v ↦ max(0, 1 − scale · v), the texture's scale
-// applied first): a copy of `image` with every colour channel so mapped, alpha kept, held
-// as floats (an inverted sRGB code is no code: 4 bytes a sample instead of 1).
-TextureImage inverted_texture(const TextureImage& image, float scale);
+// applied first), in place: every colour channel so mapped, alpha kept, held as floats from
+// then on (an inverted sRGB code is no code: 4 bytes a sample instead of 1).
+void invert_texture_values(TextureImage& image, float scale);
 
 // Texel (x, y), row 0 at the top, as RGB: grey and grey+alpha images carry their value in
 // the first channel, which stands for all three (alpha is not colour).

@@ -197,8 +197,7 @@ PbrtTexture PbrtBuilder::imagemap(const std::string& name, const PbrtParams& p) 
   t.value = Vec3f(static_cast<float>(scale));
   if (invert) {
     // pbrt-v4 inverts the scaled value, max(0, 1 − scale · v): scale is baked in with it.
-    TextureImage& image = scene_.textures[static_cast<std::size_t>(t.image)];
-    image = inverted_texture(image, static_cast<float>(scale));
+    invert_texture_values(scene_.textures[static_cast<std::size_t>(t.image)], static_cast<float>(scale));
     t.value = Vec3f(1.0f);
   }
   for (const char* n : {"filter", "maxanisotropy"}) p.find(n);

@@ -101,6 +101,10 @@ void hash_scene_details(Fnv1a& h, const Scene& scene) {
       h.value(m.alpha_cutoff);
     }
     if (m.opacity != plain.opacity) h.value(m.opacity);
+    if (m.absorbs_inside()) {
+      h.value(m.attenuation_color);
+      h.value(m.attenuation_distance);
+    }
   }
   const Light point;
   for (const Light& l : scene.lights) {
@@ -169,11 +173,6 @@ std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settin
     if (m.bump_texture >= 0) {
       h.value(m.bump_texture);
       h.value(m.bump_scale);
-    }
-    // Likewise only for glass that absorbs inside.
-    if (m.absorbs_inside()) {
-      h.value(m.attenuation_color);
-      h.value(m.attenuation_distance);
     }
   }
   const Camera& c = scene.camera;

@@ -11,6 +11,7 @@
 #include <optional>
 #include <variant>
 
+#include "bsdf/bsdf_test_helpers.h"
 #include "prism/core/pcg32.h"
 #include "prism/sampling/warps.h"
 
@@ -18,27 +19,9 @@ namespace prism::bsdf {
 namespace {
 
 using S3 = color::SampledSpectrum<3>;
-
-struct Estimate {
-  double mean = 0, stderr_ = 0;
-};
-template <typename F>
-Estimate monte_carlo(long n, unsigned long long seed, const F& f) {
-  Pcg32 rng(seed, 11);
-  double sum = 0, sum2 = 0;
-  for (long i = 0; i < n; ++i) {
-    const double v = f(rng);
-    sum += v;
-    sum2 += v * v;
-  }
-  const double mean = sum / n;
-  return {mean, std::sqrt(std::max(0.0, sum2 / n - mean * mean) / n)};
-}
-
-Vec3f direction_at(double theta_deg) {
-  const double t = theta_deg * std::numbers::pi / 180.0;
-  return {static_cast<float>(std::sin(t)), 0.0f, static_cast<float>(std::cos(t))};
-}
+using test_helpers::direction_at;
+using test_helpers::Estimate;
+using test_helpers::monte_carlo;
 
 // ∫ pdf(wo, wi) dωi by uniform-sphere sampling equals the probability that sample()
 // succeeds (both estimated; their difference is compared with 4 combined standard errors).

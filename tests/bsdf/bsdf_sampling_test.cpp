@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "bsdf/bsdf_test_helpers.h"
 #include "bsdf/stretched_chi_square.h"
 #include "prism/core/pcg32.h"
 
@@ -17,26 +18,15 @@ namespace prism::bsdf {
 namespace {
 
 using Spectrum3 = color::SampledSpectrum<3>;
+using test_helpers::direction_at;
+using test_helpers::rgb;
 constexpr double kAlphaTotal = 0.01;
 // Histograms drawn in this file (Šidák split): lambert 4, conductor 5 kinds × 9 = 45,
 // metallic-roughness 5 × 3 = 15, rough dielectric 3 α × 5 wo × 2 halves = 30, dispersive 2,
-// smooth-dielectric lobe choice 4.
-constexpr int kChiSquareTests = 4 + 45 + 15 + 30 + 2 + 4;
+// smooth-dielectric lobe choice 4, coated lobes 3 bases × 2 coat roughnesses × 3 wo = 18 plus
+// a smooth coat's non-delta part 3.
+constexpr int kChiSquareTests = 4 + 45 + 15 + 30 + 2 + 4 + 18 + 3;
 constexpr long kSamples = 100'000;
-
-Spectrum3 rgb(float r, float g, float b) {
-  Spectrum3 s;
-  s[0] = r;
-  s[1] = g;
-  s[2] = b;
-  return s;
-}
-
-Vec3f direction_at(double theta_deg, double phi_deg = 0.0) {
-  const double t = theta_deg * std::numbers::pi / 180.0, p = phi_deg * std::numbers::pi / 180.0;
-  return {static_cast<float>(std::sin(t) * std::cos(p)), static_cast<float>(std::sin(t) * std::sin(p)),
-          static_cast<float>(std::cos(t))};
-}
 
 // Draws (u_lobe, u) from the harness's 2D uniform by splitting u.x: the high bits pick the
 // lobe, the rest drive the direction (both uniform and independent to float precision).
@@ -223,6 +213,46 @@ TEST(BsdfSampling, SmoothDielectricChoosesLobesByFresnel) {
     const double expected[] = {kChoices * double(F), kChoices * (1.0 - F)};
     const auto r = test::chi_square_test(observed, expected);
     EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+  }
+}
+
+// Clear coats (clearcoat.h) over each reflective base: the mixture of the coat's GGX lobe
+// and the base's. Stretched moderately around the mirror direction, where the coat's lobe
+// is, so that the broad base lobes stay resolved too.
+TEST(BsdfSampling, CoatedLobesMatchPdf) {
+  const Bsdf<3>::Lobe bases[] = {
+      Lambertian<3>{rgb(0.3f, 0.5f, 0.7f)},
+      MetallicRoughness<3>::from_roughness(rgb(0.2f, 0.5f, 0.9f), 0.3f, 0.7f),
+      RoughConductor<3>{MicrofacetDistribution::isotropic(MicrofacetType::ggx, 0.5f), ConductorFresnel<3>::schlick(Spectrum3(0.8f))},
+  };
+  int seed = 500;
+  for (const auto& base : bases)
+    for (float coat_roughness : {0.3f, 0.7f})
+      for (double theta : kThetas) {
+        Bsdf<3> b{base};
+        b.coat = Clearcoat::make(1.0f, coat_roughness);
+        const Vec3f wo = direction_at(theta, 60.0);
+        const float s = std::max(0.3f, 2.0f * coat_roughness * coat_roughness);
+        bsdf_p_value(b, wo, Vec3f(-wo.x, -wo.y, wo.z), s, 0, ++seed);
+      }
+  // A smooth coat: its delta samples are left out (as failed samples: absent mass), the rest
+  // must follow pdf(), which integrates to 1 − p_c.
+  Bsdf<3> smooth{Lambertian<3>{Spectrum3(0.4f)}};
+  smooth.coat = Clearcoat::make(1.0f, 0.0f);
+  for (double theta : kThetas) {
+    const Vec3f wo = direction_at(theta, 60.0);
+    unsigned long long state = 77 + static_cast<unsigned long long>(theta);
+    const auto r = test::stretched_chi_square(
+        [&](Vec2f u, Vec3f& wi) {
+          const auto [u_lobe, u2] = split(u, state);
+          const auto smp = smooth.sample(wo, u_lobe, u2);
+          if (!smp || smp->is_specular) return false;
+          wi = smp->wi;
+          return true;
+        },
+        [&](const Vec3f& wi) { return double(smooth.pdf(wo, wi)); }, Vec3f(0, 0, 1), 1.0f, kSamples,
+        ++seed, 20, 40, 8);
+    EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message << " theta " << theta;
   }
 }
 

@@ -1,14 +1,23 @@
 #pragma once
 // The BSDF of a shading point: a closed set of lobes dispatched statically (std::variant,
 // no virtual calls), all in the local shading frame (z = shading normal; the caller maps
-// with prism::Frame). eval/sample/pdf agree: sample() draws wi with density pdf(wo, wi)
-// and returns f = eval(wo, wi) (cosine not included); see bsdf_sample.h for the delta-lobe
-// and throughput conventions and dielectric.h for dispersion and the η² convention.
+// with prism::Frame), optionally under a clear coat (clearcoat.h). eval/sample/pdf agree:
+// sample() draws wi with density pdf(wo, wi) and returns f = eval(wo, wi) (cosine not
+// included); see bsdf_sample.h for the delta-lobe and throughput conventions and
+// dielectric.h for dispersion and the η² convention.
+//
+// With a coat, sample() is a one-sample mixture: the coat with probability
+// p_c = A_c / (A_c + (1 − A_c) a_base) (A_c the coat's albedo at wo, a_base an estimate of
+// the base's), else the base; pdf() is p_c p_coat + (1 − p_c) p_base over the non-delta
+// parts. A smooth coat is a delta lobe next to a non-delta base: a sample from it is flagged
+// is_specular with pdf p_c, and eval()/pdf() leave it out, as bsdf_sample.h says of deltas.
+#include <algorithm>
 #include <optional>
 #include <type_traits>
 #include <variant>
 
 #include "prism/bsdf/bsdf_sample.h"
+#include "prism/bsdf/clearcoat.h"
 #include "prism/bsdf/dielectric.h"
 #include "prism/bsdf/lambertian.h"
 #include "prism/bsdf/metallic_roughness.h"
@@ -23,9 +32,59 @@ struct Bsdf {
   using Lobe = std::variant<Lambertian<N>, SpecularReflection<N>, RoughConductor<N>,
                             Dielectric<N>, MetallicRoughness<N>, ThinDielectric<N>>;
   Lobe lobe;
+  // On reflective lobes only (the material layer never coats a dielectric); weight 0: none.
+  Clearcoat coat{};
 
   color::SampledSpectrum<N> eval(const Vec3f& wo, const Vec3f& wi,
                                  TransportMode mode = TransportMode::radiance) const {
+    const color::SampledSpectrum<N> f = lobe_eval(wo, wi, mode);
+    if (__builtin_expect(!coat.present(), 1)) return f;
+    return f * coat.base_weight(wo) + color::SampledSpectrum<N>(coat.eval(wo, wi));
+  }
+  float pdf(const Vec3f& wo, const Vec3f& wi) const {
+    const float p = lobe_pdf(wo, wi);
+    if (__builtin_expect(!coat.present(), 1)) return p;
+    const float p_coat = coat_probability(wo);
+    return p_coat * coat.pdf(wo, wi) + (1.0f - p_coat) * p;
+  }
+  // u_lobe picks among lobes / reflection vs refraction; u drives the direction.
+  std::optional<BsdfSample<N>> sample(const Vec3f& wo, float u_lobe, Vec2f u,
+                                      TransportMode mode = TransportMode::radiance) const {
+    if (__builtin_expect(!coat.present(), 1)) return lobe_sample(wo, u_lobe, u, mode);
+    return coated_sample(wo, u_lobe, u, mode);
+  }
+  // Every lobe is a delta: NEE and MIS are pointless at this vertex.
+  bool is_specular() const { return lobe_is_specular() && (!coat.present() || coat.is_smooth()); }
+  // Which of sample()'s numbers the lobe reads, so callers can skip drawing the others:
+  // the single-component lobes never choose with u_lobe; a mirror needs no direction
+  // number. Listed by exclusion, so that a lobe added later draws every number (safe)
+  // until it is listed here.
+  bool uses_lobe_sample() const {
+    return coat.present() || (!std::holds_alternative<Lambertian<N>>(lobe) &&
+                              !std::holds_alternative<SpecularReflection<N>>(lobe) &&
+                              !std::holds_alternative<RoughConductor<N>>(lobe));
+  }
+  bool uses_direction_sample() const {
+    return !std::holds_alternative<SpecularReflection<N>>(lobe) || (coat.present() && !coat.is_smooth());
+  }
+  // The integrator must terminate secondary wavelengths before shading (dielectric.h).
+  bool is_dispersive() const {
+    const auto* d = std::get_if<Dielectric<N>>(&lobe);
+    return d != nullptr && d->is_dispersive();
+  }
+
+  // Probability that a coated sample() draws from the coat.
+  float coat_probability(const Vec3f& wo) const {
+    const float a_coat = coat.albedo(wo);
+    // The floor keeps the base sampled at least now and then even where the estimate says
+    // it reflects nothing at this wo (a black metal at normal incidence still reflects at
+    // other angles): a lobe gets probability 0 only if its f is identically 0.
+    const float a_base = std::max(0.02f, base_albedo_estimate(wo));
+    return a_coat / (a_coat + (1.0f - a_coat) * a_base);
+  }
+
+ private:
+  color::SampledSpectrum<N> lobe_eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const {
     return std::visit(
         [&](const auto& l) {
           if constexpr (std::is_same_v<std::decay_t<decltype(l)>, Dielectric<N>>) return l.eval(wo, wi, mode);
@@ -33,12 +92,10 @@ struct Bsdf {
         },
         lobe);
   }
-  float pdf(const Vec3f& wo, const Vec3f& wi) const {
+  float lobe_pdf(const Vec3f& wo, const Vec3f& wi) const {
     return std::visit([&](const auto& l) { return l.pdf(wo, wi); }, lobe);
   }
-  // u_lobe picks among lobes / reflection vs refraction; u drives the direction.
-  std::optional<BsdfSample<N>> sample(const Vec3f& wo, float u_lobe, Vec2f u,
-                                      TransportMode mode = TransportMode::radiance) const {
+  std::optional<BsdfSample<N>> lobe_sample(const Vec3f& wo, float u_lobe, Vec2f u, TransportMode mode) const {
     return std::visit(
         [&](const auto& l) {
           if constexpr (std::is_same_v<std::decay_t<decltype(l)>, Dielectric<N>>) return l.sample(wo, u_lobe, u, mode);
@@ -46,8 +103,7 @@ struct Bsdf {
         },
         lobe);
   }
-  // Every lobe is a delta: NEE and MIS are pointless at this vertex.
-  bool is_specular() const {
+  bool lobe_is_specular() const {
     return std::visit(
         [](const auto& l) {
           using T = std::decay_t<decltype(l)>;
@@ -58,19 +114,53 @@ struct Bsdf {
         },
         lobe);
   }
-  // Which of sample()'s numbers the lobe reads, so callers can skip drawing the others:
-  // the single-component lobes never choose with u_lobe; a mirror needs no direction
-  // number. Listed by exclusion, so that a lobe added later draws every number (safe)
-  // until it is listed here.
-  bool uses_lobe_sample() const {
-    return !std::holds_alternative<Lambertian<N>>(lobe) && !std::holds_alternative<SpecularReflection<N>>(lobe) &&
-           !std::holds_alternative<RoughConductor<N>>(lobe);
+  // The base's reflectance from wo, roughly: its Fresnel or albedo term averaged over the
+  // channels (only sampling probabilities depend on it).
+  float base_albedo_estimate(const Vec3f& wo) const {
+    const float cos_o = abs_cos_theta(wo);
+    return std::visit(
+        [&](const auto& l) {
+          using T = std::decay_t<decltype(l)>;
+          if constexpr (std::is_same_v<T, Lambertian<N>> || std::is_same_v<T, SpecularReflection<N>>)
+            return l.reflectance.average();
+          else if constexpr (std::is_same_v<T, RoughConductor<N>>) return l.fresnel(cos_o).average();
+          else if constexpr (std::is_same_v<T, MetallicRoughness<N>>) return l.albedo_estimate(cos_o);
+          else return 1.0f;
+        },
+        lobe);
   }
-  bool uses_direction_sample() const { return !std::holds_alternative<SpecularReflection<N>>(lobe); }
-  // The integrator must terminate secondary wavelengths before shading (dielectric.h).
-  bool is_dispersive() const {
-    const auto* d = std::get_if<Dielectric<N>>(&lobe);
-    return d != nullptr && d->is_dispersive();
+  std::optional<BsdfSample<N>> coated_sample(const Vec3f& wo, float u_lobe, Vec2f u, TransportMode mode) const {
+    if (wo.z == 0.0f) return std::nullopt;
+    const float p_coat = coat_probability(wo);
+    if (u_lobe < p_coat) {
+      const auto wi = coat.sample_direction(wo, u);
+      if (!wi) return std::nullopt;
+      BsdfSample<N> s;
+      s.wi = *wi;
+      if (coat.is_smooth()) {
+        s.f = color::SampledSpectrum<N>(coat.albedo(wo) / abs_cos_theta(s.wi));
+        s.pdf = p_coat;
+        s.is_specular = true;
+        return s;
+      }
+      s.pdf = pdf(wo, s.wi);
+      if (!(s.pdf > 0.0f)) return std::nullopt;
+      s.f = eval(wo, s.wi, mode);
+      return s;
+    }
+    // The rest of u_lobe, rescaled to [0, 1), chooses within the base.
+    const float u_base = std::min((u_lobe - p_coat) / (1.0f - p_coat), 0x1.fffffep-1f);
+    auto s = lobe_sample(wo, u_base, u, mode);
+    if (!s) return s;
+    if (s->is_specular) {
+      s->f *= coat.base_weight(wo);
+      s->pdf *= 1.0f - p_coat;
+      return s;
+    }
+    s->pdf = pdf(wo, s->wi);
+    if (!(s->pdf > 0.0f)) return std::nullopt;
+    s->f = eval(wo, s->wi, mode);
+    return s;
   }
 };
 

@@ -14,6 +14,7 @@
 //  - pdf is a solid-angle density over wi (or a discrete probability for delta lobes).
 #include <cmath>
 #include <cstdint>
+#include <optional>
 
 #include "prism/color/sampled_spectrum.h"
 #include "prism/core/vec.h"
@@ -51,6 +52,18 @@ inline bool same_hemisphere(const Vec3f& a, const Vec3f& b) { return a.z * b.z >
 // Mirror across the plane z = 0, used to evaluate two-sided reflection lobes with both
 // directions in the upper hemisphere.
 inline Vec3f flip_z(const Vec3f& w) { return {w.x, w.y, -w.z}; }
+
+// A two-sided reflection lobe's directions mirrored into the upper hemisphere (when wo is
+// below) and their half vector h = normalize(o + i); nothing when wo and wi lie on
+// opposite sides (or either on the horizon).
+struct UpperReflection {
+  Vec3f o, i, h;
+};
+inline std::optional<UpperReflection> upper_reflection(const Vec3f& wo, const Vec3f& wi) {
+  if (!same_hemisphere(wo, wi)) return std::nullopt;
+  const Vec3f o = wo.z < 0.0f ? flip_z(wo) : wo, i = wo.z < 0.0f ? flip_z(wi) : wi;
+  return UpperReflection{o, i, normalize(o + i)};  // o.z + i.z > 0: never the zero vector
+}
 
 // Mirror reflection of wo about the unit normal n: 2 (wo·n) n − wo.
 inline Vec3f reflect(const Vec3f& wo, const Vec3f& n) { return n * (2.0f * dot(wo, n)) - wo; }

@@ -43,18 +43,25 @@ struct MetallicRoughness {
     return color::SampledSpectrum<N>(kDielectricF0 * (1.0f - metallic)) + base_color * metallic;
   }
 
+  // Albedo estimates of the two lobes at |cos θo| (channel means).
+  float specular_albedo_estimate(float cos_o) const { return fresnel_schlick(f0(), cos_o).average(); }
+  float diffuse_albedo_estimate(float cos_o) const {
+    return (1.0f - metallic) * base_color.average() * (1.0f - fresnel_schlick(kDielectricF0, cos_o));
+  }
+  float albedo_estimate(float cos_o) const { return specular_albedo_estimate(cos_o) + diffuse_albedo_estimate(cos_o); }
+
   // Probability of sampling the specular lobe for this wo.
   float specular_probability(const Vec3f& wo) const {
     const float cos_o = abs_cos_theta(wo);
-    const float e_spec = fresnel_schlick(f0(), cos_o).average();
-    const float e_diff = (1.0f - metallic) * base_color.average() * (1.0f - fresnel_schlick(kDielectricF0, cos_o));
+    const float e_spec = specular_albedo_estimate(cos_o);
+    const float e_diff = diffuse_albedo_estimate(cos_o);
     return e_spec + e_diff > 0.0f ? e_spec / (e_spec + e_diff) : 1.0f;
   }
 
   color::SampledSpectrum<N> eval(const Vec3f& wo, const Vec3f& wi) const {
-    if (!same_hemisphere(wo, wi)) return {};
-    const Vec3f o = wo.z < 0.0f ? flip_z(wo) : wo, i = wo.z < 0.0f ? flip_z(wi) : wi;
-    const Vec3f h = normalize(o + i);
+    const auto r = upper_reflection(wo, wi);
+    if (!r) return {};
+    const Vec3f &o = r->o, &i = r->i, &h = r->h;
     const float i_h = dot(i, h);
     const float diffuse_weight = (1.0f - metallic) * (1.0f - fresnel_schlick(kDielectricF0, i_h)) *
                                  std::numbers::inv_pi_v<float>;
@@ -63,9 +70,9 @@ struct MetallicRoughness {
   }
 
   float pdf(const Vec3f& wo, const Vec3f& wi) const {
-    if (!same_hemisphere(wo, wi)) return 0.0f;
-    const Vec3f o = wo.z < 0.0f ? flip_z(wo) : wo, i = wo.z < 0.0f ? flip_z(wi) : wi;
-    const Vec3f h = normalize(o + i);
+    const auto r = upper_reflection(wo, wi);
+    if (!r) return 0.0f;
+    const Vec3f &o = r->o, &i = r->i, &h = r->h;
     const float p_s = specular_probability(o);
     const float p_spec = distribution.pdf_microfacet_normal(o, h) * reflection_jacobian(o, h);
     return p_s * p_spec + (1.0f - p_s) * cosine_hemisphere_pdf(i.z);

@@ -43,22 +43,17 @@ struct RoughConductor {
   bool is_specular() const { return distribution.effectively_smooth(); }
 
   color::SampledSpectrum<N> eval(const Vec3f& wo, const Vec3f& wi) const {
-    if (is_specular() || !same_hemisphere(wo, wi)) return {};
-    const Vec3f o = wo.z < 0.0f ? flip_z(wo) : wo, i = wo.z < 0.0f ? flip_z(wi) : wi;
-    Vec3f h = o + i;
-    if (length_squared(h) == 0.0f) return {};
-    h = normalize(h);
-    const float scale = distribution.D(h) * distribution.G2(o, i) / (4.0f * o.z * i.z);
-    return fresnel(dot(o, h)) * scale;
+    if (is_specular()) return {};
+    const auto r = upper_reflection(wo, wi);
+    if (!r) return {};
+    const float scale = distribution.D(r->h) * distribution.G2(r->o, r->i) / (4.0f * r->o.z * r->i.z);
+    return fresnel(dot(r->o, r->h)) * scale;
   }
 
   float pdf(const Vec3f& wo, const Vec3f& wi) const {
-    if (is_specular() || !same_hemisphere(wo, wi)) return 0.0f;
-    const Vec3f o = wo.z < 0.0f ? flip_z(wo) : wo, i = wo.z < 0.0f ? flip_z(wi) : wi;
-    Vec3f h = o + i;
-    if (length_squared(h) == 0.0f) return 0.0f;
-    h = normalize(h);
-    return distribution.pdf_microfacet_normal(o, h) * reflection_jacobian(o, h);
+    if (is_specular()) return 0.0f;
+    const auto r = upper_reflection(wo, wi);
+    return r ? distribution.pdf_microfacet_normal(r->o, r->h) * reflection_jacobian(r->o, r->h) : 0.0f;
   }
 
   std::optional<BsdfSample<N>> sample(const Vec3f& wo, float /*u_lobe*/, Vec2f u) const {

@@ -6,6 +6,9 @@ namespace prism {
 
 MaterialTables::MaterialTables(const std::vector<Material>& materials) {
   for (const Material& m : materials) {
+    // The coat's albedo table (≈ 30 ms) is built here, before the render's threads start,
+    // not by the first shading call that needs it.
+    if (m.has_clearcoat()) bsdf::coat_directional_albedo(1.0f, m.clearcoat_roughness);
     if ((m.type == MaterialType::conductor) && m.conductor_fresnel == ConductorFresnel::complex_ior)
       conductors_.emplace_back(bsdf::conductor_ior(m.conductor_name));  // UsageError for unknown metals
     else
@@ -48,10 +51,8 @@ float channel_wavelength_nm(const Wavelengths<Mode>& w, int channel) {
   else return kRgbRepresentativeWavelengthsNm[static_cast<std::size_t>(channel)];
 }
 
-}  // namespace
-
 template <class Mode>
-bsdf::Bsdf<Mode::kChannels> make_bsdf(const Material& m, std::uint32_t material_index, const Spectrum<Mode>& base,
+bsdf::Bsdf<Mode::kChannels> base_bsdf(const Material& m, std::uint32_t material_index, const Spectrum<Mode>& base,
                                       const MaterialPoint& point, const Wavelengths<Mode>& w,
                                       const MaterialTables& tables) {
   constexpr int N = Mode::kChannels;
@@ -92,6 +93,19 @@ bsdf::Bsdf<Mode::kChannels> make_bsdf(const Material& m, std::uint32_t material_
     case MaterialType::diffuse: break;
   }
   return {bsdf::Lambertian<N>{base}};
+}
+
+}  // namespace
+
+template <class Mode>
+bsdf::Bsdf<Mode::kChannels> make_bsdf(const Material& m, std::uint32_t material_index, const Spectrum<Mode>& base,
+                                      const MaterialPoint& point, const Wavelengths<Mode>& w,
+                                      const MaterialTables& tables) {
+  auto b = base_bsdf<Mode>(m, material_index, base, point, w, tables);
+  // untextured_point() gives dielectrics no coat.
+  if (point.clearcoat > 0.0f)
+    b.coat = bsdf::Clearcoat::make(std::min(point.clearcoat, 1.0f), std::clamp(point.clearcoat_roughness, 0.0f, 1.0f));
+  return b;
 }
 
 template bsdf::Bsdf<3> make_bsdf<SpectralMode<3>>(const Material&, std::uint32_t, const Spectrum<SpectralMode<3>>&, const MaterialPoint&,

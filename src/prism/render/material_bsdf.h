@@ -37,8 +37,12 @@ inline constexpr float kDLineWavelengthNm = 587.56f;
 struct MaterialPoint {
   float roughness = 0.5f;  // perceptual roughness r; α = r²
   float metallic = 0.0f;
+  float clearcoat = 0.0f;            // the coat's weight
+  float clearcoat_roughness = 0.0f;  // its perceptual roughness
 };
-inline MaterialPoint untextured_point(const Material& m) { return {m.roughness, m.metallic}; }
+inline MaterialPoint untextured_point(const Material& m) {
+  return {m.roughness, m.metallic, m.has_clearcoat() ? m.clearcoat : 0.0f, m.clearcoat_roughness};
+}
 
 // Index of refraction of a dielectric material at one wavelength.
 double dielectric_ior(const Material& m, double wavelength_nm);

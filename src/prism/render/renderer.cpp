@@ -105,6 +105,12 @@ void hash_scene_details(Fnv1a& h, const Scene& scene) {
       h.value(m.attenuation_color);
       h.value(m.attenuation_distance);
     }
+    if (m.has_clearcoat()) {
+      h.value(m.clearcoat);
+      h.value(m.clearcoat_roughness);
+      h.value(m.clearcoat_texture);
+      h.value(m.clearcoat_roughness_texture);
+    }
   }
   const Light point;
   for (const Light& l : scene.lights) {

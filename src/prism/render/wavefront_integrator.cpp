@@ -190,12 +190,21 @@ template <class Mode>
 MaterialPoint WavefrontIntegrator<Mode>::material_point(const Material& m, const SurfaceInteraction& si,
                                                         float cone_width, const Ray& ray) const {
   MaterialPoint point = untextured_point(m);
-  if (m.metallic_roughness_texture < 0) return point;
   // glTF 2.0 §3.9.2: metallicRoughnessTexture's G channel scales roughnessFactor, B scales
   // metallicFactor (linear data). Grey textures expand to (g, g, g), so both use g.
-  if (const auto texel = texel_at_hit(m.metallic_roughness_texture, si, cone_width, ray)) {
-    point.roughness *= (*texel)[1];
-    point.metallic *= (*texel)[2];
+  if (m.metallic_roughness_texture >= 0)
+    if (const auto texel = texel_at_hit(m.metallic_roughness_texture, si, cone_width, ray)) {
+      point.roughness *= (*texel)[1];
+      point.metallic *= (*texel)[2];
+    }
+  // KHR_materials_clearcoat: clearcoatTexture's R channel scales clearcoatFactor,
+  // clearcoatRoughnessTexture's G channel scales clearcoatRoughnessFactor.
+  if (point.clearcoat > 0.0f) {
+    if (m.clearcoat_texture >= 0)
+      if (const auto texel = texel_at_hit(m.clearcoat_texture, si, cone_width, ray)) point.clearcoat *= (*texel)[0];
+    if (m.clearcoat_roughness_texture >= 0)
+      if (const auto texel = texel_at_hit(m.clearcoat_roughness_texture, si, cone_width, ray))
+        point.clearcoat_roughness *= (*texel)[1];
   }
   return point;
 }

@@ -90,6 +90,16 @@ struct Material {
   float attenuation_distance = std::numeric_limits<float>::infinity();
   float transmission = 0.0f; // glTF KHR_materials_transmission factor (metallic_roughness)
 
+  // Clear coat (glTF KHR_materials_clearcoat, pbrt-v4's coated materials): a colourless
+  // η = 1.5 GGX layer of weight `clearcoat` ∈ [0, 1] and perceptual roughness
+  // `clearcoat_roughness` ∈ [0, 1] over a diffuse, mirror, conductor or metallic_roughness
+  // base (bsdf/clearcoat.h); dielectrics take none. The textures (linear) multiply the
+  // factors: the R channel of clearcoat_texture, the G channel of clearcoat_roughness_texture.
+  float clearcoat = 0.0f;
+  float clearcoat_roughness = 0.0f;
+  int clearcoat_texture = -1;
+  int clearcoat_roughness_texture = -1;
+
   AlphaMode alpha_mode = AlphaMode::opaque;
   float alpha_cutoff = 0.5f;  // for AlphaMode::mask; alpha comes from base colour texture's A
   float opacity = 1.0f;       // constant alpha (AlphaMode::blend: stochastic coverage)
@@ -97,6 +107,7 @@ struct Material {
   Emission emission;
 
   bool is_emissive() const { return emission.is_emissive(); }
+  bool has_clearcoat() const { return clearcoat > 0.0f && type != MaterialType::dielectric; }
   // Whether paths inside this material lose light on the way (render/volume_absorption.h).
   bool absorbs_inside() const {
     return type == MaterialType::dielectric && !thin_walled && std::isfinite(attenuation_distance) &&

@@ -13,6 +13,8 @@ std::vector<bool> textures_used_by_materials(const Scene& scene) {
     mark(m.normal_texture);
     mark(m.bump_texture);
     mark(m.emission.texture);
+    mark(m.clearcoat_texture);
+    mark(m.clearcoat_roughness_texture);
   }
   return used;
 }

@@ -324,6 +324,66 @@ TEST(GltfLoader, VolumeThicknessAndAttenuation) {
   }
 }
 
+// KHR_materials_clearcoat: the factors (defaults 0), its textures as linear data with their
+// own transforms, and what Prism cannot do said: a coat on glass, a coat's normal map.
+TEST(GltfLoader, ClearcoatFactorsAndTextures) {
+  test::ScratchFolder dir;
+  write_png(dir / "coat.png", EncodedImage{1, 1, 3, 8, {200, 100, 50}});
+  dir.write("quad.bin", quad_buffer());
+  const std::string materials = R"([
+    {"extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 0.8, "clearcoatRoughnessFactor": 0.3,
+       "clearcoatTexture": {"index": 0}, "clearcoatRoughnessTexture": {"index": 0,
+         "extensions": {"KHR_texture_transform": {"scale": [4, 4]}}}}}},
+    {"pbrMetallicRoughness": {"metallicFactor": 0},
+     "extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 1}, "KHR_materials_specular": {"specularFactor": 0}}},
+    {"extensions": {"KHR_materials_clearcoat": {"clearcoatRoughnessFactor": 0.5}}},
+    {"extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 1, "clearcoatNormalTexture": {"index": 0}},
+                    "KHR_materials_transmission": {"transmissionFactor": 1}}},
+    {"extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 0.5, "clearcoatNormalTexture": {"index": 0}}}}])";
+  const std::string top = R"("extensionsUsed": ["KHR_materials_clearcoat", "KHR_texture_transform"],
+    "extensionsRequired": ["KHR_materials_clearcoat"],
+    "textures": [{"source": 0}], "images": [{"uri": "coat.png"}],)";
+  const Scene s = parse(quad_document("quad.bin", top, materials), dir.path());
+  ASSERT_EQ(s.materials.size(), 5u);
+  const Material& coated = s.materials[0];
+  EXPECT_TRUE(coated.has_clearcoat());
+  EXPECT_EQ(coated.type, MaterialType::metallic_roughness);
+  EXPECT_FLOAT_EQ(coated.clearcoat, 0.8f);
+  EXPECT_FLOAT_EQ(coated.clearcoat_roughness, 0.3f);
+  ASSERT_GE(coated.clearcoat_texture, 0);
+  ASSERT_GE(coated.clearcoat_roughness_texture, 0);
+  EXPECT_EQ(s.textures[coated.clearcoat_texture].encoding, TextureEncoding::linear);
+  EXPECT_FLOAT_EQ(s.textures[coated.clearcoat_texture].scale_u, 1.0f);
+  EXPECT_FLOAT_EQ(s.textures[coated.clearcoat_roughness_texture].scale_u, 4.0f);  // its own transform
+  // A diffuse base (KHR_materials_specular 0) under a smooth coat.
+  EXPECT_EQ(s.materials[1].type, MaterialType::diffuse);
+  EXPECT_TRUE(s.materials[1].has_clearcoat());
+  EXPECT_FLOAT_EQ(s.materials[1].clearcoat_roughness, 0.0f);
+  EXPECT_FALSE(s.materials[2].has_clearcoat());  // clearcoatFactor defaults to 0
+  EXPECT_EQ(s.materials[3].type, MaterialType::dielectric);
+  EXPECT_FALSE(s.materials[3].has_clearcoat());
+  EXPECT_TRUE(s.materials[4].has_clearcoat());
+  int glass_warnings = 0, normal_warnings = 0;
+  for (const std::string& w : s.warnings) {
+    glass_warnings += w.find("materials[3].extensions.KHR_materials_clearcoat: ignored on a transmitting material") !=
+                      std::string::npos;
+    normal_warnings += w.find("materials[4].extensions.KHR_materials_clearcoat: clearcoatNormalTexture ignored") !=
+                       std::string::npos;
+  }
+  EXPECT_EQ(glass_warnings, 1);
+  EXPECT_EQ(normal_warnings, 1);
+  for (const auto& [coat, expected] : std::initializer_list<std::pair<std::string, std::string>>{
+           {R"({"clearcoatFactor": 1.5})", "clearcoatFactor must be in [0, 1]"},
+           {R"({"clearcoatFactor": 1, "clearcoatRoughnessFactor": -0.1})", "clearcoatRoughnessFactor must be in [0, 1]"},
+           {R"({"clearcoatFactor": 1, "clearcoatTexture": {"index": 9}})", "texture 9 does not exist"},
+           {R"({"clearcoatFactor": 1, "clearcoatTexture": 0})", "expected a textureInfo object"}}) {
+    const std::string message = parse_error(quad_document(kDataUri + base64(quad_buffer()), "",
+                                                          R"([{"extensions": {"KHR_materials_clearcoat": )" + coat + "}}]"));
+    EXPECT_NE(message.find(expected), std::string::npos) << coat << " → " << message;
+    EXPECT_NE(message.find("KHR_materials_clearcoat"), std::string::npos) << message;
+  }
+}
+
 TEST(GltfLoader, BadInputIsAOneLineError) {
   const std::string good_uri = kDataUri + base64(quad_buffer());
   const std::string doc = quad_document(good_uri);

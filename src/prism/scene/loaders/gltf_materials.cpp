@@ -52,6 +52,13 @@ std::optional<Vec3f> number3(const tinygltf::Value& object, const char* key) {
   return out;
 }
 
+// The texture index an extension's textureInfo names (-1 where it has none).
+int extension_texture_index(const tinygltf::Value& object, const char* key) {
+  if (!object.IsObject() || !object.Has(key)) return -1;
+  const auto& info = object.Get(key);
+  return info.IsObject() && info.Has("index") && info.Get("index").IsInt() ? info.Get("index").GetNumberAsInt() : -1;
+}
+
 }  // namespace
 
 int GltfBuilder::texture(const tinygltf::TextureInfo& info, TextureEncoding encoding, const std::string& where) {
@@ -148,6 +155,10 @@ void GltfBuilder::decode_images_in_parallel() {
     use(m.pbrMetallicRoughness.metallicRoughnessTexture.index, TextureEncoding::linear);
     use(m.emissiveTexture.index, TextureEncoding::srgb);
     use(m.normalTexture.index, TextureEncoding::linear);
+    if (const tinygltf::Value* coat = extension(m.extensions, "KHR_materials_clearcoat")) {
+      use(extension_texture_index(*coat, "clearcoatTexture"), TextureEncoding::linear);
+      use(extension_texture_index(*coat, "clearcoatRoughnessTexture"), TextureEncoding::linear);
+    }
   }
   if (keys.size() < 2) return;
   if (MemoryBudget* budget = options_.memory_budget; budget && budget->limit_bytes() > 0) {
@@ -238,6 +249,8 @@ Material GltfBuilder::make_material(const tinygltf::Material& src, int index) {
         warnings_.push_back(fmt::format("glTF: {}: partial transmission/metallic mixed into a dielectric", where));
     }
   }
+  if (const tinygltf::Value* clearcoat = extension(src.extensions, "KHR_materials_clearcoat"))
+    read_clearcoat(m, *clearcoat, where);
   // Occlusion is meaningless for a path tracer (the transport computes it) and is ignored.
   if (src.normalTexture.index >= 0) {
     const std::string normal_where = where + ".normalTexture";
@@ -292,6 +305,49 @@ void GltfBuilder::read_volume(Material& m, const tinygltf::Value* volume, const 
   m.attenuation_distance = std::isfinite(distance)
                                ? static_cast<float>(std::min(distance, double(std::numeric_limits<float>::max())))
                                : std::numeric_limits<float>::infinity();
+}
+
+// An extension's textureInfo (an object with "index", optional "texCoord" and its own
+// extensions, KHR_texture_transform among them), as Prism texture; -1 where it is absent.
+int GltfBuilder::extension_texture(const tinygltf::Value& object, const char* key, TextureEncoding encoding,
+                                   const std::string& where) {
+  if (!object.Has(key)) return -1;
+  const std::string texture_where = where + "." + key;
+  const tinygltf::Value& info = object.Get(key);
+  if (!info.IsObject() || !info.Has("index") || !info.Get("index").IsInt())
+    fail(fmt::format("{}: expected a textureInfo object with an integer index", texture_where));
+  const int tex_coord = static_cast<int>(number(info, "texCoord", 0.0));
+  if (tex_coord != 0) warnings_.push_back(fmt::format("glTF: {}: texCoord {} used as TEXCOORD_0", texture_where, tex_coord));
+  tinygltf::ExtensionMap extensions;
+  if (info.Has("extensions") && info.Get("extensions").IsObject())
+    for (const std::string& name : info.Get("extensions").Keys()) extensions[name] = info.Get("extensions").Get(name);
+  return texture(info.Get("index").GetNumberAsInt(), extensions, encoding, texture_where);
+}
+
+// KHR_materials_clearcoat: a coat of weight clearcoatFactor × clearcoatTexture.r and
+// roughness clearcoatRoughnessFactor × clearcoatRoughnessTexture.g (both default 0, the
+// textures linear), η = 1.5, over the metallic-roughness base (bsdf/clearcoat.h).
+// clearcoatNormalTexture would bend the coat alone; Prism's coat shares the base's normal.
+void GltfBuilder::read_clearcoat(Material& m, const tinygltf::Value& clearcoat, const std::string& where) {
+  const std::string coat_where = where + ".extensions.KHR_materials_clearcoat";
+  const double weight = number(clearcoat, "clearcoatFactor", 0.0);
+  const double roughness = number(clearcoat, "clearcoatRoughnessFactor", 0.0);
+  if (!(weight >= 0.0 && weight <= 1.0)) fail(fmt::format("{}: clearcoatFactor must be in [0, 1]", coat_where));
+  if (!(roughness >= 0.0 && roughness <= 1.0))
+    fail(fmt::format("{}: clearcoatRoughnessFactor must be in [0, 1]", coat_where));
+  if (weight == 0.0) return;  // the extension's default: no coat, whatever the textures say
+  if (m.type == MaterialType::dielectric) {
+    warnings_.push_back(fmt::format("glTF: {}: ignored on a transmitting material (Prism coats no glass)", coat_where));
+    return;
+  }
+  m.clearcoat = static_cast<float>(weight);
+  m.clearcoat_roughness = static_cast<float>(roughness);
+  m.clearcoat_texture = extension_texture(clearcoat, "clearcoatTexture", TextureEncoding::linear, coat_where);
+  m.clearcoat_roughness_texture =
+      extension_texture(clearcoat, "clearcoatRoughnessTexture", TextureEncoding::linear, coat_where);
+  if (clearcoat.Has("clearcoatNormalTexture"))
+    warnings_.push_back(fmt::format("glTF: {}: clearcoatNormalTexture ignored (the coat uses the base's normal)",
+                                    coat_where));
 }
 
 void GltfBuilder::build_materials() {

@@ -111,6 +111,13 @@ json material_json(const Scene& scene, const Material& m) {
   if (m.base_color_texture >= 0) pbr["baseColorTexture"] = texture_info(scene, m.base_color_texture);
   if (m.metallic_roughness_texture >= 0) pbr["metallicRoughnessTexture"] = texture_info(scene, m.metallic_roughness_texture);
   j["pbrMetallicRoughness"] = pbr;
+  if (m.has_clearcoat()) {
+    auto& coat = j["extensions"]["KHR_materials_clearcoat"];
+    coat = {{"clearcoatFactor", m.clearcoat}, {"clearcoatRoughnessFactor", m.clearcoat_roughness}};
+    if (m.clearcoat_texture >= 0) coat["clearcoatTexture"] = texture_info(scene, m.clearcoat_texture);
+    if (m.clearcoat_roughness_texture >= 0)
+      coat["clearcoatRoughnessTexture"] = texture_info(scene, m.clearcoat_roughness_texture);
+  }
   if (m.bump_texture >= 0)
     throw UsageError(fmt::format("GLB writer: material '{}' has a bump map, which glTF 2.0 cannot hold", m.name));
   if (m.normal_texture >= 0) {
@@ -144,7 +151,7 @@ void write_scene_glb(const Scene& scene, const std::filesystem::path& path) {
       throw UsageError(fmt::format("glTF writer: material '{}' has a spectrum, which glTF 2.0 cannot hold", m.name));
   json doc = {{"asset", {{"version", "2.0"}, {"generator", "Prism"}}},
               {"extensionsUsed", {"KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior",
-                                  "KHR_materials_specular", "KHR_materials_volume"}},
+                                  "KHR_materials_specular", "KHR_materials_volume", "KHR_materials_clearcoat"}},
               {"bufferViews", json::array()}, {"accessors", json::array()}, {"meshes", json::array()},
               {"materials", json::array()}, {"nodes", json::array()}};
   for (const Material& m : scene.materials) doc["materials"].push_back(material_json(scene, m));

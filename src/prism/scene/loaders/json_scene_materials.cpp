@@ -133,12 +133,31 @@ void JsonSceneReader::read_attenuation(Material& m, const JsonValue& value) cons
   if (!(m.attenuation_distance > 0.0f)) distance->fail("must be greater than 0 (scene units)");
 }
 
+// A clear coat (glTF KHR_materials_clearcoat; bsdf/clearcoat.h) over any material but glass.
+void JsonSceneReader::read_clearcoat(Material& m, const JsonValue& value) {
+  const auto weight = value.find("clearcoat");
+  if (!weight) {
+    for (const char* key : {"clearcoat_roughness", "clearcoat_texture", "clearcoat_roughness_texture"})
+      if (value.has(key)) value[key].fail("give 'clearcoat' (the coat's weight in [0, 1]) with it");
+    return;
+  }
+  if (m.type == MaterialType::dielectric)
+    weight->fail("a dielectric takes no clear coat (coats go on diffuse, mirror, conductor and metallic_roughness)");
+  m.clearcoat = weight->as_float(0.0f, 1.0f);
+  m.clearcoat_roughness = value.get_float("clearcoat_roughness", m.clearcoat_roughness, 0.0f, 1.0f);
+  // glTF's channels: R of the weight texture, G of the roughness texture (both linear).
+  if (auto t = value.find("clearcoat_texture")) m.clearcoat_texture = read_texture(*t, TextureEncoding::linear);
+  if (auto t = value.find("clearcoat_roughness_texture"))
+    m.clearcoat_roughness_texture = read_texture(*t, TextureEncoding::linear);
+}
+
 void JsonSceneReader::read_material(const JsonValue& value) {
   value.expect_keys({"name", "type", "base_color", "base_color_spectrum", "base_color_texture", "roughness",
                      "anisotropy", "metallic", "metallic_roughness_texture", "normal_texture", "normal_scale",
                      "bump_texture", "bump_scale", "microfacet", "conductor", "ior", "dispersion", "thin_walled",
-                     "transmission", "attenuation_color", "attenuation_distance", "alpha_mode", "alpha_cutoff",
-                     "opacity", "emission"});
+                     "transmission", "attenuation_color", "attenuation_distance", "clearcoat", "clearcoat_roughness",
+                     "clearcoat_texture", "clearcoat_roughness_texture", "alpha_mode", "alpha_cutoff", "opacity",
+                     "emission"});
   Material m;
   m.name = value["name"].as_string();
   if (material_indices.contains(m.name)) value["name"].fail(fmt::format("material '{}' is defined twice", m.name));
@@ -205,6 +224,7 @@ void JsonSceneReader::read_material(const JsonValue& value) {
     }
   }
   read_attenuation(m, value);
+  read_clearcoat(m, value);
   if (auto a = value.find("alpha_mode"))
     m.alpha_mode = a->as_enum<AlphaMode>({{"opaque", AlphaMode::opaque}, {"mask", AlphaMode::mask}, {"blend", AlphaMode::blend}});
   m.alpha_cutoff = value.get_float("alpha_cutoff", m.alpha_cutoff, 0.0f, 1.0f);

@@ -1,5 +1,6 @@
 #include "prism/scene/loaders/mtl_material.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <tiny_obj_loader.h>
@@ -74,13 +75,21 @@ Material material_from_mtl(const tinyobj::material_t& mtl, std::vector<std::stri
   if (!mtl.specular_texname.empty()) ignored.push_back("map_Ks");
   if (!mtl.alpha_texname.empty()) ignored.push_back("map_d");
   if (!mtl.ambient_texname.empty()) ignored.push_back("map_Ka");
-  // The PBR extension (Pr, Pm, Ps, Pc, Pcr and their maps) and a coloured transmission
+  // The PBR extension's clear coat: Pc its weight, Pcr its roughness (as Blender and
+  // three.js read them), on anything but glass.
+  const float coat = std::clamp(finite_or(mtl.clearcoat_thickness, 0.0f), 0.0f, 1.0f);
+  if (coat > 0.0f && m.type != MaterialType::dielectric) {
+    m.clearcoat = coat;
+    m.clearcoat_roughness = std::clamp(finite_or(mtl.clearcoat_roughness, 0.0f), 0.0f, 1.0f);
+  } else if (coat > 0.0f || mtl.clearcoat_roughness != 0.0f) {
+    ignored.push_back(coat > 0.0f ? "Pc on glass" : "Pcr without Pc");
+  }
+  // The rest of the PBR extension (Pr, Pm, Ps and their maps) and a coloured transmission
   // filter are not read; tinyobjloader gives 0 for what a file leaves out, and exporters
   // write a white Tf for every material.
-  if (mtl.roughness != 0.0f || mtl.metallic != 0.0f || mtl.sheen != 0.0f || mtl.clearcoat_thickness != 0.0f ||
-      mtl.clearcoat_roughness != 0.0f || !mtl.roughness_texname.empty() || !mtl.metallic_texname.empty() ||
-      !mtl.sheen_texname.empty())
-    ignored.push_back("PBR extension (Pr, Pm, Ps, Pc, Pcr, map_Pr, map_Pm, map_Ps)");
+  if (mtl.roughness != 0.0f || mtl.metallic != 0.0f || mtl.sheen != 0.0f || !mtl.roughness_texname.empty() ||
+      !mtl.metallic_texname.empty() || !mtl.sheen_texname.empty())
+    ignored.push_back("PBR extension (Pr, Pm, Ps, map_Pr, map_Pm, map_Ps)");
   if (rgb(mtl.transmittance) != Vec3f(1.0f) && rgb(mtl.transmittance) != Vec3f(0.0f)) ignored.push_back("Tf");
   return m;
 }

@@ -50,22 +50,37 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
   Material m;
   m.name = name.empty() ? fmt::format("{}-{}", type, p.line) : name;
   const bool remap = p.get_bool("remaproughness", true);
-  const auto roughness = [&]() {
-    const double r = p.get_float("roughness", 0.0);
-    const double u = p.get_float("uroughness", r), v = p.get_float("vroughness", r);
+  // `prefix` names a layer's parameters: "" or coatedconductor's "interface." / "conductor.".
+  const auto roughness = [&](const std::string& prefix = "") {
+    const std::string rough = prefix + "roughness";
+    const double r = p.get_float(rough, 0.0);
+    const double u = p.get_float(prefix + "uroughness", r), v = p.get_float(prefix + "vroughness", r);
     if (r < 0 || u < 0 || v < 0) throw SceneError(fmt::format("{}:{}: roughness must not be negative", p.source, p.line));
     if (u != v) approximations_.push_back(fmt::format("Material line {}: anisotropic roughness as its mean", p.line));
-    if (p.has("roughness") && p.find("roughness")->type == "texture")
-      p.fail(*p.find("roughness"), "textured roughness is not supported");
+    if (p.has(rough) && p.find(rough)->type == "texture") p.fail(*p.find(rough), "textured roughness is not supported");
     return prism_roughness(0.5 * (u + v), remap);
   };
   std::string effective = type;
-  if (type == "coateddiffuse" || type == "diffusetransmission" || type == "subsurface") {
+  std::string conductor_prefix;  // coatedconductor's base: "conductor.eta", "conductor.roughness", ...
+  if (type == "coateddiffuse" || type == "coatedconductor") {
+    // pbrt-v4 coats with a dielectric interface over a thin medium and walks light between
+    // the two layers at random; Prism's clear coat (bsdf/clearcoat.h) is the glTF layering
+    // of an η = 1.5 GGX interface over the base, with no medium in between.
+    const std::string interface = type == "coateddiffuse" ? "" : "interface.";
+    m.clearcoat = 1.0f;
+    m.clearcoat_roughness = roughness(interface);
+    const double eta = p.get_float(interface + "eta", 1.5);
+    if (!(eta > 0.0) || eta > 10.0) p.fail(*p.find(interface + "eta"), "must be between 0 and 10");
+    std::string dropped = eta != 1.5 ? fmt::format(", {}eta {} as 1.5", interface, eta) : "";
+    if (p.has("albedo")) dropped += ", the coat's albedo (no medium between the layers)";
+    approximations_.push_back(fmt::format("Material \"{}\" (line {}) as a clear coat over a {} base{}", type, p.line,
+                                          type == "coateddiffuse" ? "diffuse" : "conductor", dropped));
+    for (const char* n : {"thickness", "albedo", "g", "maxdepth", "nsamples"}) p.find(n);
+    effective = type == "coateddiffuse" ? "diffuse" : "conductor";
+    if (type == "coatedconductor") conductor_prefix = "conductor.";
+  } else if (type == "diffusetransmission" || type == "subsurface") {
     approximations_.push_back(fmt::format("Material \"{}\" (line {}) as diffuse", type, p.line));
     effective = "diffuse";
-  } else if (type == "coatedconductor") {
-    approximations_.push_back(fmt::format("Material \"coatedconductor\" (line {}) as conductor", p.line));
-    effective = "conductor";
   } else if (type == "thindielectric") {
     m.thin_walled = true;
     effective = "dielectric";
@@ -77,19 +92,20 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
     else
       m.base_color = reflectance(p, "reflectance", m.base_color_texture).value_or(Vec3f(0.5f));
     if (type != "diffuse")
-      for (const char* n : {"roughness", "interface.roughness", "thickness", "albedo", "g"}) p.find(n);
+      for (const char* n : {"roughness", "thickness", "albedo", "g"}) p.find(n);
   } else if (effective == "conductor") {
     m.type = MaterialType::conductor;
-    m.roughness = roughness();
+    m.roughness = roughness(conductor_prefix);
     if (auto r = reflectance(p, "reflectance", m.base_color_texture)) {
       m.conductor_fresnel = ConductorFresnel::schlick;
       m.base_color = *r;
     } else {
-      const std::string* eta = named_spectrum(p, "eta");
-      const std::string* k = named_spectrum(p, "k");
+      const std::string eta_name = conductor_prefix + "eta", k_name = conductor_prefix + "k";
+      const std::string* eta = named_spectrum(p, eta_name);
+      const std::string* k = named_spectrum(p, k_name);
       std::string metal = eta ? metal_name(*eta) : "Cu";
       if (k && metal_name(*k) != metal) metal.clear();
-      if ((p.has("eta") && !eta) || (p.has("k") && !k) || metal.empty()) {
+      if ((p.has(eta_name) && !eta) || (p.has(k_name) && !k) || metal.empty()) {
         approximations_.push_back(fmt::format("conductor (line {}) eta/k not a named metal of Au/Ag/Cu/Al: copper used", p.line));
         metal = "Cu";
       }

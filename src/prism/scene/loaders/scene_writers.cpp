@@ -128,6 +128,12 @@ void write_scene_json(const Scene& scene, const std::filesystem::path& path) {
     if (m.absorbs_inside())
       w(", \"attenuation_color\": {}, \"attenuation_distance\": {}", vec(m.attenuation_color), m.attenuation_distance);
     if (m.type == MaterialType::metallic_roughness) w(", \"metallic\": {}", m.metallic);
+    if (m.has_clearcoat()) {
+      w(", \"clearcoat\": {}, \"clearcoat_roughness\": {}", m.clearcoat, m.clearcoat_roughness);
+      if (m.clearcoat_texture >= 0) w(", \"clearcoat_texture\": {}", json_texture(scene, files, m.clearcoat_texture));
+      if (m.clearcoat_roughness_texture >= 0)
+        w(", \"clearcoat_roughness_texture\": {}", json_texture(scene, files, m.clearcoat_roughness_texture));
+    }
     if (m.base_color_texture >= 0) w(", \"base_color_texture\": {}", json_texture(scene, files, m.base_color_texture));
     if (m.metallic_roughness_texture >= 0)
       w(", \"metallic_roughness_texture\": {}", json_texture(scene, files, m.metallic_roughness_texture));
@@ -294,15 +300,24 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
       w(" \"string normalmap\" \"{}\"", files[static_cast<std::size_t>(m.normal_texture)]);
     }
     if (!textures.back().displacement.empty()) w(" \"texture displacement\" \"{}\"", textures.back().displacement);
+    // A clear coat becomes pbrt-v4's coated materials, whose interface has no weight: any
+    // coat is written whole (docs/scene-formats.md).
+    const bool coated = m.has_clearcoat();
+    const float coat_alpha = m.clearcoat_roughness * m.clearcoat_roughness;
     switch (m.type) {
       case MaterialType::conductor:
-      case MaterialType::mirror:
+      case MaterialType::mirror: {
+        const std::string base = coated ? "conductor." : "";
+        w(" \"string type\" \"{}\"", coated ? "coatedconductor" : "conductor");
         if (m.type == MaterialType::conductor && m.conductor_fresnel == ConductorFresnel::complex_ior)
-          w(" \"string type\" \"conductor\" \"spectrum eta\" \"metal-{0}-eta\" \"spectrum k\" \"metal-{0}-k\"", m.conductor_name);
+          w(" \"spectrum {0}eta\" \"metal-{1}-eta\" \"spectrum {0}k\" \"metal-{1}-k\"", base, m.conductor_name);
         else
-          w(" \"string type\" \"conductor\" \"rgb reflectance\" [ {} {} {} ]", m.base_color.x, m.base_color.y, m.base_color.z);
-        w(" \"float roughness\" [ {} ] \"bool remaproughness\" false\n", m.type == MaterialType::mirror ? 0.0f : alpha);
+          w(" \"rgb reflectance\" [ {} {} {} ]", m.base_color.x, m.base_color.y, m.base_color.z);
+        w(" \"float {}roughness\" [ {} ]", base, m.type == MaterialType::mirror ? 0.0f : alpha);
+        if (coated) w(" \"float interface.roughness\" [ {} ]", coat_alpha);
+        w(" \"bool remaproughness\" false\n");
         break;
+      }
       case MaterialType::dielectric:
         if (m.thin_walled)  // pbrt-v4's thindielectric is smooth: it takes eta only
           w(" \"string type\" \"thindielectric\" \"float eta\" [ {} ]\n", m.ior);
@@ -311,10 +326,13 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
             m.ior, alpha);
         break;
       default:
+        w(" \"string type\" \"{}\"", coated ? "coateddiffuse" : "diffuse");
         if (!textures.back().reflectance.empty())
-          w(" \"string type\" \"diffuse\" \"texture reflectance\" \"{}\"\n", textures.back().reflectance);
+          w(" \"texture reflectance\" \"{}\"", textures.back().reflectance);
         else
-          w(" \"string type\" \"diffuse\" \"rgb reflectance\" [ {} {} {} ]\n", m.base_color.x, m.base_color.y, m.base_color.z);
+          w(" \"rgb reflectance\" [ {} {} {} ]", m.base_color.x, m.base_color.y, m.base_color.z);
+        if (coated) w(" \"float roughness\" [ {} ] \"bool remaproughness\" false", coat_alpha);
+        w("\n");
     }
   }
   for (const TriangleMesh& mesh : scene.meshes) {

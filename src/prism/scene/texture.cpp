@@ -41,17 +41,20 @@ std::vector<float> TextureImage::linear_values() const {
   return values;
 }
 
-void invert_texture_values(TextureImage& image, float scale) {
+void map_texture_values(TextureImage& image, const std::function<float(float)>& f, const std::string& what) {
   std::vector<float> values = image.linear_values();
   const auto channels = static_cast<std::size_t>(image.channels);
   for (std::size_t i = 0; i < values.size(); ++i)
-    if (!is_alpha_channel(static_cast<int>(i % channels), image.channels))
-      values[i] = std::max(0.0f, 1.0f - scale * values[i]);
+    if (!is_alpha_channel(static_cast<int>(i % channels), image.channels)) values[i] = f(values[i]);
   image.texels = std::move(values);
   image.codes = {};
   image.rgbe = {};
   image.halves = {};
-  image.name += " (inverted)";
+  image.name += " (" + what + ")";
+}
+
+void invert_texture_values(TextureImage& image, float scale) {
+  map_texture_values(image, [scale](float v) { return std::max(0.0f, 1.0f - scale * v); }, "inverted");
 }
 
 }  // namespace prism

@@ -9,6 +9,7 @@
 // to exactly the floats stb_image's reader gives.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -93,9 +94,13 @@ struct TextureImage {
   }
 };
 
+// Every colour channel's linear value v replaced by f(v) in place, alpha kept, held as floats
+// from then on (a mapped sRGB code is no code: 4 bytes a sample instead of 1); `what` is
+// appended to the image's name, for messages.
+void map_texture_values(TextureImage& image, const std::function<float(float)>& f, const std::string& what);
+
 // pbrt-v4's imagemap "invert" (ImageTexture: v ↦ max(0, 1 − scale · v), the texture's scale
-// applied first), in place: every colour channel so mapped, alpha kept, held as floats from
-// then on (an inverted sRGB code is no code: 4 bytes a sample instead of 1).
+// applied first).
 void invert_texture_values(TextureImage& image, float scale);
 
 // Texel (x, y), row 0 at the top, as RGB: grey and grey+alpha images carry their value in

@@ -224,6 +224,52 @@ TEST(PbrtLoader, InvertedImageMapsAreApplied) {
   EXPECT_EQ(p.base_color, Vec3f(1.5f));
 }
 
+// Textured roughness (pbrt-v4's float textures): a copy of the image holding Prism's
+// perceptual r per texel (r = sqrt(α), α = sqrt(v) with remaproughness, α = v without) in
+// the G channel the renderer reads, B = 1; the material's factor is 1. A constant float
+// texture is a number; two different u/v textures are an approximation, said.
+TEST(PbrtLoader, TexturedRoughnessIsBakedIntoPrismsRoughness) {
+  test::ScratchFolder dir;
+  write_png(dir / "r.png", EncodedImage{2, 1, 1, 8, {64, 255}});
+  const std::string textures = "WorldBegin\n"
+                               "Texture \"r\" \"float\" \"imagemap\" \"string filename\" \"r.png\" "
+                               "\"string encoding\" \"linear\" \"float scale\" 0.5\n"
+                               "Texture \"c\" \"float\" \"constant\" \"float value\" 0.0625\n";
+  const auto load = [&](const std::string& material) {
+    return load_pbrt_scene(dir.write("scene.pbrt", textures + material + "\n" + std::string(kTriangle)));
+  };
+  const float v0 = 0.5f * 64.0f / 255.0f, v1 = 0.5f;
+  const Scene remapped = load(R"(Material "conductor" "texture roughness" "r")");
+  const Material& m = remapped.materials[remapped.meshes[0].material];
+  EXPECT_EQ(m.roughness, 1.0f);
+  ASSERT_GE(m.metallic_roughness_texture, 0);
+  const TextureImage& t = remapped.textures[static_cast<std::size_t>(m.metallic_roughness_texture)];
+  ASSERT_EQ(t.channels, 3);
+  EXPECT_FLOAT_EQ(t.value(1), std::pow(v0, 0.25f));  // texel 0, G: r = α^½ = v^¼
+  EXPECT_EQ(t.value(2), 1.0f);                       // B: metallic kept
+  EXPECT_FLOAT_EQ(t.value(4), std::pow(v1, 0.25f));  // texel 1
+  const Scene linear = load(R"(Material "dielectric" "texture roughness" "r" "bool remaproughness" false)");
+  const Material& g = linear.materials[linear.meshes[0].material];
+  ASSERT_GE(g.metallic_roughness_texture, 0);
+  EXPECT_FLOAT_EQ(linear.textures[static_cast<std::size_t>(g.metallic_roughness_texture)].value(1), std::sqrt(v0));
+  // The coat's roughness of a coated material goes to its own texture.
+  const Scene coated = load(R"(Material "coateddiffuse" "texture roughness" "r")");
+  const Material& c = coated.materials[coated.meshes[0].material];
+  EXPECT_EQ(c.metallic_roughness_texture, -1);
+  ASSERT_GE(c.clearcoat_roughness_texture, 0);
+  EXPECT_EQ(c.clearcoat_roughness, 1.0f);
+  const Scene constant = load(R"(Material "conductor" "texture roughness" "c")");
+  const Material& k = constant.materials[constant.meshes[0].material];
+  EXPECT_EQ(k.metallic_roughness_texture, -1);
+  EXPECT_FLOAT_EQ(k.roughness, 0.5f);  // α = sqrt(0.0625) = 0.25, r = 0.5
+  const Scene anisotropic = load(R"(Material "conductor" "texture uroughness" "r" "float vroughness" 0.1)");
+  bool said = false;
+  for (const std::string& w : anisotropic.warnings) said |= w.find("anisotropic roughness as its uroughness texture") != std::string::npos;
+  EXPECT_TRUE(said);
+  const std::string message = test::error_of<SceneError>([&] { load(R"(Material "conductor" "texture roughness" "nope")"); });
+  EXPECT_NE(message.find("unknown float texture 'nope'"), std::string::npos) << message;
+}
+
 // A material's "texture displacement" (a float texture) is a bump map: the image, with the
 // texture's "scale" as the bump scale; a constant "float displacement" bends nothing.
 TEST(PbrtLoader, DisplacementIsABumpMap) {

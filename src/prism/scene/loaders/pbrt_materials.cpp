@@ -25,6 +25,39 @@ std::string metal_name(const std::string& spectrum) {
   return {};
 }
 
+// A layer's roughness as Prism's perceptual r: a number, or 1 times a texture.
+struct LayerRoughness {
+  float value = 0.0f;
+  int texture = -1;
+};
+
+// pbrt-v4's float texture of roughness (its channel 0 times `scale`, pbrt's value before
+// remapping) as a Prism roughness texture: a copy of the image holding r = prism_roughness()
+// per texel (the map is not linear, so it cannot stay a scale) in its G channel, which
+// metallic_roughness_texture and clearcoat_roughness_texture read, and B = 1, so that the
+// metallic factor it also multiplies is kept.
+int bake_roughness_texture(TextureCache& cache, Scene& scene, int image, float scale, bool remap) {
+  const int copy = cache.add_with_uv_transform(image, 1.0, 1.0, 0.0, 0.0);  // decoded, same addressing
+  TextureImage& t = scene.textures[static_cast<std::size_t>(copy)];
+  const std::vector<float> values = t.linear_values();
+  const auto channels = static_cast<std::size_t>(t.channels);
+  const std::size_t texels = values.size() / channels;
+  std::vector<float> rgb(texels * 3);
+  for (std::size_t k = 0; k < texels; ++k) {
+    const float r = prism_roughness(std::max(0.0f, scale * values[k * channels]), remap);
+    rgb[3 * k] = rgb[3 * k + 1] = r;
+    rgb[3 * k + 2] = 1.0f;
+  }
+  t.texels = std::move(rgb);
+  t.channels = 3;
+  t.codes = {};
+  t.rgbe = {};
+  t.halves = {};
+  t.encoding = TextureEncoding::linear;
+  t.name += " (roughness)";
+  return copy;
+}
+
 const std::string* named_spectrum(const PbrtParams& p, std::string_view name) {
   const PbrtParam* param = p.find(name);
   if (!param || param->type != "spectrum" || param->strings.size() != 1) return nullptr;
@@ -50,15 +83,31 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
   Material m;
   m.name = name.empty() ? fmt::format("{}-{}", type, p.line) : name;
   const bool remap = p.get_bool("remaproughness", true);
-  // `prefix` names a layer's parameters: "" or coatedconductor's "interface." / "conductor.".
-  const auto roughness = [&](const std::string& prefix = "") {
-    const std::string rough = prefix + "roughness";
-    const double r = p.get_float(rough, 0.0);
-    const double u = p.get_float(prefix + "uroughness", r), v = p.get_float(prefix + "vroughness", r);
-    if (r < 0 || u < 0 || v < 0) throw SceneError(fmt::format("{}:{}: roughness must not be negative", p.source, p.line));
-    if (u != v) approximations_.push_back(fmt::format("Material line {}: anisotropic roughness as its mean", p.line));
-    if (p.has(rough) && p.find(rough)->type == "texture") p.fail(*p.find(rough), "textured roughness is not supported");
-    return prism_roughness(0.5 * (u + v), remap);
+  // A layer's roughness: pbrt-v4's uroughness and vroughness, each defaulting to roughness
+  // (default 0). `prefix` names the layer: "" or coatedconductor's "interface." / "conductor.".
+  const auto roughness = [&](const std::string& prefix = "") -> LayerRoughness {
+    const PbrtParam* base = p.find(prefix + "roughness");
+    const PbrtParam* u = p.has(prefix + "uroughness") ? p.find(prefix + "uroughness") : base;
+    const PbrtParam* v = p.has(prefix + "vroughness") ? p.find(prefix + "vroughness") : base;
+    const auto is_texture = [](const PbrtParam* q) { return q && q->type == "texture"; };
+    if (is_texture(u) || is_texture(v)) {
+      const PbrtParam* t = is_texture(u) ? u : v;
+      const PbrtParam* other = t == u ? v : u;
+      if (other != t && !(is_texture(other) && other->strings == t->strings))
+        approximations_.push_back(
+            fmt::format("Material line {}: anisotropic roughness as its {} texture", p.line, t->name));
+      const std::string name = p.get_string(t->name, "");
+      const auto it = float_textures_.find(name);
+      if (it == float_textures_.end()) p.fail(*t, fmt::format("unknown float texture '{}'", name));
+      const PbrtTexture& texture = it->second;
+      if (texture.image < 0) return {prism_roughness(std::max(0.0f, texture.value.x), remap), -1};
+      return {1.0f, bake_roughness_texture(*textures_, scene_, texture.image, texture.value.x, remap)};
+    }
+    const auto value = [&](const PbrtParam* q) { return q ? p.get_float(q->name, 0.0) : 0.0; };
+    const double ur = value(u), vr = value(v);
+    if (ur < 0 || vr < 0) throw SceneError(fmt::format("{}:{}: roughness must not be negative", p.source, p.line));
+    if (ur != vr) approximations_.push_back(fmt::format("Material line {}: anisotropic roughness as its mean", p.line));
+    return {prism_roughness(0.5 * (ur + vr), remap), -1};
   };
   std::string effective = type;
   std::string conductor_prefix;  // coatedconductor's base: "conductor.eta", "conductor.roughness", ...
@@ -68,10 +117,18 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
     // of an η = 1.5 GGX interface over the base, with no medium in between.
     const std::string interface = type == "coateddiffuse" ? "" : "interface.";
     m.clearcoat = 1.0f;
-    m.clearcoat_roughness = roughness(interface);
-    const double eta = p.get_float(interface + "eta", 1.5);
-    if (!(eta > 0.0) || eta > 10.0) p.fail(*p.find(interface + "eta"), "must be between 0 and 10");
-    std::string dropped = eta != 1.5 ? fmt::format(", {}eta {} as 1.5", interface, eta) : "";
+    const LayerRoughness coat = roughness(interface);
+    m.clearcoat_roughness = coat.value;
+    m.clearcoat_roughness_texture = coat.texture;
+    // pbrt-v4 takes a number or a spectrum (a named glass) for the interface's η.
+    std::string dropped;
+    if (const PbrtParam* eta_param = p.find(interface + "eta"); eta_param && eta_param->type == "spectrum") {
+      dropped = fmt::format(", {}eta spectrum as 1.5", interface);
+    } else {
+      const double eta = p.get_float(interface + "eta", 1.5);
+      if (!(eta > 0.0) || eta > 10.0) p.fail(*eta_param, "must be between 0 and 10");
+      if (eta != 1.5) dropped = fmt::format(", {}eta {} as 1.5", interface, eta);
+    }
     if (p.has("albedo")) dropped += ", the coat's albedo (no medium between the layers)";
     approximations_.push_back(fmt::format("Material \"{}\" (line {}) as a clear coat over a {} base{}", type, p.line,
                                           type == "coateddiffuse" ? "diffuse" : "conductor", dropped));
@@ -95,7 +152,9 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
       for (const char* n : {"roughness", "thickness", "albedo", "g"}) p.find(n);
   } else if (effective == "conductor") {
     m.type = MaterialType::conductor;
-    m.roughness = roughness(conductor_prefix);
+    const LayerRoughness r = roughness(conductor_prefix);
+    m.roughness = r.value;
+    m.metallic_roughness_texture = r.texture;
     if (auto r = reflectance(p, "reflectance", m.base_color_texture)) {
       m.conductor_fresnel = ConductorFresnel::schlick;
       m.base_color = *r;
@@ -115,7 +174,9 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
     }
   } else if (effective == "dielectric") {
     m.type = MaterialType::dielectric;
-    m.roughness = roughness();
+    const LayerRoughness r = roughness();
+    m.roughness = r.value;
+    m.metallic_roughness_texture = r.texture;
     m.base_color = Vec3f(1.0f);
     if (const std::string* eta = named_spectrum(p, "eta")) {
       if (*eta == "glass-BK7") {

@@ -384,6 +384,46 @@ TEST(GltfLoader, ClearcoatFactorsAndTextures) {
   }
 }
 
+// KHR_mesh_quantization (as gltfpack writes): integer positions, normals and uvs, each
+// element padded to 4 bytes, dequantized by the node's transform and the accessors'
+// normalized flag. Such a file requires the extension; Prism reads it.
+TEST(GltfLoader, QuantizedAttributesAreRead) {
+  std::string b;
+  // Positions: int16, not normalized, 4 × (x, y, z, pad) = 32 B; dequantized by scale 1/1000.
+  append<std::int16_t>(b, {0, 0, 0, 0, 1000, 0, 0, 0, 1000, 1000, 0, 0, 0, 1000, 0, 0});
+  // Normals: int8 normalized, 4 × (x, y, z, pad) = 16 B: (0, 0, 127) is +z.
+  append<std::int8_t>(b, {0, 0, 127, 0, 0, 0, 127, 0, 0, 0, 127, 0, 0, 0, 127, 0});
+  // UVs: uint16 normalized, 4 × (u, v) = 16 B.
+  append<std::uint16_t>(b, {0, 65535, 65535, 65535, 65535, 0, 0, 0});
+  append<std::uint16_t>(b, {0, 1, 2, 0, 2, 3});  // 12 B
+  const std::string doc = R"({"asset": {"version": "2.0"},
+  "extensionsUsed": ["KHR_mesh_quantization"], "extensionsRequired": ["KHR_mesh_quantization"],
+  "buffers": [{"uri": ")" + kDataUri + base64(b) + R"(", "byteLength": 76}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 32, "byteStride": 8},
+                  {"buffer": 0, "byteOffset": 32, "byteLength": 16, "byteStride": 4},
+                  {"buffer": 0, "byteOffset": 48, "byteLength": 16},
+                  {"buffer": 0, "byteOffset": 64, "byteLength": 12}],
+  "accessors": [{"bufferView": 0, "componentType": 5122, "count": 4, "type": "VEC3", "min": [0,0,0], "max": [1000,1000,0]},
+                {"bufferView": 1, "componentType": 5120, "normalized": true, "count": 4, "type": "VEC3"},
+                {"bufferView": 2, "componentType": 5123, "normalized": true, "count": 4, "type": "VEC2"},
+                {"bufferView": 3, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "indices": 3}]}],
+  "nodes": [{"mesh": 0, "scale": [0.001, 0.001, 0.001]}],
+  "scenes": [{"nodes": [0]}]})";
+  const Scene s = parse(doc);
+  ASSERT_EQ(s.meshes.size(), 1u);
+  const TriangleMesh& m = s.meshes[0];
+  EXPECT_EQ(m.positions[2], Vec3f(1000, 1000, 0));
+  EXPECT_EQ(m.normals[0], Vec3f(0, 0, 1));
+  EXPECT_EQ(m.uvs[1].x, 1.0f);
+  EXPECT_EQ(m.uvs[1].y, 1.0f);
+  ASSERT_EQ(s.instances.size(), 1u);
+  const Vec3f corner = s.instances[0].object_to_world.apply_point(m.positions[2]);
+  EXPECT_NEAR(corner.x, 1.0f, 1e-6f);
+  EXPECT_NEAR(corner.y, 1.0f, 1e-6f);
+  for (const std::string& w : s.warnings) EXPECT_EQ(w.find("KHR_mesh_quantization"), std::string::npos) << w;
+}
+
 TEST(GltfLoader, BadInputIsAOneLineError) {
   const std::string good_uri = kDataUri + base64(quad_buffer());
   const std::string doc = quad_document(good_uri);

@@ -22,10 +22,10 @@ using test_helpers::direction_at;
 using test_helpers::rgb;
 constexpr double kAlphaTotal = 0.01;
 // Histograms drawn in this file (Šidák split): lambert 4, conductor 5 kinds × 9 = 45,
-// metallic-roughness 5 × 3 = 15, rough dielectric 3 α × 5 wo × 2 halves = 30, dispersive 2,
+// metallic-roughness 7 × 3 = 21, rough dielectric 3 α × 5 wo × 2 halves = 30, dispersive 2,
 // smooth-dielectric lobe choice 4, coated lobes 3 bases × 2 coat roughnesses × 3 wo = 18 plus
 // a smooth coat's non-delta part 3.
-constexpr int kChiSquareTests = 4 + 45 + 15 + 30 + 2 + 4 + 18 + 3;
+constexpr int kChiSquareTests = 4 + 45 + 21 + 30 + 2 + 4 + 18 + 3;
 constexpr long kSamples = 100'000;
 
 // Draws (u_lobe, u) from the harness's 2D uniform by splitting u.x: the high bits pick the
@@ -110,9 +110,15 @@ TEST(BsdfSampling, RoughConductorMatchesPdf) {
 
 TEST(BsdfSampling, MetallicRoughnessMatchesPdf) {
   int seed = 200;
-  const std::pair<float, float> cases[] = {{0.0f, 0.25f}, {0.0f, 0.95f}, {0.5f, 0.6f}, {1.0f, 0.25f}, {1.0f, 0.95f}};
-  for (const auto& [metallic, roughness] : cases) {
-      auto m = MetallicRoughness<3>::from_roughness(rgb(0.2f, 0.5f, 0.9f), metallic, roughness);
+  // (metallic, roughness, dielectric F0, specular weight): the last two with
+  // KHR_materials_ior / KHR_materials_specular's generalisation (metallic_roughness.h).
+  struct Case {
+    float metallic, roughness, f0 = MetallicRoughness<3>::kDielectricF0, weight = 1.0f;
+  };
+  const Case cases[] = {{0.0f, 0.25f},          {0.0f, 0.95f}, {0.5f, 0.6f}, {1.0f, 0.25f}, {1.0f, 0.95f},
+                        {0.0f, 0.3f, 0.2f, 0.5f}, {0.4f, 0.7f, 0.11f, 0.2f}};
+  for (const auto& [metallic, roughness, f0, weight] : cases) {
+      auto m = MetallicRoughness<3>::from_roughness(rgb(0.2f, 0.5f, 0.9f), metallic, roughness, f0, weight);
       for (double theta : kThetas) {
         const Vec3f wo = direction_at(theta, 120.0);
         // Two lobes: a broad diffuse one and the specular one; stretch moderately around the

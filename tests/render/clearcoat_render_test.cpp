@@ -21,21 +21,12 @@
 #include "scene/loaders/loader_test_files.h"
 #include "support/direct_light_settings.h"
 #include "support/film_statistics.h"
+#include "support/floor_under_sky.h"
 
 namespace prism {
 namespace {
 
-// A floor of `material` seen straight down through a 1° view, under a white sky of 1 nit.
-Scene floor_scene(const std::string& material) {
-  return loaders::parse_json_scene(R"({"format": "prism-scene/1",
-    "materials": [)" + material + R"(],
-    "meshes": [{"name": "floor", "material": "floor",
-                "positions": [[-100, 0, -100], [100, 0, -100], [100, 0, 100], [-100, 0, 100]],
-                "indices": [0, 2, 1, 0, 3, 2]}],
-    "camera": {"eye": [0, 1, 0], "target": [0, 0, 0], "up": [0, 0, 1], "fov_degrees": 1},
-    "environment": {"color": [1, 1, 1], "luminance_nits": 1}})",
-                                   "floor.json", {}, "floor");
-}
+using test::floor_under_white_sky;
 
 // Radiance from the floor = L ∫ f cos dωi = A_c + (1 − A_c) ρ with L = 1: the coat reflects
 // A_c = c E(1, r) of the sky and passes the rest to the Lambertian base (bsdf/clearcoat.h).
@@ -46,7 +37,7 @@ Scene floor_scene(const std::string& material) {
 TEST(ClearcoatRender, CoatedFloorUnderAWhiteSkyShowsItsAlbedoOnEveryEstimator) {
   const double rho = 0.5, c = 0.8;
   for (float r : {0.0f, 0.4f}) {
-    const Scene scene = floor_scene(R"({"name": "floor", "type": "diffuse", "base_color": [0.5, 0.5, 0.5],
+    const Scene scene = floor_under_white_sky(R"({"name": "floor", "type": "diffuse", "base_color": [0.5, 0.5, 0.5],
         "clearcoat": 0.8, "clearcoat_roughness": )" + std::to_string(r) + "}");
     const double a_c = c * (r == 0.0f ? bsdf::fresnel_dielectric(1.0f, 1.5f) : bsdf::coat_directional_albedo(1.0f, r));
     const double expected = a_c + (1.0 - a_c) * rho;
@@ -63,7 +54,7 @@ TEST(ClearcoatRender, CoatedFloorUnderAWhiteSkyShowsItsAlbedoOnEveryEstimator) {
 
 TEST(ClearcoatRender, JsonKeysAndTheirRules) {
   const auto error = [](const std::string& material) {
-    return test::error_of<SceneError>([&] { floor_scene(material); });
+    return test::error_of<SceneError>([&] { floor_under_white_sky(material); });
   };
   EXPECT_NE(error(R"({"name": "floor", "type": "dielectric", "clearcoat": 1})")
                 .find("materials[0].clearcoat: a dielectric takes no clear coat"),
@@ -80,7 +71,7 @@ TEST(ClearcoatRender, JsonKeysAndTheirRules) {
   EXPECT_NE(error(R"({"name": "floor", "type": "diffuse", "clearcoat": 1, "clearcoat_roughness": -1})")
                 .find("materials[0].clearcoat_roughness"),
             std::string::npos);
-  const Scene s = floor_scene(R"({"name": "floor", "type": "conductor", "conductor": "Au", "roughness": 0.3,
+  const Scene s = floor_under_white_sky(R"({"name": "floor", "type": "conductor", "conductor": "Au", "roughness": 0.3,
       "clearcoat": 0.7, "clearcoat_roughness": 0.1})");
   const Material& m = s.materials[0];
   EXPECT_TRUE(m.has_clearcoat());
@@ -93,9 +84,9 @@ TEST(ClearcoatRender, JsonKeysAndTheirRules) {
 // JSON and GLB keep weight and roughness; pbrt-v4's coated materials have no weight, so a
 // coat comes back whole there, on the same base type with the same roughness.
 TEST(ClearcoatRender, EveryWriterKeepsTheCoat) {
-  const Scene original = floor_scene(R"({"name": "floor", "type": "diffuse", "base_color": [0.2, 0.4, 0.6],
+  const Scene original = floor_under_white_sky(R"({"name": "floor", "type": "diffuse", "base_color": [0.2, 0.4, 0.6],
       "clearcoat": 0.6, "clearcoat_roughness": 0.25})");
-  const Scene metal = floor_scene(R"({"name": "floor", "type": "conductor", "conductor": "Cu", "roughness": 0.4,
+  const Scene metal = floor_under_white_sky(R"({"name": "floor", "type": "conductor", "conductor": "Cu", "roughness": 0.4,
       "clearcoat": 1, "clearcoat_roughness": 0.5})");
   test::ScratchFolder dir;
   for (const Scene* scene : {&original, &metal})
@@ -188,13 +179,13 @@ TEST(ClearcoatRender, TheCoatIsPartOfTheImageFingerprint) {
   const std::string plain = R"({"name": "floor", "type": "diffuse", "base_color": [0.5, 0.5, 0.5]})";
   const std::string coated = R"({"name": "floor", "type": "diffuse", "base_color": [0.5, 0.5, 0.5],
       "clearcoat": 1, "clearcoat_roughness": 0.2})";
-  const std::uint64_t without = image_fingerprint(floor_scene(plain), s);
-  Scene a = floor_scene(coated);
+  const std::uint64_t without = image_fingerprint(floor_under_white_sky(plain), s);
+  Scene a = floor_under_white_sky(coated);
   const std::uint64_t with = image_fingerprint(a, s);
   EXPECT_NE(with, without);
   a.materials[0].clearcoat_roughness = 0.3f;
   EXPECT_NE(image_fingerprint(a, s), with);
-  Scene b = floor_scene(coated);
+  Scene b = floor_under_white_sky(coated);
   b.materials[0].clearcoat = 0.5f;
   EXPECT_NE(image_fingerprint(b, s), with);
 }

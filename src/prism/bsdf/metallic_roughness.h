@@ -9,6 +9,12 @@
 // with the microfacet lobe GGX at α = roughness² (done by the caller; α is clamped to
 // kMinAlpha so that roughness 0 stays a finite, evaluable lobe rather than a delta).
 //
+// KHR_materials_ior and KHR_materials_specular generalise the dielectric part: its F0 is
+// ((η − 1)/(η + 1))² times the specular colour (0.04 at η = 1.5, white) and its specular
+// layer has a weight s (specularFactor) that scales the whole Fresnel term, f90 included:
+//   f = (1 − m)(1 − s F_F0d(wi·h)) c/π + [(1 − m) s F_F0d(wi·h) + m F_c(wi·h)] D G2 / (4 |cos θo| |cos θi|).
+// With s = 1 the bracket is F of mix(F0d, c, m) (Schlick is affine in F0), the form above.
+//
 // Sampling picks the specular lobe with probability p_s = E_s / (E_s + E_d) from
 // albedo estimates at wo (E_s = mean F_F0(cos θo), E_d = (1 − m) mean(c) (1 − F_0.04(cos θo)))
 // and pdf() is the matching one-sample mixture p_s p_spec + (1 − p_s) p_diffuse. A lobe is
@@ -32,21 +38,35 @@ struct MetallicRoughness {
   color::SampledSpectrum<N> base_color{0.8f};
   float metallic = 0.0f;
   MicrofacetDistribution distribution = MicrofacetDistribution::isotropic(MicrofacetType::ggx, 0.25f);
+  float dielectric_f0 = kDielectricF0;  // F0d, in [0, 1]
+  float specular_weight = 1.0f;         // s, in [0, 1]
 
   static MetallicRoughness from_roughness(const color::SampledSpectrum<N>& base, float metallic,
-                                          float perceptual_roughness) {
+                                          float perceptual_roughness, float dielectric_f0 = kDielectricF0,
+                                          float specular_weight = 1.0f) {
     const float alpha = std::max(kMinAlpha, perceptual_roughness * perceptual_roughness);
-    return {base, metallic, MicrofacetDistribution::isotropic(MicrofacetType::ggx, alpha)};
+    return {base, metallic, MicrofacetDistribution::isotropic(MicrofacetType::ggx, alpha), dielectric_f0,
+            specular_weight};
   }
 
   color::SampledSpectrum<N> f0() const {
-    return color::SampledSpectrum<N>(kDielectricF0 * (1.0f - metallic)) + base_color * metallic;
+    return color::SampledSpectrum<N>(dielectric_f0 * (1.0f - metallic)) + base_color * metallic;
+  }
+  // The bracket above: the specular lobe's Fresnel colour at cos θ = wi·h.
+  color::SampledSpectrum<N> specular_fresnel(float cos_theta) const {
+    if (specular_weight == 1.0f) return fresnel_schlick(f0(), cos_theta);
+    return fresnel_schlick(base_color, cos_theta) * metallic +
+           color::SampledSpectrum<N>((1.0f - metallic) * specular_weight * fresnel_schlick(dielectric_f0, cos_theta));
+  }
+  // The diffuse lobe's weight 1 − s F_F0d, without (1 − m).
+  float diffuse_transmission(float cos_theta) const {
+    return 1.0f - specular_weight * fresnel_schlick(dielectric_f0, cos_theta);
   }
 
   // Albedo estimates of the two lobes at |cos θo| (channel means).
-  float specular_albedo_estimate(float cos_o) const { return fresnel_schlick(f0(), cos_o).average(); }
+  float specular_albedo_estimate(float cos_o) const { return specular_fresnel(cos_o).average(); }
   float diffuse_albedo_estimate(float cos_o) const {
-    return (1.0f - metallic) * base_color.average() * (1.0f - fresnel_schlick(kDielectricF0, cos_o));
+    return (1.0f - metallic) * base_color.average() * diffuse_transmission(cos_o);
   }
   float albedo_estimate(float cos_o) const { return specular_albedo_estimate(cos_o) + diffuse_albedo_estimate(cos_o); }
 
@@ -63,10 +83,9 @@ struct MetallicRoughness {
     if (!r) return {};
     const Vec3f &o = r->o, &i = r->i, &h = r->h;
     const float i_h = dot(i, h);
-    const float diffuse_weight = (1.0f - metallic) * (1.0f - fresnel_schlick(kDielectricF0, i_h)) *
-                                 std::numbers::inv_pi_v<float>;
+    const float diffuse_weight = (1.0f - metallic) * diffuse_transmission(i_h) * std::numbers::inv_pi_v<float>;
     const float spec = distribution.D(h) * distribution.G2(o, i) / (4.0f * o.z * i.z);
-    return base_color * diffuse_weight + fresnel_schlick(f0(), i_h) * spec;
+    return base_color * diffuse_weight + specular_fresnel(i_h) * spec;
   }
 
   float pdf(const Vec3f& wo, const Vec3f& wi) const {

@@ -9,6 +9,12 @@ MaterialTables::MaterialTables(const std::vector<Material>& materials) {
     // The coat's albedo table (≈ 30 ms) is built here, before the render's threads start,
     // not by the first shading call that needs it.
     if (m.has_clearcoat()) bsdf::coat_directional_albedo(1.0f, m.clearcoat_roughness);
+    // F0 = ((η − 1)/(η + 1))² × the specular colour's mean, in double so that η = 1.5 gives
+    // 0.04f exactly, the glTF constant.
+    const double r = (double(m.ior) - 1.0) / (double(m.ior) + 1.0);
+    const Vec3f& c = m.specular_color;
+    const double mean = (double(c.x) + c.y + c.z) / 3.0;
+    dielectric_f0_.push_back(static_cast<float>(std::clamp(r * r * mean, 0.0, 1.0)));
     if ((m.type == MaterialType::conductor) && m.conductor_fresnel == ConductorFresnel::complex_ior)
       conductors_.emplace_back(bsdf::conductor_ior(m.conductor_name));  // UsageError for unknown metals
     else
@@ -89,7 +95,9 @@ bsdf::Bsdf<Mode::kChannels> base_bsdf(const Material& m, std::uint32_t material_
       return {bsdf::Dielectric<N>{eta, distribution, tint}};
     }
     case MaterialType::metallic_roughness:
-      return {bsdf::MetallicRoughness<N>::from_roughness(base, std::clamp(point.metallic, 0.0f, 1.0f), point.roughness)};
+      return {bsdf::MetallicRoughness<N>::from_roughness(base, std::clamp(point.metallic, 0.0f, 1.0f), point.roughness,
+                                                         tables.dielectric_f0(material_index),
+                                                         std::clamp(m.specular, 0.0f, 1.0f))};
     case MaterialType::diffuse: break;
   }
   return {bsdf::Lambertian<N>{base}};

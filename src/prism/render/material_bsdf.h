@@ -24,9 +24,12 @@ class MaterialTables {
   const bsdf::ConductorIor* conductor(std::uint32_t material) const {
     return conductors_[material] ? &*conductors_[material] : nullptr;
   }
+  // A metallic_roughness material's dielectric F0 (bsdf/metallic_roughness.h).
+  float dielectric_f0(std::uint32_t material) const { return dielectric_f0_[material]; }
 
  private:
   std::vector<std::optional<bsdf::ConductorIor>> conductors_;
+  std::vector<float> dielectric_f0_;
 };
 
 inline constexpr std::array<float, 3> kRgbRepresentativeWavelengthsNm = {630.0f, 532.0f, 465.0f};

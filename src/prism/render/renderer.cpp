@@ -105,6 +105,8 @@ void hash_scene_details(Fnv1a& h, const Scene& scene) {
       h.value(m.attenuation_color);
       h.value(m.attenuation_distance);
     }
+    if (m.specular != plain.specular) h.value(m.specular);
+    if (m.specular_color != plain.specular_color) h.value(m.specular_color);
     if (m.has_clearcoat()) {
       h.value(m.clearcoat);
       h.value(m.clearcoat_roughness);

@@ -90,6 +90,12 @@ struct Material {
   float attenuation_distance = std::numeric_limits<float>::infinity();
   float transmission = 0.0f; // glTF KHR_materials_transmission factor (metallic_roughness)
 
+  // metallic_roughness' dielectric specular layer (glTF KHR_materials_specular): its weight
+  // specularFactor ∈ [0, 1] and its colour specularColorFactor (linear Rec.709), whose mean
+  // scales F0 = ((ior − 1)/(ior + 1))² (KHR_materials_ior; 0.04 at the default 1.5).
+  float specular = 1.0f;
+  Vec3f specular_color{1.0f};
+
   // Clear coat (glTF KHR_materials_clearcoat, pbrt-v4's coated materials): a colourless
   // η = 1.5 GGX layer of weight `clearcoat` ∈ [0, 1] and perceptual roughness
   // `clearcoat_roughness` ∈ [0, 1] over a diffuse, mirror, conductor or metallic_roughness

@@ -424,6 +424,47 @@ TEST(GltfLoader, QuantizedAttributesAreRead) {
   for (const std::string& w : s.warnings) EXPECT_EQ(w.find("KHR_mesh_quantization"), std::string::npos) << w;
 }
 
+// KHR_materials_specular and KHR_materials_ior on an opaque material: the layer's weight
+// and colour (a coloured one as its mean, said), the IOR kept for F0, factor 0 on a plain
+// dielectric read as Lambert, the textures said to be ignored, bad factors refused.
+TEST(GltfLoader, SpecularAndIorOnOpaqueMaterials) {
+  const std::string materials = R"([
+    {"pbrMetallicRoughness": {"metallicFactor": 0},
+     "extensions": {"KHR_materials_specular": {"specularFactor": 0.5, "specularColorFactor": [0.8, 0.8, 0.8]},
+                    "KHR_materials_ior": {"ior": 1.33}}},
+    {"pbrMetallicRoughness": {"metallicFactor": 0},
+     "extensions": {"KHR_materials_specular": {"specularColorFactor": [1, 0.5, 0.5], "specularTexture": {"index": 0}}}},
+    {"pbrMetallicRoughness": {"metallicFactor": 0}, "extensions": {"KHR_materials_specular": {"specularFactor": 0}}},
+    {"pbrMetallicRoughness": {"metallicFactor": 0.5}, "extensions": {"KHR_materials_specular": {"specularFactor": 0}}}])";
+  const Scene s = parse(quad_document(kDataUri + base64(quad_buffer()), "", materials));
+  ASSERT_EQ(s.materials.size(), 4u);
+  EXPECT_EQ(s.materials[0].type, MaterialType::metallic_roughness);
+  EXPECT_FLOAT_EQ(s.materials[0].specular, 0.5f);
+  EXPECT_EQ(s.materials[0].specular_color, Vec3f(0.8f));
+  EXPECT_FLOAT_EQ(s.materials[0].ior, 1.33f);
+  EXPECT_EQ(s.materials[1].specular_color, Vec3f(1, 0.5f, 0.5f));
+  EXPECT_EQ(s.materials[2].type, MaterialType::diffuse);
+  EXPECT_EQ(s.materials[3].type, MaterialType::metallic_roughness);  // a metal keeps its layer
+  EXPECT_EQ(s.materials[3].specular, 0.0f);
+  int mean = 0, textures = 0;
+  for (const std::string& w : s.warnings) {
+    mean += w.find("materials[1].extensions.KHR_materials_specular: specularColorFactor (1, 0.5, 0.5) used as its "
+                   "mean grey") != std::string::npos;
+    textures += w.find("materials[1].extensions.KHR_materials_specular: specularTexture and specularColorTexture "
+                       "ignored") != std::string::npos;
+  }
+  EXPECT_EQ(mean, 1);
+  EXPECT_EQ(textures, 1);
+  for (const auto& [specular, expected] : std::initializer_list<std::pair<std::string, std::string>>{
+           {R"({"specularFactor": 2})", "specularFactor must be in [0, 1]"},
+           {R"({"specularColorFactor": [1, -1, 1]})", "components must be finite and ≥ 0"},
+           {R"({"specularColorFactor": [1, 1]})", "must be an array of three numbers"}}) {
+    const std::string message = parse_error(quad_document(kDataUri + base64(quad_buffer()), "",
+                                                          R"([{"extensions": {"KHR_materials_specular": )" + specular + "}}]"));
+    EXPECT_NE(message.find(expected), std::string::npos) << specular << " → " << message;
+  }
+}
+
 TEST(GltfLoader, BadInputIsAOneLineError) {
   const std::string good_uri = kDataUri + base64(quad_buffer());
   const std::string doc = quad_document(good_uri);

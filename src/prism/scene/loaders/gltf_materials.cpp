@@ -205,14 +205,8 @@ Material GltfBuilder::make_material(const tinygltf::Material& src, int index) {
   m.base_color_texture = texture(pbr.baseColorTexture, TextureEncoding::srgb, where + ".baseColorTexture");
   m.metallic_roughness_texture =
       texture(pbr.metallicRoughnessTexture, TextureEncoding::linear, where + ".metallicRoughnessTexture");
-  // KHR_materials_specular factor 0 on a dielectric (metallic 0) removes the specular
-  // layer, leaving the Lambertian base: Prism's diffuse (Prism's own GLB writer says so).
-  if (const tinygltf::Value* specular = extension(src.extensions, "KHR_materials_specular")) {
-    if (number(*specular, "specularFactor", 1.0) == 0.0 && m.metallic == 0.0f && m.metallic_roughness_texture < 0)
-      m.type = MaterialType::diffuse;
-    else
-      warnings_.push_back(fmt::format("glTF: {}: KHR_materials_specular ignored (only factor 0 on a dielectric is read)", where));
-  }
+  if (const tinygltf::Value* specular = extension(src.extensions, "KHR_materials_specular"))
+    read_specular(m, *specular, where);
   if (src.alphaMode == "MASK") m.alpha_mode = AlphaMode::mask;
   else if (src.alphaMode == "BLEND") m.alpha_mode = AlphaMode::blend;
   m.alpha_cutoff = static_cast<float>(src.alphaCutoff);
@@ -305,6 +299,37 @@ void GltfBuilder::read_volume(Material& m, const tinygltf::Value* volume, const 
   m.attenuation_distance = std::isfinite(distance)
                                ? static_cast<float>(std::min(distance, double(std::numeric_limits<float>::max())))
                                : std::numeric_limits<float>::infinity();
+}
+
+// KHR_materials_specular: the dielectric specular layer's weight (specularFactor, default 1)
+// and colour (specularColorFactor, default white; F0 = ((η − 1)/(η + 1))² × colour, so a
+// colour above 1 may raise it, up to 1). Factor 0 on a plain dielectric (metallic 0, no
+// metallic-roughness texture) removes the layer: Prism's diffuse, exactly (its own GLB
+// writer says so). A coloured factor is used as its mean grey, and the textures are not
+// read: both are said.
+void GltfBuilder::read_specular(Material& m, const tinygltf::Value& specular, const std::string& where) {
+  const std::string specular_where = where + ".extensions.KHR_materials_specular";
+  const double factor = number(specular, "specularFactor", 1.0);
+  if (!(factor >= 0.0 && factor <= 1.0)) fail(fmt::format("{}: specularFactor must be in [0, 1]", specular_where));
+  Vec3f color(1.0f);
+  if (specular.Has("specularColorFactor")) {
+    const auto c = number3(specular, "specularColorFactor");
+    if (!c) fail(fmt::format("{}: specularColorFactor must be an array of three numbers", specular_where));
+    if (!(min_component(*c) >= 0.0f) || !std::isfinite(max_component(*c)))
+      fail(fmt::format("{}: specularColorFactor components must be finite and ≥ 0", specular_where));
+    color = *c;
+  }
+  if (specular.Has("specularTexture") || specular.Has("specularColorTexture"))
+    warnings_.push_back(fmt::format("glTF: {}: specularTexture and specularColorTexture ignored", specular_where));
+  if (factor == 0.0 && m.metallic == 0.0f && m.metallic_roughness_texture < 0) {
+    m.type = MaterialType::diffuse;
+    return;
+  }
+  m.specular = static_cast<float>(factor);
+  m.specular_color = color;
+  if (color.x != color.y || color.y != color.z)
+    warnings_.push_back(fmt::format("glTF: {}: specularColorFactor ({}, {}, {}) used as its mean grey", specular_where,
+                                    color.x, color.y, color.z));
 }
 
 // An extension's textureInfo (an object with "index", optional "texCoord" and its own

@@ -106,7 +106,15 @@ json material_json(const Scene& scene, const Material& m) {
         }
       }
       break;
-    case MaterialType::metallic_roughness: pbr["metallicFactor"] = m.metallic; break;
+    case MaterialType::metallic_roughness:
+      pbr["metallicFactor"] = m.metallic;
+      if (m.ior != 1.5f) j["extensions"]["KHR_materials_ior"] = {{"ior", m.ior}};
+      if (m.specular != 1.0f || m.specular_color != Vec3f(1.0f)) {
+        const Vec3f& c = m.specular_color;
+        j["extensions"]["KHR_materials_specular"] = {{"specularFactor", m.specular},
+                                                     {"specularColorFactor", {c.x, c.y, c.z}}};
+      }
+      break;
   }
   if (m.base_color_texture >= 0) pbr["baseColorTexture"] = texture_info(scene, m.base_color_texture);
   if (m.metallic_roughness_texture >= 0) pbr["metallicRoughnessTexture"] = texture_info(scene, m.metallic_roughness_texture);

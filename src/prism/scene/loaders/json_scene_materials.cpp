@@ -155,7 +155,8 @@ void JsonSceneReader::read_material(const JsonValue& value) {
   value.expect_keys({"name", "type", "base_color", "base_color_spectrum", "base_color_texture", "roughness",
                      "anisotropy", "metallic", "metallic_roughness_texture", "normal_texture", "normal_scale",
                      "bump_texture", "bump_scale", "microfacet", "conductor", "ior", "dispersion", "thin_walled",
-                     "transmission", "attenuation_color", "attenuation_distance", "clearcoat", "clearcoat_roughness",
+                     "transmission", "attenuation_color", "attenuation_distance", "specular", "specular_color",
+                     "clearcoat", "clearcoat_roughness",
                      "clearcoat_texture", "clearcoat_roughness_texture", "alpha_mode", "alpha_cutoff", "opacity",
                      "emission"});
   Material m;
@@ -224,6 +225,14 @@ void JsonSceneReader::read_material(const JsonValue& value) {
     }
   }
   read_attenuation(m, value);
+  // KHR_materials_specular's factors, on metallic_roughness (after transmission, which
+  // makes glass of it, has had its say).
+  for (const char* key : {"specular", "specular_color"})
+    if (value.has(key) && m.type != MaterialType::metallic_roughness)
+      value[key].fail("only metallic_roughness materials have a dielectric specular layer to weight");
+  m.specular = value.get_float("specular", m.specular, 0.0f, 1.0f);
+  m.specular_color = value.get_vec3("specular_color", m.specular_color);
+  if (!(min_component(m.specular_color) >= 0.0f)) value["specular_color"].fail("colour components must not be negative");
   read_clearcoat(m, value);
   if (auto a = value.find("alpha_mode"))
     m.alpha_mode = a->as_enum<AlphaMode>({{"opaque", AlphaMode::opaque}, {"mask", AlphaMode::mask}, {"blend", AlphaMode::blend}});

@@ -127,7 +127,12 @@ void write_scene_json(const Scene& scene, const std::filesystem::path& path) {
     if (m.type == MaterialType::dielectric) w(", \"ior\": {}{}", m.ior, m.thin_walled ? ", \"thin_walled\": true" : "");
     if (m.absorbs_inside())
       w(", \"attenuation_color\": {}, \"attenuation_distance\": {}", vec(m.attenuation_color), m.attenuation_distance);
-    if (m.type == MaterialType::metallic_roughness) w(", \"metallic\": {}", m.metallic);
+    if (m.type == MaterialType::metallic_roughness) {
+      w(", \"metallic\": {}", m.metallic);
+      if (m.ior != 1.5f) w(", \"ior\": {}", m.ior);
+      if (m.specular != 1.0f) w(", \"specular\": {}", m.specular);
+      if (m.specular_color != Vec3f(1.0f)) w(", \"specular_color\": {}", vec(m.specular_color));
+    }
     if (m.has_clearcoat()) {
       w(", \"clearcoat\": {}, \"clearcoat_roughness\": {}", m.clearcoat, m.clearcoat_roughness);
       if (m.clearcoat_texture >= 0) w(", \"clearcoat_texture\": {}", json_texture(scene, files, m.clearcoat_texture));

@@ -161,10 +161,33 @@ TEST(ObjLoader, UnreadPbrExtensionAndTfAreWarned) {
       all += w + "\n";
     return all;
   };
-  EXPECT_NE(warnings_for("Pr 0.3\nPm 1\n").find("PBR extension"), std::string::npos);
+  EXPECT_NE(warnings_for("Ps 0.3\nmap_Pr r.png\n").find("PBR extension (Ps, map_Pr"), std::string::npos);
+  EXPECT_EQ(warnings_for("Pr 0.3\nPm 1\n").find("PBR extension"), std::string::npos);
   EXPECT_NE(warnings_for("Tf 0.2 0.8 0.2\n").find("Tf"), std::string::npos);
   const std::string quiet = warnings_for("Ka 0.1 0.1 0.1\nTf 1 1 1\n");
   EXPECT_EQ(quiet.find("MTL parameters ignored"), std::string::npos) << quiet;
+}
+
+// The PBR extension's Pr and Pm (Blender, three.js) make a metallic-roughness material of
+// Kd, overriding the Phong reading of Ks/Ns; glass keeps its refraction and says so.
+TEST(ObjLoader, PbrExtensionRoughnessAndMetallic) {
+  test::ScratchFolder dir;
+  dir.write("quad.mtl", "newmtl metal\nKd 0.9 0.6 0.3\nKs 0.5 0.5 0.5\nNs 10\nPr 0.25\nPm 1\n"
+                        "newmtl glass\nillum 7\nNi 1.5\nPr 0.5\n");
+  dir.write("quad.obj", "mtllib quad.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nusemtl metal\nf 1 2 3\nusemtl glass\nf 1 3 4\n");
+  const Scene s = load_scene((dir / "quad.obj").string());
+  const Material* metal = nullptr;
+  const Material* glass = nullptr;
+  for (const Material& m : s.materials) (m.name == "metal" ? metal : glass) = &m;
+  ASSERT_TRUE(metal && glass);
+  EXPECT_EQ(metal->type, MaterialType::metallic_roughness);
+  EXPECT_EQ(metal->base_color, Vec3f(0.9f, 0.6f, 0.3f));
+  EXPECT_FLOAT_EQ(metal->roughness, 0.25f);
+  EXPECT_FLOAT_EQ(metal->metallic, 1.0f);
+  EXPECT_EQ(glass->type, MaterialType::dielectric);
+  bool said = false;
+  for (const std::string& w : s.warnings) said |= w.find("Pr/Pm on glass") != std::string::npos;
+  EXPECT_TRUE(said);
 }
 
 TEST(ObjLoader, PhongExponentToRoughness) {

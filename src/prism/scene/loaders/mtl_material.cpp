@@ -54,6 +54,17 @@ Material material_from_mtl(const tinyobj::material_t& mtl, std::vector<std::stri
     m.type = MaterialType::diffuse;
     m.base_color = kd;
   }
+  // The PBR extension (as Blender and three.js write it): Pr (perceptual roughness) and Pm
+  // (metallic) make glTF's metallic-roughness model of Kd, instead of the Phong reading of
+  // Ks and Ns. tinyobjloader gives 0 for what a file leaves out, so "Pr 0" and "Pm 0"
+  // alone (a smooth dielectric) read as absent.
+  const float pr = finite_or(mtl.roughness, 0.0f), pm = finite_or(mtl.metallic, 0.0f);
+  if ((pr != 0.0f || pm != 0.0f) && m.type != MaterialType::dielectric) {
+    m.type = MaterialType::metallic_roughness;
+    m.base_color = kd;
+    m.roughness = std::clamp(pr, 0.0f, 1.0f);
+    m.metallic = std::clamp(pm, 0.0f, 1.0f);
+  }
   // A diffuse texture with Kd = 0 would be black: many exporters write Kd 0 with map_Kd.
   if (!mtl.diffuse_texname.empty() && max_component(kd) == 0.0f && m.type != MaterialType::conductor)
     m.base_color = Vec3f(1.0f);
@@ -84,12 +95,13 @@ Material material_from_mtl(const tinyobj::material_t& mtl, std::vector<std::stri
   } else if (coat > 0.0f || mtl.clearcoat_roughness != 0.0f) {
     ignored.push_back(coat > 0.0f ? "Pc on glass" : "Pcr without Pc");
   }
-  // The rest of the PBR extension (Pr, Pm, Ps and their maps) and a coloured transmission
-  // filter are not read; tinyobjloader gives 0 for what a file leaves out, and exporters
-  // write a white Tf for every material.
-  if (mtl.roughness != 0.0f || mtl.metallic != 0.0f || mtl.sheen != 0.0f || !mtl.roughness_texname.empty() ||
-      !mtl.metallic_texname.empty() || !mtl.sheen_texname.empty())
-    ignored.push_back("PBR extension (Pr, Pm, Ps, map_Pr, map_Pm, map_Ps)");
+  // The rest of the PBR extension (Ps, the maps: Prism's metallic-roughness texture is one
+  // image, G and B) and a coloured transmission filter are not read; exporters write a
+  // white Tf for every material.
+  if (mtl.sheen != 0.0f || !mtl.roughness_texname.empty() || !mtl.metallic_texname.empty() ||
+      !mtl.sheen_texname.empty())
+    ignored.push_back("PBR extension (Ps, map_Pr, map_Pm, map_Ps)");
+  if (m.type == MaterialType::dielectric && (pr != 0.0f || pm != 0.0f)) ignored.push_back("Pr/Pm on glass");
   if (rgb(mtl.transmittance) != Vec3f(1.0f) && rgb(mtl.transmittance) != Vec3f(0.0f)) ignored.push_back("Tf");
   return m;
 }

@@ -147,7 +147,7 @@ TEST(Clearcoat, SmoothCoatChoosesTheMirrorWithItsProbability) {
   EXPECT_FALSE(b.is_specular());
   EXPECT_TRUE(b.uses_lobe_sample());
   for (const Vec3f& wo : {direction_at(10, 30), direction_at(70, 30), -direction_at(40, 200)}) {
-    const float p_c = b.coat_probability(wo);
+    const float p_c = b.coat_probability(wo, b.coat.albedo(wo));
     const float a_c = 0.8f * fresnel_dielectric(std::abs(wo.z), 1.5f);
     Pcg32 rng(5, 6);
     constexpr int kN = 100'000;

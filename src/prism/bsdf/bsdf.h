@@ -37,15 +37,12 @@ struct Bsdf {
 
   color::SampledSpectrum<N> eval(const Vec3f& wo, const Vec3f& wi,
                                  TransportMode mode = TransportMode::radiance) const {
-    const color::SampledSpectrum<N> f = lobe_eval(wo, wi, mode);
-    if (__builtin_expect(!coat.present(), 1)) return f;
-    return f * coat.base_weight(wo) + color::SampledSpectrum<N>(coat.eval(wo, wi));
+    if (__builtin_expect(!coat.present(), 1)) return lobe_eval(wo, wi, mode);
+    return coated_eval(wo, wi, mode, coat.albedo(wo));
   }
   float pdf(const Vec3f& wo, const Vec3f& wi) const {
-    const float p = lobe_pdf(wo, wi);
-    if (__builtin_expect(!coat.present(), 1)) return p;
-    const float p_coat = coat_probability(wo);
-    return p_coat * coat.pdf(wo, wi) + (1.0f - p_coat) * p;
+    if (__builtin_expect(!coat.present(), 1)) return lobe_pdf(wo, wi);
+    return coated_pdf(wo, wi, coat_probability(wo, coat.albedo(wo)));
   }
   // u_lobe picks among lobes / reflection vs refraction; u drives the direction.
   std::optional<BsdfSample<N>> sample(const Vec3f& wo, float u_lobe, Vec2f u,
@@ -73,9 +70,8 @@ struct Bsdf {
     return d != nullptr && d->is_dispersive();
   }
 
-  // Probability that a coated sample() draws from the coat.
-  float coat_probability(const Vec3f& wo) const {
-    const float a_coat = coat.albedo(wo);
+  // Probability that a coated sample() draws from the coat, given the coat's albedo at wo.
+  float coat_probability(const Vec3f& wo, float a_coat) const {
     // The floor keeps the base sampled at least now and then even where the estimate says
     // it reflects nothing at this wo (a black metal at normal incidence still reflects at
     // other angles): a lobe gets probability 0 only if its f is identically 0.
@@ -84,6 +80,14 @@ struct Bsdf {
   }
 
  private:
+  // The coated eval and pdf, given what sample() has already computed at wo: the coat's
+  // albedo A_c (the base's weight is 1 − A_c) and the mixture probability.
+  color::SampledSpectrum<N> coated_eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode, float a_coat) const {
+    return lobe_eval(wo, wi, mode) * (1.0f - a_coat) + color::SampledSpectrum<N>(coat.eval(wo, wi));
+  }
+  float coated_pdf(const Vec3f& wo, const Vec3f& wi, float p_coat) const {
+    return p_coat * coat.pdf(wo, wi) + (1.0f - p_coat) * lobe_pdf(wo, wi);
+  }
   color::SampledSpectrum<N> lobe_eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const {
     return std::visit(
         [&](const auto& l) {
@@ -131,21 +135,22 @@ struct Bsdf {
   }
   std::optional<BsdfSample<N>> coated_sample(const Vec3f& wo, float u_lobe, Vec2f u, TransportMode mode) const {
     if (wo.z == 0.0f) return std::nullopt;
-    const float p_coat = coat_probability(wo);
+    const float a_coat = coat.albedo(wo);
+    const float p_coat = coat_probability(wo, a_coat);
     if (u_lobe < p_coat) {
       const auto wi = coat.sample_direction(wo, u);
       if (!wi) return std::nullopt;
       BsdfSample<N> s;
       s.wi = *wi;
       if (coat.is_smooth()) {
-        s.f = color::SampledSpectrum<N>(coat.albedo(wo) / abs_cos_theta(s.wi));
+        s.f = color::SampledSpectrum<N>(a_coat / abs_cos_theta(s.wi));
         s.pdf = p_coat;
         s.is_specular = true;
         return s;
       }
-      s.pdf = pdf(wo, s.wi);
+      s.pdf = coated_pdf(wo, s.wi, p_coat);
       if (!(s.pdf > 0.0f)) return std::nullopt;
-      s.f = eval(wo, s.wi, mode);
+      s.f = coated_eval(wo, s.wi, mode, a_coat);
       return s;
     }
     // The rest of u_lobe, rescaled to [0, 1), chooses within the base.
@@ -153,13 +158,13 @@ struct Bsdf {
     auto s = lobe_sample(wo, u_base, u, mode);
     if (!s) return s;
     if (s->is_specular) {
-      s->f *= coat.base_weight(wo);
+      s->f *= 1.0f - a_coat;
       s->pdf *= 1.0f - p_coat;
       return s;
     }
-    s->pdf = pdf(wo, s->wi);
+    s->pdf = coated_pdf(wo, s->wi, p_coat);
     if (!(s->pdf > 0.0f)) return std::nullopt;
-    s->f = eval(wo, s->wi, mode);
+    s->f = coated_eval(wo, s->wi, mode, a_coat);
     return s;
   }
 };

@@ -48,10 +48,8 @@ struct Clearcoat {
   // At α below the distribution's kSmoothAlpha the coat is a mirror (a delta lobe).
   bool is_smooth() const { return distribution.effectively_smooth(); }
 
-  // c E(|cos θo|): what the coat reflects of light from wo.
+  // c E(|cos θo|): what the coat reflects of light from wo; the base under it gets 1 − c E.
   float albedo(const Vec3f& wo) const;
-  // The weight of the base under the coat, 1 − c E.
-  float base_weight(const Vec3f& wo) const { return 1.0f - albedo(wo); }
 
   // c f_coat(wo, wi) without the cosine; 0 for a smooth coat (delta) or opposite sides.
   float eval(const Vec3f& wo, const Vec3f& wi) const;

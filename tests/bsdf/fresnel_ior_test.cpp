@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "prism/bsdf/fresnel.h"
 #include "prism/bsdf/ior.h"
@@ -64,6 +66,54 @@ TEST(Dispersion, Bk7SellmeierMatchesCatalogue) {
   const auto eta = relative_ior(bk7, w);
   EXPECT_GT(eta[0], eta[3]);
   EXPECT_NEAR(eta[2], bk7(550.0), 1e-6);
+}
+
+// KHR_materials_dispersion's glass: the two-term Cauchy glass with index n_d at the d line
+// and Abbe number V_d. Its closed form n_d + (n_d − 1)/V_d (523655/λ² − 1.5168) rounds the
+// two constants (523655.09 and 1.516844): they move n by at most (n_d − 1)/V_d × (0.09/λ²
+// + 4.4e-5), under (n_d − 1)/V_d × 5e-5 across 380–780 nm.
+TEST(Dispersion, CauchyGlassOfAnAbbeNumberIsTheGltfOne) {
+  for (const auto& [n_d, v_d] : {std::pair{1.5, 20.0}, {1.5168, 64.17}, {2.42, 55.0}, {1.33, 55.0}}) {
+    const CauchyIor glass = CauchyIor::from_abbe_number(n_d, v_d);
+    EXPECT_NEAR(glass(587.56), n_d, 1e-12);
+    EXPECT_NEAR(abbe_number(glass), v_d, 1e-9 * v_d);
+    for (const double nm : {380.0, 450.0, 550.0, 650.0, 780.0})
+      EXPECT_NEAR(glass(nm), n_d + (n_d - 1.0) / v_d * (523655.0 / (nm * nm) - 1.5168), (n_d - 1.0) / v_d * 5e-5)
+          << n_d << " " << v_d << " " << nm;
+  }
+  // SCHOTT's N-BK7 has V_d = 64.17 (catalogue, 2 decimals).
+  EXPECT_NEAR(abbe_number(sellmeier_bk7()), 64.17, 0.005);
+  // The extension floors the index at 1: a dispersion far beyond any glass's (V_d = 0.2)
+  // would take the red end of a 1.2 glass below vacuum's.
+  const CauchyIor extreme = CauchyIor::from_abbe_number(1.2, 0.2);
+  EXPECT_EQ(extreme(780.0), 1.0);
+  EXPECT_GT(extreme(400.0), 1.2);
+}
+
+// Least squares in x = 1/λ²: a Cauchy glass's own samples give it back; N-BK7's Sellmeier
+// index across 380–780 nm lies within 0.001 of its closest Cauchy glass (the pbrt-v4
+// reader's tolerance), and a constant index is a glass without dispersion.
+TEST(Dispersion, CauchyFitOfSampledIndices) {
+  const CauchyIor cauchy{1.45, 0.0123};
+  std::vector<double> nm, n, bk7_n;
+  const SellmeierIor bk7 = sellmeier_bk7();
+  for (double l = 380.0; l <= 780.0; l += 20.0) {
+    nm.push_back(l);
+    n.push_back(cauchy(l));
+    bk7_n.push_back(bk7(l));
+  }
+  const CauchyFit exact = fit_cauchy(nm, n);
+  EXPECT_NEAR(exact.ior.a, 1.45, 1e-12);
+  EXPECT_NEAR(exact.ior.b_um2, 0.0123, 1e-12);
+  EXPECT_LT(exact.max_residual, 1e-12);
+  const CauchyFit glass = fit_cauchy(nm, bk7_n);
+  EXPECT_LT(glass.max_residual, 1e-3);
+  EXPECT_GT(glass.max_residual, 0.0);
+  EXPECT_NEAR(glass.ior(587.56), bk7(587.56), 1e-3);
+  const std::vector<double> one_nm = {550.0, 600.0}, flat = {1.33, 1.33};
+  const CauchyFit constant = fit_cauchy(one_nm, flat);
+  EXPECT_NEAR(constant.ior.a, 1.33, 1e-12);
+  EXPECT_NEAR(constant.ior.b_um2, 0.0, 1e-12);
 }
 
 TEST(Conductor, MeasuredIorTables) {

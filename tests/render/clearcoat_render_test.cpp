@@ -22,6 +22,7 @@
 #include "support/direct_light_settings.h"
 #include "support/film_statistics.h"
 #include "support/floor_under_sky.h"
+#include "support/write_and_reload.h"
 
 namespace prism {
 namespace {
@@ -92,10 +93,7 @@ TEST(ClearcoatRender, EveryWriterKeepsTheCoat) {
   for (const Scene* scene : {&original, &metal})
     for (const char* name : {"floor.json", "floor.glb", "floor.pbrt"}) {
       const std::filesystem::path path = dir / name;
-      if (path.extension() == ".glb") loaders::write_scene_glb(*scene, path);
-      else if (path.extension() == ".json") loaders::write_scene_json(*scene, path);
-      else loaders::write_scene_pbrt(*scene, path);
-      const Scene loaded = load_scene(path.string());
+      const Scene loaded = test::write_and_reload(*scene, path);
       const Material& m = loaded.materials[loaded.meshes[0].material];
       const Material& m0 = scene->materials[0];
       ASSERT_TRUE(m.has_clearcoat()) << name;

@@ -16,6 +16,7 @@
 #include "support/direct_light_settings.h"
 #include "support/film_statistics.h"
 #include "support/floor_under_sky.h"
+#include "support/write_and_reload.h"
 
 namespace prism {
 namespace {
@@ -57,9 +58,7 @@ TEST(SpecularLayerRender, JsonAndGlbKeepTheLayerAndTheIor) {
   test::ScratchFolder dir;
   for (const char* name : {"floor.json", "floor.glb"}) {
     const std::filesystem::path path = dir / name;
-    if (path.extension() == ".glb") loaders::write_scene_glb(original, path);
-    else loaders::write_scene_json(original, path);
-    const Scene loaded = load_scene(path.string());
+    const Scene loaded = test::write_and_reload(original, path);
     const Material& m = loaded.materials[loaded.meshes[0].material];
     EXPECT_EQ(m.type, MaterialType::metallic_roughness) << name;
     EXPECT_FLOAT_EQ(m.ior, 1.7f) << name;

@@ -20,6 +20,7 @@
 #include "prism/scene/loaders/scene_writers.h"
 #include "scene/loaders/loader_test_files.h"
 #include "support/film_statistics.h"
+#include "support/write_and_reload.h"
 
 namespace prism {
 namespace {
@@ -198,10 +199,7 @@ TEST(VolumeAbsorption, EveryWriterKeepsIt) {
   test::ScratchFolder dir;
   for (const char* name : {"block.json", "block.glb", "block.pbrt"}) {
     const std::filesystem::path path = dir / name;
-    if (path.extension() == ".glb") loaders::write_scene_glb(original, path);
-    else if (path.extension() == ".json") loaders::write_scene_json(original, path);
-    else loaders::write_scene_pbrt(original, path);
-    const Scene loaded = load_scene(path.string());
+    const Scene loaded = test::write_and_reload(original, path);
     const Material& m = loaded.materials[loaded.meshes[0].material];
     EXPECT_TRUE(m.absorbs_inside()) << name;
     EXPECT_EQ(m.type, MaterialType::dielectric) << name;

@@ -1,5 +1,6 @@
 #include "prism/bsdf/ior.h"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -32,7 +33,34 @@ ConductorIor conductor_ior(std::string_view name) {
 
 double CauchyIor::operator()(double wavelength_nm) const {
   const double um = wavelength_nm * 1e-3;
-  return a + b_um2 / (um * um);
+  return std::max(a + b_um2 / (um * um), 1.0);
+}
+
+CauchyIor CauchyIor::from_abbe_number(double n_d, double abbe_number) {
+  const auto inverse_square_um = [](double nm) { return 1.0 / (nm * 1e-3 * nm * 1e-3); };
+  const double b = (n_d - 1.0) / (abbe_number * (inverse_square_um(kFraunhoferF_nm) - inverse_square_um(kFraunhoferC_nm)));
+  return {n_d - b * inverse_square_um(kFraunhoferD_nm), b};
+}
+
+CauchyFit fit_cauchy(std::span<const double> wavelength_nm, std::span<const double> n) {
+  const auto x_of = [](double nm) { return 1.0 / (nm * 1e-3 * nm * 1e-3); };
+  const double count = static_cast<double>(n.size());
+  double mean_x = 0.0, mean_n = 0.0;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    mean_x += x_of(wavelength_nm[i]) / count;
+    mean_n += n[i] / count;
+  }
+  double sxx = 0.0, sxn = 0.0;
+  for (std::size_t i = 0; i < n.size(); ++i) {
+    const double dx = x_of(wavelength_nm[i]) - mean_x;
+    sxx += dx * dx;
+    sxn += dx * (n[i] - mean_n);
+  }
+  const double b = sxx > 0.0 ? sxn / sxx : 0.0;
+  CauchyFit fit{{mean_n - b * mean_x, b}, 0.0};
+  for (std::size_t i = 0; i < n.size(); ++i)
+    fit.max_residual = std::max(fit.max_residual, std::abs(n[i] - (fit.ior.a + b * x_of(wavelength_nm[i]))));
+  return fit;
 }
 
 double SellmeierIor::operator()(double wavelength_nm) const {

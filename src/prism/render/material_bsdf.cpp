@@ -22,23 +22,6 @@ MaterialTables::MaterialTables(const std::vector<Material>& materials) {
   }
 }
 
-double dielectric_ior(const Material& m, double wavelength_nm) {
-  const auto& c = m.dispersion_coefficients;
-  switch (m.dispersion) {
-    case DispersionModel::cauchy: return bsdf::CauchyIor{c[0], c[1]}(wavelength_nm);
-    case DispersionModel::sellmeier: {
-      bsdf::SellmeierIor s;
-      for (int i = 0; i < 3; ++i) {
-        s.b[i] = c[static_cast<std::size_t>(i)];
-        s.c_um2[i] = c[static_cast<std::size_t>(i + 3)];
-      }
-      return s(wavelength_nm);
-    }
-    case DispersionModel::none: break;
-  }
-  return m.ior;
-}
-
 namespace {
 
 bsdf::MicrofacetType microfacet_type(MicrofacetModel m) {

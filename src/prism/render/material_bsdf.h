@@ -13,6 +13,7 @@
 #include "prism/bsdf/bsdf.h"
 #include "prism/bsdf/ior.h"
 #include "prism/render/transport_mode.h"
+#include "prism/scene/dielectric_ior.h"
 #include "prism/scene/material.h"
 
 namespace prism {
@@ -46,9 +47,6 @@ struct MaterialPoint {
 inline MaterialPoint untextured_point(const Material& m) {
   return {m.roughness, m.metallic, m.has_clearcoat() ? m.clearcoat : 0.0f, m.clearcoat_roughness};
 }
-
-// Index of refraction of a dielectric material at one wavelength.
-double dielectric_ior(const Material& m, double wavelength_nm);
 
 template <class Mode>
 bsdf::Bsdf<Mode::kChannels> make_bsdf(const Material& material, std::uint32_t material_index,

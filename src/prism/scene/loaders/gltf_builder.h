@@ -29,6 +29,7 @@ class GltfBuilder {
   void read_volume(Material& m, const tinygltf::Value* volume, const std::string& where);
   void read_clearcoat(Material& m, const tinygltf::Value& clearcoat, const std::string& where);
   void read_specular(Material& m, const tinygltf::Value& specular, const std::string& where);
+  void read_dispersion(Material& m, const tinygltf::Value& dispersion, const std::string& where);
   int extension_texture(const tinygltf::Value& object, const char* key, TextureEncoding encoding,
                         const std::string& where);
   int texture(const tinygltf::TextureInfo& info, TextureEncoding encoding, const std::string& where);

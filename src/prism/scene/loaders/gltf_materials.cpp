@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "prism/bsdf/ior.h"
 #include "prism/core/error.h"
 #include "prism/core/parallel.h"
 #include "prism/scene/emission.h"
@@ -239,10 +240,15 @@ Material GltfBuilder::make_material(const tinygltf::Material& src, int index) {
       // A transmissive glTF material becomes Prism's dielectric, tinted by the base colour.
       m.type = MaterialType::dielectric;
       read_volume(m, extension(src.extensions, "KHR_materials_volume"), where);
+      if (const tinygltf::Value* dispersion = extension(src.extensions, "KHR_materials_dispersion"))
+        read_dispersion(m, *dispersion, where);
       if (m.transmission < 1.0f || m.metallic > 0.0f)
         warnings_.push_back(fmt::format("glTF: {}: partial transmission/metallic mixed into a dielectric", where));
     }
   }
+  if (m.type != MaterialType::dielectric && extension(src.extensions, "KHR_materials_dispersion"))
+    warnings_.push_back(fmt::format(
+        "glTF: {}.extensions.KHR_materials_dispersion: ignored on a material that does not transmit", where));
   if (const tinygltf::Value* clearcoat = extension(src.extensions, "KHR_materials_clearcoat"))
     read_clearcoat(m, *clearcoat, where);
   // Occlusion is meaningless for a path tracer (the transport computes it) and is ignored.
@@ -299,6 +305,20 @@ void GltfBuilder::read_volume(Material& m, const tinygltf::Value* volume, const 
   m.attenuation_distance = std::isfinite(distance)
                                ? static_cast<float>(std::min(distance, double(std::numeric_limits<float>::max())))
                                : std::numeric_limits<float>::infinity();
+}
+
+// KHR_materials_dispersion on a transmitting material: `dispersion` = 20/V_d (default 0:
+// none) makes the glass a two-term Cauchy one with n_d = the material's ior and Abbe
+// number V_d (bsdf::CauchyIor::from_abbe_number, the extension's own model). Spectral
+// transport refracts each wavelength by its own index; RGB transport uses n_d.
+void GltfBuilder::read_dispersion(Material& m, const tinygltf::Value& dispersion, const std::string& where) {
+  const double strength = number(dispersion, "dispersion", 0.0);
+  if (!(strength >= 0.0) || !std::isfinite(strength))
+    fail(fmt::format("{}.extensions.KHR_materials_dispersion: dispersion must be finite and ≥ 0", where));
+  if (strength == 0.0 || m.ior == 1.0f) return;
+  const bsdf::CauchyIor cauchy = bsdf::CauchyIor::from_abbe_number(m.ior, 20.0 / strength);
+  m.dispersion = DispersionModel::cauchy;
+  m.dispersion_coefficients = {static_cast<float>(cauchy.a), static_cast<float>(cauchy.b_um2), 0, 0, 0, 0};
 }
 
 // KHR_materials_specular: the dielectric specular layer's weight (specularFactor, default 1)

@@ -120,6 +120,7 @@ void GltfBuilder::check_extensions() {
   static const std::vector<std::string> kSupported = {
       "KHR_materials_emissive_strength", "KHR_lights_punctual", "KHR_materials_transmission",
       "KHR_materials_ior",               "KHR_materials_volume", "KHR_texture_transform",
+      "KHR_materials_dispersion",  // on transmitting materials: a Cauchy glass of the Abbe number
       "KHR_materials_specular",  // factors (a coloured one as its mean, warned); textures warned
       "KHR_materials_clearcoat",  // clearcoatNormalTexture is warned (gltf_materials.cpp)
       "KHR_mesh_quantization"};   // integer attributes: gltf_accessors.cpp reads every allowed type

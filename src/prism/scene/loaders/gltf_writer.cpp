@@ -10,6 +10,7 @@
 #include "prism/bsdf/conductor_color.h"
 #include "prism/core/error.h"
 #include "prism/io/atomic_file.h"
+#include "prism/scene/dielectric_ior.h"
 #include "prism/scene/emission.h"
 #include "prism/scene/loaders/texture_png.h"
 
@@ -94,6 +95,15 @@ json material_json(const Scene& scene, const Material& m) {
     case MaterialType::dielectric:
       j["extensions"]["KHR_materials_transmission"] = {{"transmissionFactor", 1.0}};
       j["extensions"]["KHR_materials_ior"] = {{"ior", m.ior}};
+      // Dispersion as glTF's 20/V_d: a Cauchy glass comes back exactly, a Sellmeier one as
+      // the Cauchy glass of its n_d and Abbe number (docs/scene-formats.md).
+      if (m.dispersion != DispersionModel::none) {
+        const double dispersion = 20.0 / dielectric_abbe_number(m);
+        if (!(dispersion >= 0.0))
+          throw UsageError(fmt::format(
+              "GLB writer: material '{}' refracts red more than blue, which KHR_materials_dispersion cannot hold", m.name));
+        j["extensions"]["KHR_materials_dispersion"] = {{"dispersion", dispersion}};
+      }
       // A solid (not thin-walled) dielectric needs KHR_materials_volume: without it glTF
       // readers, Prism's included, take a thin surface. The thickness only feeds
       // rasterisers' refraction approximations.
@@ -159,7 +169,8 @@ void write_scene_glb(const Scene& scene, const std::filesystem::path& path) {
       throw UsageError(fmt::format("glTF writer: material '{}' has a spectrum, which glTF 2.0 cannot hold", m.name));
   json doc = {{"asset", {{"version", "2.0"}, {"generator", "Prism"}}},
               {"extensionsUsed", {"KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior",
-                                  "KHR_materials_specular", "KHR_materials_volume", "KHR_materials_clearcoat"}},
+                                  "KHR_materials_specular", "KHR_materials_volume", "KHR_materials_clearcoat",
+                                  "KHR_materials_dispersion"}},
               {"bufferViews", json::array()}, {"accessors", json::array()}, {"meshes", json::array()},
               {"materials", json::array()}, {"nodes", json::array()}};
   for (const Material& m : scene.materials) doc["materials"].push_back(material_json(scene, m));

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "prism/bsdf/ior.h"
 #include "prism/scene/emission.h"
 #include "prism/scene/loaders/json_scene_reader.h"
 #include "prism/scene/loaders/path_safety.h"
@@ -43,6 +44,18 @@ void read_dispersion(Material& m, const JsonValue& value) {
         return;
       }
     value.fail(fmt::format("unknown glass '{}' (known: N-BK7, fused-silica)", name));
+  }
+  if (value.has("abbe_number")) {
+    // A glass by its d-line index and Abbe number: the two-term Cauchy glass of
+    // KHR_materials_dispersion (bsdf::CauchyIor::from_abbe_number).
+    value.expect_keys({"n_d", "abbe_number"});
+    const float n_d = value["n_d"].as_float(1.0f, 10.0f);
+    const float abbe_number = value["abbe_number"].as_float(1.0f, 1e6f);
+    const bsdf::CauchyIor cauchy = bsdf::CauchyIor::from_abbe_number(n_d, abbe_number);
+    m.dispersion = DispersionModel::cauchy;
+    m.dispersion_coefficients = {static_cast<float>(cauchy.a), static_cast<float>(cauchy.b_um2), 0, 0, 0, 0};
+    m.ior = n_d;
+    return;
   }
   value.expect_keys({"model", "coefficients"});
   m.dispersion = value["model"].as_enum<DispersionModel>(

@@ -1,5 +1,8 @@
 // pbrt-v4 materials and textures → Prism materials (mapping in docs/scene-formats.md).
 #include <cmath>
+#include <optional>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -62,6 +65,34 @@ const std::string* named_spectrum(const PbrtParams& p, std::string_view name) {
   const PbrtParam* param = p.find(name);
   if (!param || param->type != "spectrum" || param->strings.size() != 1) return nullptr;
   return &param->strings[0];
+}
+
+// A dielectric's "spectrum eta" given as (λ, η) pairs: the Cauchy glass closest to them
+// (bsdf::fit_cauchy), which is what Prism's dielectrics refract with. Pairs a Cauchy glass
+// misses by more than 0.001 somewhere (a Sellmeier glass across the whole visible does
+// not; an index error of 0.001 moves a refracted ray by under 0.1°) are said to be
+// approximated.
+std::optional<std::string> read_sampled_eta(Material& m, const PbrtParams& p, const PbrtParam& eta) {
+  const auto& v = eta.numbers;
+  if (v.size() < 2 || v.size() % 2 != 0) p.fail(eta, "expected (wavelength, index) pairs");
+  std::vector<double> nm, n;
+  for (std::size_t i = 0; i < v.size(); i += 2) {
+    if (!(v[i] > 0.0 && v[i] < 1e5) || (!nm.empty() && !(v[i] > nm.back())))
+      p.fail(eta, "wavelengths must be positive and increasing");
+    if (!(v[i + 1] >= 1.0 && v[i + 1] <= 10.0)) p.fail(eta, "indices must be between 1 and 10");
+    nm.push_back(v[i]);
+    n.push_back(v[i + 1]);
+  }
+  const bsdf::CauchyFit fit = bsdf::fit_cauchy(nm, n);
+  m.ior = static_cast<float>(fit.ior(bsdf::kFraunhoferD_nm));
+  if (fit.ior.b_um2 != 0.0) {
+    m.dispersion = DispersionModel::cauchy;
+    m.dispersion_coefficients = {static_cast<float>(fit.ior.a), static_cast<float>(fit.ior.b_um2), 0, 0, 0, 0};
+  }
+  constexpr double kIndexTolerance = 1e-3;
+  if (fit.max_residual <= kIndexTolerance) return std::nullopt;
+  return fmt::format("dielectric (line {}) sampled eta as the Cauchy glass closest to it (index off by up to {:.4f})",
+                     p.line, fit.max_residual);
 }
 
 }  // namespace
@@ -191,6 +222,8 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
         approximations_.push_back(fmt::format("dielectric (line {}) eta \"{}\" as 1.5", p.line, *eta));
         m.ior = 1.5f;
       }
+    } else if (const PbrtParam* sampled = p.find("eta"); sampled && sampled->type == "spectrum") {
+      if (auto note = read_sampled_eta(m, p, *sampled)) approximations_.push_back(std::move(*note));
     } else {
       const double eta_value = p.get_float("eta", 1.5);
       if (!(eta_value > 0.0) || eta_value > 10.0) p.fail(*p.find("eta"), "must be between 0 and 10");

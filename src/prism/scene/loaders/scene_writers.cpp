@@ -6,9 +6,12 @@
 #include <optional>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
+#include "prism/bsdf/ior.h"
 #include "prism/core/error.h"
 #include "prism/io/atomic_file.h"
+#include "prism/scene/dielectric_ior.h"
 #include "prism/scene/emission.h"
 #include "prism/scene/loaders/texture_png.h"
 #include "prism/scene/surface_alpha.h"
@@ -124,7 +127,17 @@ void write_scene_json(const Scene& scene, const std::filesystem::path& path) {
       vec(m.base_color), m.roughness);
     if (m.type == MaterialType::conductor && m.conductor_fresnel == ConductorFresnel::complex_ior)
       w(", \"conductor\": \"{}\"", m.conductor_name);
-    if (m.type == MaterialType::dielectric) w(", \"ior\": {}{}", m.ior, m.thin_walled ? ", \"thin_walled\": true" : "");
+    if (m.type == MaterialType::dielectric) {
+      // A dispersive glass by its model's coefficients (the reader derives n_d from them).
+      const auto& d = m.dispersion_coefficients;
+      if (m.dispersion == DispersionModel::cauchy)
+        w(", \"dispersion\": {{\"model\": \"cauchy\", \"coefficients\": [{}, {}]}}", d[0], d[1]);
+      else if (m.dispersion == DispersionModel::sellmeier)
+        w(", \"dispersion\": {{\"model\": \"sellmeier\", \"coefficients\": [{}]}}", fmt::join(d, ", "));
+      else
+        w(", \"ior\": {}", m.ior);
+      if (m.thin_walled) w(", \"thin_walled\": true");
+    }
     if (m.absorbs_inside())
       w(", \"attenuation_color\": {}, \"attenuation_distance\": {}", vec(m.attenuation_color), m.attenuation_distance);
     if (m.type == MaterialType::metallic_roughness) {
@@ -183,6 +196,23 @@ void write_scene_json(const Scene& scene, const std::filesystem::path& path) {
 }
 
 namespace {
+
+// A dielectric's η for pbrt-v4: a number, pbrt's own "glass-BK7" for Prism's N-BK7, or
+// (λ, η) pairs every 20 nm across the visible for any other dispersive glass (the pbrt-v4
+// reader fits them with a Cauchy glass: exact for a Cauchy one).
+std::string pbrt_eta(const Material& m) {
+  if (m.dispersion == DispersionModel::none) return fmt::format("\"float eta\" [ {} ]", m.ior);
+  const bsdf::SellmeierIor bk7 = bsdf::sellmeier_bk7();
+  const auto& d = m.dispersion_coefficients;
+  bool is_bk7 = m.dispersion == DispersionModel::sellmeier;
+  for (int i = 0; i < 3; ++i)
+    is_bk7 = is_bk7 && d[static_cast<std::size_t>(i)] == static_cast<float>(bk7.b[i]) &&
+             d[static_cast<std::size_t>(3 + i)] == static_cast<float>(bk7.c_um2[i]);
+  if (is_bk7) return "\"spectrum eta\" \"glass-BK7\"";
+  std::string pairs;
+  for (int nm = 380; nm <= 780; nm += 20) pairs += fmt::format("{} {} ", nm, dielectric_ior(m, nm));
+  return fmt::format("\"spectrum eta\" [ {}]", pairs);
+}
 
 // pbrt-v4 texture names of what a material needs: its reflectance image and, for
 // alpha-tested materials, a float alpha image (pbrt puts alpha on the Shape).
@@ -325,10 +355,10 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
       }
       case MaterialType::dielectric:
         if (m.thin_walled)  // pbrt-v4's thindielectric is smooth: it takes eta only
-          w(" \"string type\" \"thindielectric\" \"float eta\" [ {} ]\n", m.ior);
+          w(" \"string type\" \"thindielectric\" {}\n", pbrt_eta(m));
         else
-          w(" \"string type\" \"dielectric\" \"float eta\" [ {} ] \"float roughness\" [ {} ] \"bool remaproughness\" false\n",
-            m.ior, alpha);
+          w(" \"string type\" \"dielectric\" {} \"float roughness\" [ {} ] \"bool remaproughness\" false\n",
+            pbrt_eta(m), alpha);
         break;
       default:
         w(" \"string type\" \"{}\"", coated ? "coateddiffuse" : "diffuse");

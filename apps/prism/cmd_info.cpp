@@ -20,16 +20,20 @@ void add_info_command(CLI::App& root, Action& action) {
   struct InfoOptions {
     std::string scene;
     bool allow_external_paths = false;
+    std::string material_variant;
   };
   auto options = std::make_shared<InfoOptions>();
   cmd->add_option("scene", options->scene, "Built-in scene name or scene file to summarise");
   cmd->add_flag("--allow-external-paths", options->allow_external_paths,
                 "Let the scene file refer to files outside its own folder");
+  cmd->add_option("--variant", options->material_variant,
+                  "Summarise the scene wearing this material variant (glTF KHR_materials_variants)");
   cmd->callback([options, &action] {
     action = [options] {
       if (!options->scene.empty()) {
         const Scene scene =
-            load_scene(options->scene, LoadOptions{.allow_external_paths = options->allow_external_paths});
+            load_scene(options->scene, LoadOptions{.allow_external_paths = options->allow_external_paths,
+                                                   .material_variant = options->material_variant});
         std::cout << format_scene_summary(scene);
         return 0;
       }

@@ -62,6 +62,7 @@ struct RenderOptions {
   bool max_depth_given = false;
   std::string exr_space = "working";
   std::string camera;  // --camera NAME|INDEX
+  std::string material_variant;  // --variant NAME (glTF KHR_materials_variants)
   std::string camera_json;
   EnvironmentOverride environment;  // --environment FILE|uniform
   DisplayCliOptions display;
@@ -226,7 +227,8 @@ int run_render(const RenderOptions& o) {
   const std::uint64_t memory_limit = o.memory_limit.empty() ? 0 : parse_memory_size(o.memory_limit);
   MemoryBudget load_budget(memory_limit > 0 ? memory_limit : default_memory_limit());
   Scene scene = load_scene(o.scene, LoadOptions{.allow_external_paths = o.allow_external_paths,
-                                                .memory_budget = &load_budget});
+                                                .memory_budget = &load_budget,
+                                                .material_variant = o.material_variant});
   if (!o.camera.empty()) select_camera(scene, o.camera);
   if (!o.camera_json.empty()) scene.camera = read_camera_json(o.camera_json, scene.camera);
   apply_environment_override(scene, o.environment,
@@ -395,6 +397,9 @@ void add_render_command(CLI::App& root, Action& action) {
   cmd->add_option("--camera", options->camera,
                   "Which of the scene file's cameras renders: its name, or its zero-based index (`prism info SCENE` "
                   "lists them); default: the first");
+  cmd->add_option("--variant", options->material_variant,
+                  "Which of a glTF file's material variants (KHR_materials_variants) the meshes wear, by name "
+                  "(`prism info SCENE` lists them); default: each mesh's own material");
   cmd->add_option("--camera-json", options->camera_json,
                   "Camera from a JSON snippet {\"eye\", \"target\", \"up\", \"fov_degrees\"} (as `prism view` saves it); "
                   "missing fields keep the scene camera's values");

@@ -14,6 +14,8 @@ void add_view_command(CLI::App& root, Action& action) {
   cmd->add_option("scene", o->scene, "Built-in scene name or scene file")->capture_default_str();
   cmd->add_option("--camera", o->camera,
                   "Start from this camera of the scene file: its name or zero-based index (default: the first)");
+  cmd->add_option("--variant", o->material_variant,
+                  "Wear this material variant of a glTF file (KHR_materials_variants; `prism info SCENE` lists them)");
   cmd->add_option("--frames", o->frames,
                   "Render this many passes, then exit (with --screenshot: write what the window shows first)");
   cmd->add_option("--screenshot", o->screenshot, "With --frames: PNG of the window, UI included");

@@ -115,5 +115,41 @@ timeout 60 "$prism" render "$work/scene/dark.json" --environment uniform --envir
   >"$work/stdout" 2>"$work/stderr"
 [ "$?" -eq 2 ] || fail "--environment-nits -1: expected a usage error (exit 2): $(cat "$work/stderr")"
 
+# glTF KHR_materials_variants: `prism info` lists the variants, --variant picks one (the
+# blue variant's emission lights the image the default one leaves dark), and a name the
+# file lacks, or a scene without variants, is a one-line error.
+cat >"$work/scene/variants.gltf" <<'JSON'
+{"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_materials_variants"],
+ "extensions": {"KHR_materials_variants": {"variants": [{"name": "red"}, {"name": "blue"}]}},
+ "buffers": [{"uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA", "byteLength": 36}],
+ "bufferViews": [{"buffer": 0, "byteLength": 36}],
+ "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]}],
+ "materials": [{"name": "plain"}, {"name": "red", "pbrMetallicRoughness": {"baseColorFactor": [1, 0, 0, 1]}},
+               {"name": "blue-lamp", "emissiveFactor": [0, 0, 1]}],
+ "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0,
+   "extensions": {"KHR_materials_variants": {"mappings": [{"material": 1, "variants": [0]}, {"material": 2, "variants": [1]}]}}}]}],
+ "cameras": [{"type": "perspective", "perspective": {"yfov": 0.8, "znear": 0.1}}],
+ "nodes": [{"mesh": 0}, {"camera": 0, "translation": [0.3, 0.3, 2]}], "scenes": [{"nodes": [0, 1]}]}
+JSON
+expect_ok "variant blue" info "$work/scene/variants.gltf"
+expect_ok "1 emissive" info "$work/scene/variants.gltf" --variant blue
+expect_ok "rendered" render "$work/scene/variants.gltf" --variant blue --spp 1 --width 8 --height 8 -o "$work/blue.exr"
+expect_ok "rendered" render "$work/scene/variants.gltf" --spp 1 --width 8 --height 8 -o "$work/plain.exr"
+cmp -s "$work/blue.exr" "$work/plain.exr" && fail "--variant blue rendered the default materials"
+# expect_usage_error PATTERN ARGS...: exit 2 (a usage error, like an unknown --camera) and one
+# stderr line "prism: error: ...PATTERN".
+expect_usage_error() {
+  local pattern="$1"; shift
+  timeout 60 "$prism" "$@" >"$work/stdout" 2>"$work/stderr"
+  local rc=$?
+  [ "$rc" -eq 2 ] || fail "'$*': exit $rc, expected 2 (stderr: $(cat "$work/stderr"))"
+  [ "$(wc -l <"$work/stderr")" -eq 1 ] || fail "'$*': stderr is not one line: $(cat "$work/stderr")"
+  grep -q "^prism: error: .*$pattern" "$work/stderr" || fail "'$*': stderr '$(cat "$work/stderr")' lacks '$pattern'"
+}
+expect_usage_error "no material variant 'green' (variants: red, blue)" render "$work/scene/variants.gltf" \
+  --variant green --spp 1 -o "$work/green.exr"
+[ ! -e "$work/green.exr" ] || fail "an unknown --variant wrote an image"
+expect_usage_error "has no material variants" info "$work/scene/good.json" --variant red
+
 if [ "$failures" -ne 0 ]; then echo "$failures failure(s)"; exit 1; fi
 echo "loaders CLI: all checks passed"

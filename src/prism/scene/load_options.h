@@ -1,5 +1,7 @@
 #pragma once
 // What every scene loader may and may not do with the files a scene refers to.
+#include <string>
+
 #include "prism/core/memory_budget.h"
 
 namespace prism {
@@ -15,6 +17,10 @@ struct LoadOptions {
   // When set, loaders account for texture texels (before decoding) and mesh arrays in it
   // and refuse what would exceed its limit (--memory-limit). Not owned.
   MemoryBudget* memory_budget = nullptr;
+  // glTF KHR_materials_variants: the variant whose materials the primitives take, by name
+  // (--variant); empty: each primitive's own material, the file's default look. A name the
+  // scene does not define is a UsageError.
+  std::string material_variant{};
 };
 
 }  // namespace prism

@@ -23,7 +23,9 @@ std::vector<std::string> all_builtin_scene_names() {
   return names;
 }
 
-Scene load_scene(std::string_view name_or_path, const LoadOptions& options) {
+namespace {
+
+Scene load_named_or_file(std::string_view name_or_path, const LoadOptions& options) {
   if (is_builtin_scene(name_or_path)) return make_builtin_scene(name_or_path);
   if (const auto json = loaders::embedded_scene_json(name_or_path))
     return loaders::parse_json_scene(*json, fmt::format("built-in scene '{}'", name_or_path), {}, name_or_path, options);
@@ -45,6 +47,17 @@ Scene load_scene(std::string_view name_or_path, const LoadOptions& options) {
   if (extension == ".gltf" || extension == ".glb") return loaders::load_gltf_scene(path, options);
   throw SceneError(fmt::format("cannot read scene '{}': no loader for '{}' files (supported: .json, .obj, .pbrt, .gltf, .glb)",
                                path.string(), path.extension().string()));
+}
+
+}  // namespace
+
+Scene load_scene(std::string_view name_or_path, const LoadOptions& options) {
+  Scene scene = load_named_or_file(name_or_path, options);
+  // The glTF loader refuses a variant its file does not name; other scenes have none.
+  if (!options.material_variant.empty() && scene.material_variants.empty())
+    throw UsageError(fmt::format("scene '{}' has no material variants (glTF KHR_materials_variants), so no variant '{}'",
+                                 name_or_path, options.material_variant));
+  return scene;
 }
 
 }  // namespace prism

@@ -65,6 +65,9 @@ struct Scene {
   int default_spp = 0;        // 0: the renderer's default (files like pbrt-v4 may set it)
   int default_max_depth = 0;  // 0: the renderer's default
   std::optional<NormalMapping> default_normal_mapping;  // none: the renderer's default (classic)
+  // Names of the material variants the file defines (glTF KHR_materials_variants), in its
+  // order; LoadOptions::material_variant picks one.
+  std::vector<std::string> material_variants;
   std::vector<std::string> warnings;  // loader warnings (unsupported features), one line each
 
   std::size_t triangle_count() const;

@@ -106,6 +106,10 @@ std::string format_scene_summary(const Scene& scene) {
   out += fmt::format("cameras {}\n", s.cameras);
   if (scene.cameras.empty()) out += camera_line(scene.camera);
   for (const auto& c : scene.cameras) out += camera_line(c);
+  if (!scene.material_variants.empty()) {
+    out += fmt::format("material variants {} (--variant NAME)\n", scene.material_variants.size());
+    for (const auto& v : scene.material_variants) out += fmt::format("  variant {}\n", v);
+  }
   out += fmt::format("resolution {}x{}\n", scene.default_width, scene.default_height);
   if (scene.default_normal_mapping)
     out += fmt::format("normal mapping {}\n", normal_mapping_name(*scene.default_normal_mapping));

@@ -351,7 +351,8 @@ int run_viewer(const ViewerOptions& options) {
   const ThreadLimit thread_limit(options.threads);
   // The display check comes first: without one there is nothing to show the scene in.
   ViewerWindow window(options.window_width, options.window_height, "Prism - " + options.scene);
-  Scene scene = load_scene(options.scene, LoadOptions{.allow_external_paths = options.allow_external_paths});
+  Scene scene = load_scene(options.scene, LoadOptions{.allow_external_paths = options.allow_external_paths,
+                                                      .material_variant = options.material_variant});
   if (!options.camera.empty()) select_camera(scene, options.camera);
   apply_environment_override(scene, options.environment, LoadOptions{.allow_external_paths = true});
   if (const auto warning = no_emitters_warning(scene)) fmt::print(stderr, "prism: warning: {}\n", *warning);

@@ -11,6 +11,7 @@ struct ViewerOptions {
   std::string scene = "cornell-box";
   bool allow_external_paths = false;
   std::string camera;              // --camera NAME|INDEX of the scene file's cameras
+  std::string material_variant;    // --variant NAME of a glTF file's material variants
   EnvironmentOverride environment; // --environment FILE|uniform (replaces the scene's)
   int window_width = 1280, window_height = 720;
   int frames = 0;                  // > 0: render this many passes, then exit (headless use)

@@ -465,6 +465,57 @@ TEST(GltfLoader, SpecularAndIorOnOpaqueMaterials) {
   }
 }
 
+// KHR_materials_variants: the variant names in the file's order, each primitive wearing
+// the material its mappings give the chosen variant (its own material otherwise), and every
+// name or index that is not there refused in one line.
+TEST(GltfLoader, MaterialVariantsPickTheMappedMaterials) {
+  const std::string top = R"("extensionsUsed": ["KHR_materials_variants"],
+    "extensions": {"KHR_materials_variants": {"variants": [{"name": "red"}, {"name": "blue"}, {"name": "plain"}]}},)";
+  const std::string materials = R"([{"name": "own"}, {"name": "red"}, {"name": "blue"}])";
+  const auto document = [&](const std::string& mappings, const std::string& variants_top) {
+    std::string d = quad_document(kDataUri + base64(quad_buffer()), variants_top, materials);
+    const std::string from = R"("material": 0})";
+    return d.replace(d.find(from), from.size(),
+                     R"("material": 0, "extensions": {"KHR_materials_variants": {"mappings": )" + mappings + "}}}");
+  };
+  const std::string mappings = R"([{"material": 1, "variants": [0]}, {"material": 2, "variants": [1]}])";
+  const auto material_of = [&](const std::string& variant) {
+    const Scene s = parse(document(mappings, top), {}, LoadOptions{.material_variant = variant});
+    EXPECT_EQ(s.material_variants, (std::vector<std::string>{"red", "blue", "plain"}));
+    for (const TriangleMesh& m : s.meshes) EXPECT_EQ(m.material, s.meshes[0].material);
+    for (const std::string& w : s.warnings) EXPECT_EQ(w.find("KHR_materials_variants"), std::string::npos) << w;
+    return s.materials[s.meshes[0].material].name;
+  };
+  EXPECT_EQ(material_of(""), "own");
+  EXPECT_EQ(material_of("red"), "red");
+  EXPECT_EQ(material_of("blue"), "blue");
+  EXPECT_EQ(material_of("plain"), "own");  // a variant no mapping lists: the primitive's own
+  const std::string unknown = test::error_of<UsageError>(
+      [&] { parse(document(mappings, top), {}, LoadOptions{.material_variant = "green"}); });
+  EXPECT_NE(unknown.find("test.gltf: no material variant 'green' (variants: red, blue, plain)"), std::string::npos)
+      << unknown;
+  for (const auto& [bad_mappings, expected] : std::initializer_list<std::pair<std::string, std::string>>{
+           {R"([{"material": 1, "variants": [3]}])", "mappings[0].variants[0]: no such variant"},
+           {R"([{"material": 1}])", "mappings[0]: needs an integer 'material' and an array 'variants'"},
+           {R"({"material": 1})", "'mappings' must be an array"},
+           {R"([{"material": 9, "variants": [0]}])", "material 9 does not exist"}}) {
+    const std::string doc = document(bad_mappings, top);
+    const std::string message =
+        test::error_of<SceneError>([&] { parse(doc, {}, LoadOptions{.material_variant = "red"}); });
+    EXPECT_NE(message.find(expected), std::string::npos) << bad_mappings << " → " << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+  const std::string unnamed = test::error_of<SceneError>([&] {
+    parse(document(mappings, R"("extensions": {"KHR_materials_variants": {"variants": [{"label": "x"}]}},)"));
+  });
+  EXPECT_NE(unnamed.find("extensions.KHR_materials_variants.variants[0]: 'name' must be a string"), std::string::npos)
+      << unnamed;
+  // A scene without variants takes no --variant, whatever its format.
+  const std::string none =
+      test::error_of<UsageError>([] { load_scene("cornell-box", LoadOptions{.material_variant = "red"}); });
+  EXPECT_NE(none.find("scene 'cornell-box' has no material variants"), std::string::npos) << none;
+}
+
 TEST(GltfLoader, BadInputIsAOneLineError) {
   const std::string good_uri = kDataUri + base64(quad_buffer());
   const std::string doc = quad_document(good_uri);

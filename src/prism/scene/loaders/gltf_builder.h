@@ -23,6 +23,8 @@ class GltfBuilder {
 
  private:
   void check_extensions();
+  void read_material_variants();
+  int variant_material(const tinygltf::Value& mappings, int material, const std::string& where) const;
   void decode_images_in_parallel();
   void build_materials();
   Material make_material(const tinygltf::Material& m, int index);
@@ -56,6 +58,7 @@ class GltfBuilder {
   std::map<std::pair<int, TextureEncoding>, DecodedImage> decoded_images_;
   std::map<int, std::vector<std::uint32_t>> meshes_;  // glTF mesh → Prism mesh per primitive
   int default_material_ = -1;
+  int selected_variant_ = -1;  // index into scene_.material_variants; -1: the default materials
   std::vector<bool> visited_;  // nodes already placed
   std::vector<std::string> warnings_;
 };

@@ -2,6 +2,7 @@
 // meshes and instancing, cameras and KHR_lights_punctual.
 #include "prism/scene/loaders/gltf_scene.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <numbers>
@@ -123,7 +124,8 @@ void GltfBuilder::check_extensions() {
       "KHR_materials_dispersion",  // on transmitting materials: a Cauchy glass of the Abbe number
       "KHR_materials_specular",  // factors (a coloured one as its mean, warned); textures warned
       "KHR_materials_clearcoat",  // clearcoatNormalTexture is warned (gltf_materials.cpp)
-      "KHR_mesh_quantization"};   // integer attributes: gltf_accessors.cpp reads every allowed type
+      "KHR_mesh_quantization",    // integer attributes: gltf_accessors.cpp reads every allowed type
+      "KHR_materials_variants"};  // LoadOptions::material_variant picks one
   const auto supported = [](const std::string& e) { return std::find(kSupported.begin(), kSupported.end(), e) != kSupported.end(); };
   std::vector<std::string> unsupported_required, unsupported_used;
   for (const auto& e : model_.extensionsRequired)
@@ -169,9 +171,12 @@ const std::vector<std::uint32_t>& GltfBuilder::mesh_primitives(int mesh_index) {
     }
     m.indices.resize(m.indices.size() - m.indices.size() % 3);
     // glTF v is down from the image's top; Prism's row 0 is the top too, so v is kept.
-    if (prim.material >= static_cast<int>(scene_.materials.size()) || prim.material < -1)
-      throw SceneError(fmt::format("{}: material {} does not exist", where, prim.material));
-    if (prim.material < 0) {
+    int material = prim.material;
+    if (const auto v = prim.extensions.find("KHR_materials_variants"); v != prim.extensions.end())
+      material = variant_material(v->second, material, where + ".extensions.KHR_materials_variants");
+    if (material >= static_cast<int>(scene_.materials.size()) || material < -1)
+      throw SceneError(fmt::format("{}: material {} does not exist", where, material));
+    if (material < 0) {
       if (default_material_ < 0) {
         Material d;
         d.name = "gltf-default";
@@ -184,7 +189,7 @@ const std::vector<std::uint32_t>& GltfBuilder::mesh_primitives(int mesh_index) {
       }
       m.material = static_cast<std::uint32_t>(default_material_);
     } else {
-      m.material = static_cast<std::uint32_t>(prim.material);
+      m.material = static_cast<std::uint32_t>(material);
     }
     const std::size_t dropped = check_and_clean_mesh(m, where);
     if (dropped) warnings_.push_back(fmt::format("glTF: {}: {} zero-area triangles dropped", where, dropped));
@@ -284,8 +289,55 @@ void GltfBuilder::add_light(int index, const Transform& to_world) {
   scene_.lights.push_back(std::move(light));
 }
 
+// KHR_materials_variants: the file's variant names ({"variants": [{"name": ...}, ...]} at
+// the top level), and the one LoadOptions::material_variant asks for.
+void GltfBuilder::read_material_variants() {
+  const auto it = model_.extensions.find("KHR_materials_variants");
+  if (it == model_.extensions.end()) return;
+  const std::string where = "extensions.KHR_materials_variants";
+  const tinygltf::Value& variants = it->second.Get("variants");
+  if (!variants.IsArray()) fail(where + ": 'variants' must be an array");
+  for (std::size_t i = 0; i < variants.ArrayLen(); ++i) {
+    const tinygltf::Value& name = variants.Get(static_cast<int>(i)).Get("name");
+    if (!name.IsString()) fail(fmt::format("{}.variants[{}]: 'name' must be a string", where, i));
+    scene_.material_variants.push_back(name.Get<std::string>());
+  }
+  const std::string& wanted = options_.material_variant;
+  if (wanted.empty()) return;
+  const auto& names = scene_.material_variants;
+  const auto found = std::find(names.begin(), names.end(), wanted);
+  if (found == names.end())
+    throw UsageError(fmt::format("{}: no material variant '{}' (variants: {})", source_, wanted, fmt::join(names, ", ")));
+  selected_variant_ = static_cast<int>(found - names.begin());
+}
+
+// A primitive's KHR_materials_variants mappings ([{"material": m, "variants": [v, ...]}]):
+// the material of the mapping that lists the selected variant, else `material` (the
+// primitive's own). Every mapping is checked, whichever variant is selected.
+int GltfBuilder::variant_material(const tinygltf::Value& extension, int material, const std::string& where) const {
+  const tinygltf::Value& mappings = extension.Get("mappings");
+  if (!mappings.IsArray()) fail(where + ": 'mappings' must be an array");
+  int chosen = material;
+  for (std::size_t i = 0; i < mappings.ArrayLen(); ++i) {
+    const tinygltf::Value& mapping = mappings.Get(static_cast<int>(i));
+    const tinygltf::Value& mapped = mapping.Get("material");
+    const tinygltf::Value& variants = mapping.Get("variants");
+    if (!mapped.IsInt() || !variants.IsArray())
+      fail(fmt::format("{}.mappings[{}]: needs an integer 'material' and an array 'variants'", where, i));
+    for (std::size_t j = 0; j < variants.ArrayLen(); ++j) {
+      const tinygltf::Value& v = variants.Get(static_cast<int>(j));
+      if (!v.IsInt() || v.GetNumberAsInt() < 0 ||
+          v.GetNumberAsInt() >= static_cast<int>(scene_.material_variants.size()))
+        fail(fmt::format("{}.mappings[{}].variants[{}]: no such variant", where, i, j));
+      if (v.GetNumberAsInt() == selected_variant_) chosen = mapped.GetNumberAsInt();
+    }
+  }
+  return chosen;
+}
+
 Scene GltfBuilder::build() {
   check_extensions();
+  read_material_variants();
   decode_images_in_parallel();
   build_materials();
   if (!model_.scenes.empty()) {

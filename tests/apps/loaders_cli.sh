@@ -18,15 +18,18 @@ expect_ok() {
   grep -q -- "$pattern" "$work/stdout" || fail "'$*': stdout lacks '$pattern': $(cat "$work/stdout")"
 }
 
-# expect_error PATTERN ARGS...: exit 1 and exactly one stderr line "prism: error: ...PATTERN".
-expect_error() {
-  local pattern="$1"; shift
+# expect_exit CODE PATTERN ARGS...: exit CODE and exactly one stderr line "prism: error: ...PATTERN".
+# expect_error is CODE 1 (bad input), expect_usage_error CODE 2 (a bad command line).
+expect_exit() {
+  local code="$1" pattern="$2"; shift 2
   timeout 60 "$prism" "$@" >"$work/stdout" 2>"$work/stderr"
   local rc=$?
-  [ "$rc" -eq 1 ] || fail "'$*': exit $rc, expected 1 (stderr: $(cat "$work/stderr"))"
+  [ "$rc" -eq "$code" ] || fail "'$*': exit $rc, expected $code (stderr: $(cat "$work/stderr"))"
   [ "$(wc -l <"$work/stderr")" -eq 1 ] || fail "'$*': stderr is not one line: $(cat "$work/stderr")"
   grep -q "^prism: error: .*$pattern" "$work/stderr" || fail "'$*': stderr '$(cat "$work/stderr")' lacks '$pattern'"
 }
+expect_error() { expect_exit 1 "$@"; }
+expect_usage_error() { expect_exit 2 "$@"; }
 
 mkdir -p "$work/scene"
 cat >"$work/scene/good.json" <<'JSON'
@@ -136,16 +139,6 @@ expect_ok "1 emissive" info "$work/scene/variants.gltf" --variant blue
 expect_ok "rendered" render "$work/scene/variants.gltf" --variant blue --spp 1 --width 8 --height 8 -o "$work/blue.exr"
 expect_ok "rendered" render "$work/scene/variants.gltf" --spp 1 --width 8 --height 8 -o "$work/plain.exr"
 cmp -s "$work/blue.exr" "$work/plain.exr" && fail "--variant blue rendered the default materials"
-# expect_usage_error PATTERN ARGS...: exit 2 (a usage error, like an unknown --camera) and one
-# stderr line "prism: error: ...PATTERN".
-expect_usage_error() {
-  local pattern="$1"; shift
-  timeout 60 "$prism" "$@" >"$work/stdout" 2>"$work/stderr"
-  local rc=$?
-  [ "$rc" -eq 2 ] || fail "'$*': exit $rc, expected 2 (stderr: $(cat "$work/stderr"))"
-  [ "$(wc -l <"$work/stderr")" -eq 1 ] || fail "'$*': stderr is not one line: $(cat "$work/stderr")"
-  grep -q "^prism: error: .*$pattern" "$work/stderr" || fail "'$*': stderr '$(cat "$work/stderr")' lacks '$pattern'"
-}
 expect_usage_error "no material variant 'green' (variants: red, blue)" render "$work/scene/variants.gltf" \
   --variant green --spp 1 -o "$work/green.exr"
 [ ! -e "$work/green.exr" ] || fail "an unknown --variant wrote an image"

@@ -25,7 +25,7 @@ constexpr double kAlphaTotal = 0.01;
 // metallic-roughness 7 × 3 = 21, rough dielectric 3 α × 5 wo × 2 halves = 30, dispersive 2,
 // smooth-dielectric lobe choice 4, coated lobes 3 bases × 2 coat roughnesses × 3 wo = 18 plus
 // a smooth coat's non-delta part 3.
-constexpr int kChiSquareTests = 4 + 45 + 21 + 30 + 2 + 4 + 18 + 3;
+constexpr int kChiSquareTests = 4 + 45 + 21 + 30 + 2 + 4 + 18 + 3 + 15;
 constexpr long kSamples = 100'000;
 
 // Draws (u_lobe, u) from the harness's 2D uniform by splitting u.x: the high bits pick the
@@ -259,6 +259,32 @@ TEST(BsdfSampling, CoatedLobesMatchPdf) {
         [&](const Vec3f& wi) { return double(smooth.pdf(wo, wi)); }, Vec3f(0, 0, 1), 1.0f, kSamples,
         ++seed, 20, 40, 8);
     EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message << " theta " << theta;
+  }
+}
+
+// Sheens (sheen.h) over diffuse and metallic-roughness bases: the mixture of the sheen's
+// uniform hemisphere and the base's lobe; then a coat over a sheen over a metal, the full
+// glTF stack. Unstretched: the sheen's samples spread over the whole hemisphere.
+TEST(BsdfSampling, SheenedLobesMatchPdf) {
+  const Bsdf<3>::Lobe bases[] = {
+      Lambertian<3>{rgb(0.3f, 0.5f, 0.7f)},
+      MetallicRoughness<3>::from_roughness(rgb(0.2f, 0.5f, 0.9f), 0.3f, 0.4f),
+  };
+  int seed = 700;
+  for (const auto& base : bases)
+    for (float r : {0.3f, 0.8f})
+      for (double theta : kThetas) {
+        Bsdf<3> b{base};
+        b.sheen = Sheen<3>::make(rgb(0.9f, 0.7f, 0.5f), r);
+        const Vec3f wo = direction_at(theta, 60.0);
+        bsdf_p_value(b, wo, Vec3f(0, 0, 1), 1.0f, 0, ++seed);
+      }
+  for (double theta : kThetas) {
+    Bsdf<3> b{MetallicRoughness<3>::from_roughness(rgb(0.8f, 0.6f, 0.3f), 1.0f, 0.5f)};
+    b.sheen = Sheen<3>::make(rgb(0.5f, 0.5f, 0.5f), 0.5f);
+    b.coat = Clearcoat::make(0.7f, 0.4f);
+    const Vec3f wo = direction_at(theta, 60.0);
+    bsdf_p_value(b, wo, Vec3f(-wo.x, -wo.y, wo.z), 0.5f, 0, ++seed);
   }
 }
 

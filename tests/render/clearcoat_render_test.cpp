@@ -19,8 +19,6 @@
 #include "prism/scene/loaders/scene_writers.h"
 #include "prism/scene/scene_summary.h"
 #include "scene/loaders/loader_test_files.h"
-#include "support/direct_light_settings.h"
-#include "support/film_statistics.h"
 #include "support/floor_under_sky.h"
 #include "support/write_and_reload.h"
 
@@ -43,13 +41,7 @@ TEST(ClearcoatRender, CoatedFloorUnderAWhiteSkyShowsItsAlbedoOnEveryEstimator) {
     const double a_c = c * (r == 0.0f ? bsdf::fresnel_dielectric(1.0f, 1.5f) : bsdf::coat_directional_albedo(1.0f, r));
     const double expected = a_c + (1.0 - a_c) * rho;
     const double table_slack = r == 0.0f ? 0.0 : 0.002 * c * (1.0 - rho);
-    for (TransportKind kind : {TransportKind::rgb, TransportKind::spectral})
-      for (LightEstimator est : {LightEstimator::mis, LightEstimator::nee_only, LightEstimator::bsdf_only}) {
-        const test::BlockEstimate e =
-            test::block_estimate(render(scene, test::direct_light_settings(kind, est, 256, 3)).film, 0, 0, 8, 8);
-        EXPECT_NEAR(e.mean.y, expected, 5.0 * std::sqrt(e.variance.y) + 5e-4 * expected + table_slack)
-            << "r " << r << " transport " << static_cast<int>(kind) << " estimator " << static_cast<int>(est);
-      }
+    test::expect_floor_radiance(scene, expected, table_slack, "r " + std::to_string(r));
   }
 }
 

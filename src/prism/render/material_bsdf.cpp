@@ -9,6 +9,7 @@ MaterialTables::MaterialTables(const std::vector<Material>& materials) {
     // The coat's albedo table (≈ 30 ms) is built here, before the render's threads start,
     // not by the first shading call that needs it.
     if (m.has_clearcoat()) bsdf::coat_directional_albedo(1.0f, m.clearcoat_roughness);
+    if (m.has_sheen()) bsdf::sheen_directional_albedo(1.0f, m.sheen_roughness);  // likewise, its table
     // F0 = ((η − 1)/(η + 1))² × the specular colour's mean, in double so that η = 1.5 gives
     // 0.04f exactly, the glTF constant.
     const double r = (double(m.ior) - 1.0) / (double(m.ior) + 1.0);
@@ -91,21 +92,22 @@ bsdf::Bsdf<Mode::kChannels> base_bsdf(const Material& m, std::uint32_t material_
 template <class Mode>
 bsdf::Bsdf<Mode::kChannels> make_bsdf(const Material& m, std::uint32_t material_index, const Spectrum<Mode>& base,
                                       const MaterialPoint& point, const Wavelengths<Mode>& w,
-                                      const MaterialTables& tables) {
+                                      const MaterialTables& tables, const Spectrum<Mode>& sheen_color) {
   auto b = base_bsdf<Mode>(m, material_index, base, point, w, tables);
-  // untextured_point() gives dielectrics no coat.
+  // untextured_point() gives dielectrics no coat and no sheen.
   if (point.clearcoat > 0.0f)
     b.coat = bsdf::Clearcoat::make(std::min(point.clearcoat, 1.0f), std::clamp(point.clearcoat_roughness, 0.0f, 1.0f));
+  if (point.has_sheen()) b.sheen = bsdf::Sheen<Mode::kChannels>::make(sheen_color, point.sheen_roughness);
   return b;
 }
 
 template bsdf::Bsdf<3> make_bsdf<SpectralMode<3>>(const Material&, std::uint32_t, const Spectrum<SpectralMode<3>>&, const MaterialPoint&,
-                                                   const Wavelengths<SpectralMode<3>>&, const MaterialTables&);
+                                                   const Wavelengths<SpectralMode<3>>&, const MaterialTables&, const Spectrum<SpectralMode<3>>&);
 template bsdf::Bsdf<4> make_bsdf<SpectralMode<4>>(const Material&, std::uint32_t, const Spectrum<SpectralMode<4>>&, const MaterialPoint&,
-                                                   const Wavelengths<SpectralMode<4>>&, const MaterialTables&);
+                                                   const Wavelengths<SpectralMode<4>>&, const MaterialTables&, const Spectrum<SpectralMode<4>>&);
 template bsdf::Bsdf<8> make_bsdf<SpectralMode<8>>(const Material&, std::uint32_t, const Spectrum<SpectralMode<8>>&, const MaterialPoint&,
-                                                   const Wavelengths<SpectralMode<8>>&, const MaterialTables&);
+                                                   const Wavelengths<SpectralMode<8>>&, const MaterialTables&, const Spectrum<SpectralMode<8>>&);
 template bsdf::Bsdf<3> make_bsdf<RgbMode>(const Material&, std::uint32_t, const Spectrum<RgbMode>&, const MaterialPoint&,
-                                          const Wavelengths<RgbMode>&, const MaterialTables&);
+                                          const Wavelengths<RgbMode>&, const MaterialTables&, const Spectrum<RgbMode>&);
 
 }  // namespace prism

@@ -43,14 +43,22 @@ struct MaterialPoint {
   float metallic = 0.0f;
   float clearcoat = 0.0f;            // the coat's weight
   float clearcoat_roughness = 0.0f;  // its perceptual roughness
+  Vec3f sheen_color{0.0f};           // the sheen's colour (linear Rec.709); black: none
+  float sheen_roughness = 0.0f;
+
+  bool has_sheen() const { return max_component(sheen_color) > 0.0f; }
 };
 inline MaterialPoint untextured_point(const Material& m) {
-  return {m.roughness, m.metallic, m.has_clearcoat() ? m.clearcoat : 0.0f, m.clearcoat_roughness};
+  return {m.roughness, m.metallic, m.has_clearcoat() ? m.clearcoat : 0.0f, m.clearcoat_roughness,
+          m.has_sheen() ? m.sheen_color : Vec3f(0.0f), m.sheen_roughness};
 }
 
+// `sheen_color` is point.sheen_color in the transport's terms (upsampled, or in the working
+// space); read only where point.has_sheen().
 template <class Mode>
 bsdf::Bsdf<Mode::kChannels> make_bsdf(const Material& material, std::uint32_t material_index,
                                       const Spectrum<Mode>& base_color, const MaterialPoint& point,
-                                      const Wavelengths<Mode>& wavelengths, const MaterialTables& tables);
+                                      const Wavelengths<Mode>& wavelengths, const MaterialTables& tables,
+                                      const Spectrum<Mode>& sheen_color = Spectrum<Mode>(0.0f));
 
 }  // namespace prism

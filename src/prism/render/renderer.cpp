@@ -113,6 +113,12 @@ void hash_scene_details(Fnv1a& h, const Scene& scene) {
       h.value(m.clearcoat_texture);
       h.value(m.clearcoat_roughness_texture);
     }
+    if (m.has_sheen()) {
+      h.value(m.sheen_color);
+      h.value(m.sheen_roughness);
+      h.value(m.sheen_color_texture);
+      h.value(m.sheen_roughness_texture);
+    }
   }
   const Light point;
   for (const Light& l : scene.lights) {

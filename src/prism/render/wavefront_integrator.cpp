@@ -206,6 +206,18 @@ MaterialPoint WavefrontIntegrator<Mode>::material_point(const Material& m, const
       if (const auto texel = texel_at_hit(m.clearcoat_roughness_texture, si, cone_width, ray))
         point.clearcoat_roughness *= (*texel)[1];
   }
+  // KHR_materials_sheen: sheenColorTexture (sRGB-encoded colour, decoded to linear)
+  // multiplies sheenColorFactor, sheenRoughnessTexture's A channel sheenRoughnessFactor.
+  if (__builtin_expect(point.has_sheen(), 0)) {
+    if (m.sheen_color_texture >= 0)
+      if (const auto texel = texel_at_hit(m.sheen_color_texture, si, cone_width, ray)) {
+        const bool colour = scene_.textures[static_cast<std::size_t>(m.sheen_color_texture)].channels >= 3;
+        point.sheen_color *= colour ? Vec3f((*texel)[0], (*texel)[1], (*texel)[2]) : Vec3f((*texel)[0]);
+      }
+    if (m.sheen_roughness_texture >= 0)
+      if (const auto texel = texel_at_hit(m.sheen_roughness_texture, si, cone_width, ray))
+        point.sheen_roughness *= (*texel)[3];
+  }
   return point;
 }
 
@@ -322,8 +334,13 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     return;
   }
 
-  const auto bsdf = make_bsdf<Mode>(material, si.material, base_color(material, si, p.cone_width[slot], ray, wl),
-                                    material_point(material, si, p.cone_width[slot], ray), wl, tables_);
+  const MaterialPoint point = material_point(material, si, p.cone_width[slot], ray);
+  // A sheen's colour is upsampled here, where the path's wavelengths are known (rare: only
+  // sheened materials pay for it).
+  const auto bsdf = make_bsdf<Mode>(material, si.material, base_color(material, si, p.cone_width[slot], ray, wl), point,
+                                    wl, tables_,
+                                    __builtin_expect(point.has_sheen(), 0) ? colors_.reflectance(point.sheen_color, wl)
+                                                                           : Spectrum<Mode>(0.0f));
   if constexpr (Mode::kSpectral) {
     // Hero wavelength after a dispersive event (Wilkie et al. 2014): from here on only
     // channel 0 carries an estimate; terminate once (pdf[1] = 0 marks it done).

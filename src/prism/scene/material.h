@@ -106,6 +106,17 @@ struct Material {
   int clearcoat_texture = -1;
   int clearcoat_roughness_texture = -1;
 
+  // Sheen (glTF KHR_materials_sheen): a velvet-like layer of fibres of colour `sheen_color`
+  // (linear Rec.709, components in [0, 1]; black: none) and roughness `sheen_roughness`
+  // ∈ [0, 1] over a diffuse, mirror, conductor or metallic_roughness base, under any clear
+  // coat (bsdf/sheen.h); dielectrics take none. sheen_color_texture (a colour, sRGB-encoded
+  // like base_color_texture) multiplies the colour, the A channel of
+  // sheen_roughness_texture (linear) the roughness.
+  Vec3f sheen_color{0.0f};
+  float sheen_roughness = 0.0f;
+  int sheen_color_texture = -1;
+  int sheen_roughness_texture = -1;
+
   AlphaMode alpha_mode = AlphaMode::opaque;
   float alpha_cutoff = 0.5f;  // for AlphaMode::mask; alpha comes from base colour texture's A
   float opacity = 1.0f;       // constant alpha (AlphaMode::blend: stochastic coverage)
@@ -114,6 +125,7 @@ struct Material {
 
   bool is_emissive() const { return emission.is_emissive(); }
   bool has_clearcoat() const { return clearcoat > 0.0f && type != MaterialType::dielectric; }
+  bool has_sheen() const { return max_component(sheen_color) > 0.0f && type != MaterialType::dielectric; }
   // Whether paths inside this material lose light on the way (render/volume_absorption.h).
   bool absorbs_inside() const {
     return type == MaterialType::dielectric && !thin_walled && std::isfinite(attenuation_distance) &&

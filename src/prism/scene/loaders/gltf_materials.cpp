@@ -251,6 +251,7 @@ Material GltfBuilder::make_material(const tinygltf::Material& src, int index) {
         "glTF: {}.extensions.KHR_materials_dispersion: ignored on a material that does not transmit", where));
   if (const tinygltf::Value* clearcoat = extension(src.extensions, "KHR_materials_clearcoat"))
     read_clearcoat(m, *clearcoat, where);
+  if (const tinygltf::Value* sheen = extension(src.extensions, "KHR_materials_sheen")) read_sheen(m, *sheen, where);
   // Occlusion is meaningless for a path tracer (the transport computes it) and is ignored.
   if (src.normalTexture.index >= 0) {
     const std::string normal_where = where + ".normalTexture";
@@ -393,6 +394,34 @@ void GltfBuilder::read_clearcoat(Material& m, const tinygltf::Value& clearcoat, 
   if (clearcoat.Has("clearcoatNormalTexture"))
     warnings_.push_back(fmt::format("glTF: {}: clearcoatNormalTexture ignored (the coat uses the base's normal)",
                                     coat_where));
+}
+
+// KHR_materials_sheen: sheenColorFactor (default black: no sheen) and sheenRoughnessFactor
+// (default 0), each in [0, 1]; sheenColorTexture is a colour (sRGB-encoded), the A channel
+// of sheenRoughnessTexture linear data. Prism puts no sheen on glass.
+void GltfBuilder::read_sheen(Material& m, const tinygltf::Value& sheen, const std::string& where) {
+  const std::string sheen_where = where + ".extensions.KHR_materials_sheen";
+  Vec3f color(0.0f);
+  if (sheen.Has("sheenColorFactor")) {
+    const auto c = number3(sheen, "sheenColorFactor");
+    if (!c) fail(fmt::format("{}: sheenColorFactor must be an array of three numbers", sheen_where));
+    if (!(min_component(*c) >= 0.0f && max_component(*c) <= 1.0f))
+      fail(fmt::format("{}: sheenColorFactor components must be in [0, 1]", sheen_where));
+    color = *c;
+  }
+  const double roughness = number(sheen, "sheenRoughnessFactor", 0.0);
+  if (!(roughness >= 0.0 && roughness <= 1.0))
+    fail(fmt::format("{}: sheenRoughnessFactor must be in [0, 1]", sheen_where));
+  if (max_component(color) == 0.0f) return;  // the extension: a black sheen disables the layer
+  if (m.type == MaterialType::dielectric) {
+    warnings_.push_back(fmt::format("glTF: {}: ignored on a transmitting material (Prism puts no sheen on glass)",
+                                    sheen_where));
+    return;
+  }
+  m.sheen_color = color;
+  m.sheen_roughness = static_cast<float>(roughness);
+  m.sheen_color_texture = extension_texture(sheen, "sheenColorTexture", TextureEncoding::srgb, sheen_where);
+  m.sheen_roughness_texture = extension_texture(sheen, "sheenRoughnessTexture", TextureEncoding::linear, sheen_where);
 }
 
 void GltfBuilder::build_materials() {

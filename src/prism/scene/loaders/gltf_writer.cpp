@@ -136,6 +136,13 @@ json material_json(const Scene& scene, const Material& m) {
     if (m.clearcoat_roughness_texture >= 0)
       coat["clearcoatRoughnessTexture"] = texture_info(scene, m.clearcoat_roughness_texture);
   }
+  if (m.has_sheen()) {
+    auto& sheen = j["extensions"]["KHR_materials_sheen"];
+    const Vec3f& c = m.sheen_color;
+    sheen = {{"sheenColorFactor", {c.x, c.y, c.z}}, {"sheenRoughnessFactor", m.sheen_roughness}};
+    if (m.sheen_color_texture >= 0) sheen["sheenColorTexture"] = texture_info(scene, m.sheen_color_texture);
+    if (m.sheen_roughness_texture >= 0) sheen["sheenRoughnessTexture"] = texture_info(scene, m.sheen_roughness_texture);
+  }
   if (m.bump_texture >= 0)
     throw UsageError(fmt::format("GLB writer: material '{}' has a bump map, which glTF 2.0 cannot hold", m.name));
   if (m.normal_texture >= 0) {
@@ -170,7 +177,7 @@ void write_scene_glb(const Scene& scene, const std::filesystem::path& path) {
   json doc = {{"asset", {{"version", "2.0"}, {"generator", "Prism"}}},
               {"extensionsUsed", {"KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior",
                                   "KHR_materials_specular", "KHR_materials_volume", "KHR_materials_clearcoat",
-                                  "KHR_materials_dispersion"}},
+                                  "KHR_materials_dispersion", "KHR_materials_sheen"}},
               {"bufferViews", json::array()}, {"accessors", json::array()}, {"meshes", json::array()},
               {"materials", json::array()}, {"nodes", json::array()}};
   for (const Material& m : scene.materials) doc["materials"].push_back(material_json(scene, m));

@@ -164,13 +164,34 @@ void JsonSceneReader::read_clearcoat(Material& m, const JsonValue& value) {
     m.clearcoat_roughness_texture = read_texture(*t, TextureEncoding::linear);
 }
 
+// A sheen (glTF KHR_materials_sheen; bsdf/sheen.h) over any material but glass.
+void JsonSceneReader::read_sheen(Material& m, const JsonValue& value) {
+  const auto color = value.find("sheen_color");
+  if (!color) {
+    for (const char* key : {"sheen_roughness", "sheen_color_texture", "sheen_roughness_texture"})
+      if (value.has(key)) value[key].fail("give 'sheen_color' (the sheen's linear Rec.709 colour) with it");
+    return;
+  }
+  if (m.type == MaterialType::dielectric)
+    color->fail("a dielectric takes no sheen (sheens go on diffuse, mirror, conductor and metallic_roughness)");
+  m.sheen_color = value.get_vec3("sheen_color", m.sheen_color);
+  if (!(min_component(m.sheen_color) >= 0.0f && max_component(m.sheen_color) <= 1.0f))
+    color->fail("sheen colour components must be in [0, 1]");
+  m.sheen_roughness = value.get_float("sheen_roughness", m.sheen_roughness, 0.0f, 1.0f);
+  // glTF's encodings: the colour texture sRGB-encoded, the roughness in A, linear.
+  if (auto t = value.find("sheen_color_texture")) m.sheen_color_texture = read_texture(*t, TextureEncoding::srgb);
+  if (auto t = value.find("sheen_roughness_texture"))
+    m.sheen_roughness_texture = read_texture(*t, TextureEncoding::linear);
+}
+
 void JsonSceneReader::read_material(const JsonValue& value) {
   value.expect_keys({"name", "type", "base_color", "base_color_spectrum", "base_color_texture", "roughness",
                      "anisotropy", "metallic", "metallic_roughness_texture", "normal_texture", "normal_scale",
                      "bump_texture", "bump_scale", "microfacet", "conductor", "ior", "dispersion", "thin_walled",
                      "transmission", "attenuation_color", "attenuation_distance", "specular", "specular_color",
                      "clearcoat", "clearcoat_roughness",
-                     "clearcoat_texture", "clearcoat_roughness_texture", "alpha_mode", "alpha_cutoff", "opacity",
+                     "clearcoat_texture", "clearcoat_roughness_texture", "sheen_color", "sheen_roughness",
+                     "sheen_color_texture", "sheen_roughness_texture", "alpha_mode", "alpha_cutoff", "opacity",
                      "emission"});
   Material m;
   m.name = value["name"].as_string();
@@ -247,6 +268,7 @@ void JsonSceneReader::read_material(const JsonValue& value) {
   m.specular_color = value.get_vec3("specular_color", m.specular_color);
   if (!(min_component(m.specular_color) >= 0.0f)) value["specular_color"].fail("colour components must not be negative");
   read_clearcoat(m, value);
+  read_sheen(m, value);
   if (auto a = value.find("alpha_mode"))
     m.alpha_mode = a->as_enum<AlphaMode>({{"opaque", AlphaMode::opaque}, {"mask", AlphaMode::mask}, {"blend", AlphaMode::blend}});
   m.alpha_cutoff = value.get_float("alpha_cutoff", m.alpha_cutoff, 0.0f, 1.0f);

@@ -152,6 +152,12 @@ void write_scene_json(const Scene& scene, const std::filesystem::path& path) {
       if (m.clearcoat_roughness_texture >= 0)
         w(", \"clearcoat_roughness_texture\": {}", json_texture(scene, files, m.clearcoat_roughness_texture));
     }
+    if (m.has_sheen()) {
+      w(", \"sheen_color\": {}, \"sheen_roughness\": {}", vec(m.sheen_color), m.sheen_roughness);
+      if (m.sheen_color_texture >= 0) w(", \"sheen_color_texture\": {}", json_texture(scene, files, m.sheen_color_texture));
+      if (m.sheen_roughness_texture >= 0)
+        w(", \"sheen_roughness_texture\": {}", json_texture(scene, files, m.sheen_roughness_texture));
+    }
     if (m.base_color_texture >= 0) w(", \"base_color_texture\": {}", json_texture(scene, files, m.base_color_texture));
     if (m.metallic_roughness_texture >= 0)
       w(", \"metallic_roughness_texture\": {}", json_texture(scene, files, m.metallic_roughness_texture));
@@ -289,6 +295,10 @@ PbrtMaterialTextures write_pbrt_textures(Writer& w, const Scene& scene, std::siz
 
 void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
   check_writable(scene);
+  // pbrt-v4 has no sheen: refused before any file is written, not dropped in silence.
+  for (const Material& m : scene.materials)
+    if (m.has_sheen())
+      throw UsageError(fmt::format("pbrt writer: material '{}' has a sheen, which pbrt-v4 cannot hold", m.name));
   const std::vector<std::string> files = write_scene_textures(scene, path);
   Writer w(path);
   const Camera& c = scene.camera;

@@ -68,7 +68,8 @@ std::vector<TextureEncoding> texture_encodings(const Scene& scene) {
   const auto colour = [&](int t) {
     if (t >= 0 && static_cast<std::size_t>(t) < encodings.size()) encodings[static_cast<std::size_t>(t)] = TextureEncoding::srgb;
   };
-  for (const Material& m : scene.materials) colour(m.base_color_texture), colour(m.emission.texture);
+  for (const Material& m : scene.materials)
+    colour(m.base_color_texture), colour(m.emission.texture), colour(m.sheen_color_texture);
   return encodings;
 }
 

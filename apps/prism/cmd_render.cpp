@@ -256,7 +256,7 @@ int run_render(const RenderOptions& o) {
   settings.width = o.width > 0 ? o.width : scene.default_width;
   settings.height = o.height > 0 ? o.height : scene.default_height;
   if (o.spp_given == false && o.sample_range.empty() && scene.default_spp > 0) settings.samples_per_pixel = scene.default_spp;
-  if (!o.max_depth_given && scene.default_max_depth > 0) settings.path.max_depth = scene.default_max_depth;
+  if (!o.max_depth_given && scene.default_max_depth) settings.path.max_depth = *scene.default_max_depth;
   if (o.normal_mapping.empty() && scene.default_normal_mapping)
     settings.path.normal_mapping = *scene.default_normal_mapping;
   // --render-scale: render a fraction of the pixels; display outputs are upscaled back.
@@ -348,7 +348,7 @@ void add_render_command(CLI::App& root, Action& action) {
                   "Output image; repeat for several. The extension picks the format: .exr (32-bit float linear "
                   "Rec.709, with chromaticities and render metadata) or .png (8-bit sRGB). Default: SCENE.exr and SCENE.png");
   cmd->add_option("--spp", options->spp, "Samples per pixel (passes of one sample each), at least 1")->capture_default_str();
-  cmd->add_option("--max-depth", options->max_depth, "Maximum number of bounces; 1 = direct light only")->capture_default_str();
+  cmd->add_option("--max-depth", options->max_depth, "Maximum number of bounces; 1 = direct light only, 0 = emitted light only (what the camera sees of lights)")->capture_default_str();
   cmd->add_option("--seed", options->seed, "Seed of the per-pixel random streams")->capture_default_str();
   cmd->add_option("--threads", options->threads, "Worker threads (default: all cores); the image does not depend on it");
   cmd->add_option("--time-limit", options->time_limit_seconds,

@@ -35,7 +35,7 @@ void add_view_command(CLI::App& root, Action& action) {
                   "Show the film every N bounces of the paths in flight, not only after whole passes (the "
                   "seed's #Bounce/Frame; 0: off). Never changes the converged image")
       ->capture_default_str();
-  cmd->add_option("--max-depth", o->max_depth, "Maximum number of bounces")->capture_default_str();
+  cmd->add_option("--max-depth", o->max_depth, "Maximum number of bounces (0: emitted light only)")->capture_default_str();
   cmd->add_option("--threads", o->threads, "Worker threads for loading, preparing and rendering (default: all cores)");
   cmd->add_option("--resolution-scale", o->resolution_scale, "Film size as a fraction of the window, 0.125..1")
       ->capture_default_str();

@@ -29,7 +29,7 @@ expect_error 2 "spp" render cornell-box --spp 0 "${o[@]}"
 expect_error 2 "spp" render cornell-box --spp -3 "${o[@]}"
 expect_error 2 "spp" render cornell-box --spp abc "${o[@]}"
 expect_error 2 "threads" render cornell-box --threads 0 "${o[@]}"
-expect_error 2 "max-depth" render cornell-box --max-depth 0 "${o[@]}"
+expect_error 2 "max-depth" render cornell-box --max-depth -1 "${o[@]}"
 expect_error 2 "unknown output extension '.jpg'" render cornell-box -o "$work/out/x.jpg"
 expect_error 1 "does not exist" render cornell-box -o "$work/out/missing-dir/x.exr"
 expect_error 1 "cannot write" render cornell-box -o /proc/prism-cannot-write-here.exr

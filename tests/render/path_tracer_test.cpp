@@ -225,6 +225,29 @@ TEST(Renderer, ProgressIsReportedEveryPass) {
   EXPECT_EQ(calls, 5);
 }
 
+// max_depth 0 (pbrt-v4's maxdepth 0): the camera sees emitters and nothing they light. In
+// the Cornell box only the pixels on the ceiling lamp get light, and the lamp's own pixels
+// are the same as with one bounce (what is scattered comes after the emission).
+TEST(PathTracer, DepthZeroIsEmittedLightOnly) {
+  const Scene scene = make_cornell_box();
+  RenderSettings s = small_settings(3, 4);
+  s.path.max_depth = 0;
+  const Film emitted = render(scene, s).film;
+  s.path.max_depth = 1;
+  const Film direct = render(scene, s).film;
+  std::size_t lit = 0, lit_direct = 0;
+  for (std::size_t i = 0; i < emitted.pixel_count(); ++i) {
+    const Vec3d e = emitted.sums()[i];
+    lit += e.y > 0.0;
+    lit_direct += direct.sums()[i].y > 0.0;
+    if (e.y > 0.0) EXPECT_LE(e.y, direct.sums()[i].y) << i;
+    EXPECT_GE(std::min({e.x, e.y, e.z}), 0.0) << i;
+  }
+  EXPECT_GT(lit, 0u);
+  EXPECT_LT(lit, emitted.pixel_count() / 20);  // the lamp is a small patch of the ceiling
+  EXPECT_GT(lit_direct, emitted.pixel_count() / 2);  // walls and floor (the ceiling faces away from the lamp)
+}
+
 TEST(Renderer, RejectsInvalidSettings) {
   const Scene scene = make_cornell_box();
   RenderSettings s = small_settings(0, 0);
@@ -233,7 +256,7 @@ TEST(Renderer, RejectsInvalidSettings) {
   s.width = 0;
   EXPECT_THROW(render(scene, s), UsageError);
   s = small_settings(0, 1);
-  s.path.max_depth = 0;
+  s.path.max_depth = -1;
   EXPECT_THROW(render(scene, s), UsageError);
 }
 

@@ -150,7 +150,8 @@ void validate_render_settings(const RenderSettings& s) {
   if (s.samples_per_pixel < 1) throw UsageError(fmt::format("--spp must be at least 1 (got {})", s.samples_per_pixel));
   if (s.first_sample < 0 || s.first_sample >= s.samples_per_pixel)
     throw UsageError(fmt::format("sample range {}:{} is empty or negative", s.first_sample, s.samples_per_pixel));
-  if (s.path.max_depth < 1) throw UsageError(fmt::format("--max-depth must be at least 1 (got {})", s.path.max_depth));
+  // 0 is pbrt-v4's maxdepth 0: emitted light seen directly, nothing scattered.
+  if (s.path.max_depth < 0) throw UsageError(fmt::format("--max-depth must be at least 0 (got {})", s.path.max_depth));
   if (s.threads < 0) throw UsageError(fmt::format("--threads must be at least 1 (got {})", s.threads));
   if (!(s.time_limit_seconds >= 0.0)) throw UsageError("--time-limit must be a non-negative number of seconds");
   if (s.bounces_per_pass < 0)

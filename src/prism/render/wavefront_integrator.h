@@ -43,7 +43,7 @@ namespace prism {
 struct SurfaceInteraction;
 
 struct PathSettings {
-  int max_depth = 8;               // scattering events; 1 = direct lighting only
+  int max_depth = 8;               // scattering events; 1 = direct lighting only, 0 = emission only
   int russian_roulette_depth = 3;  // roulette starts after this many bounces
   LightEstimator estimator = LightEstimator::mis;  // render/light_estimator.h
   // Where each path's random numbers come from. sobol is the default by measurement

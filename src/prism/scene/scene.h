@@ -63,7 +63,8 @@ struct Scene {
   int default_width = 512;
   int default_height = 512;
   int default_spp = 0;        // 0: the renderer's default (files like pbrt-v4 may set it)
-  int default_max_depth = 0;  // 0: the renderer's default
+  // Scattering events; 0: emitted light only (pbrt-v4's maxdepth 0). None: the renderer's default.
+  std::optional<int> default_max_depth;
   std::optional<NormalMapping> default_normal_mapping;  // none: the renderer's default (classic)
   // Names of the material variants the file defines (glTF KHR_materials_variants), in its
   // order; LoadOptions::material_variant picks one.

@@ -119,7 +119,7 @@ bool render_settings_panel(RenderControls& c) {
     c.settings.path.normal_mapping = static_cast<NormalMapping>(normal_mapping);
     changed = true;
   }
-  changed |= ImGui::SliderInt("max depth", &c.settings.path.max_depth, 1, 64);
+  changed |= ImGui::SliderInt("max depth", &c.settings.path.max_depth, 0, 64);  // 0: emitted light only
   // The integrator's pass is a group of whole samples per pixel; bounces per pass (the
   // seed's #Bounce/Frame) also shows the film every N bounces inside a pass (0: off).
   changed |= ImGui::SliderInt("samples per pass", &c.settings.samples_per_pass, 1, 64);
@@ -187,7 +187,7 @@ bool lights_panel(RenderControls& c) {
       ImGui::TreePop();
     }
   }
-  c.settings.path.max_depth = std::max(c.settings.path.max_depth, 1);
+  c.settings.path.max_depth = std::max(c.settings.path.max_depth, 0);
   c.settings.bounces_per_pass = std::max(c.settings.bounces_per_pass, 0);
   return changed;
 }

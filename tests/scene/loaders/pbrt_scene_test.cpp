@@ -132,6 +132,9 @@ TEST(PbrtLoader, MaterialMappings) {
   auto [copper, w2] = material_of(R"(Material "conductor")");
   EXPECT_EQ(copper.conductor_name, "Cu");
   EXPECT_FLOAT_EQ(copper.roughness, 0.0f);
+  // pbrt-v4's maxdepth 0 is emitted light only, which Prism renders as such (not depth 1).
+  EXPECT_EQ(parse("Integrator \"path\" \"integer maxdepth\" 0\nWorldBegin\n" + std::string(kTriangle)).default_max_depth, 0);
+  EXPECT_FALSE(parse_error("Integrator \"path\" \"integer maxdepth\" -1\nWorldBegin\n" + std::string(kTriangle)).empty());
   auto [glass, w3] = material_of(R"(Material "dielectric" "float eta" 1.33)");
   EXPECT_EQ(glass.type, MaterialType::dielectric);
   EXPECT_FLOAT_EQ(glass.ior, 1.33f);

@@ -20,7 +20,7 @@ void read_render_settings(Scene& scene, const JsonValue& render) {
   if (auto v = render.find("width")) scene.default_width = static_cast<int>(v->as_integer(1, 65536));
   if (auto v = render.find("height")) scene.default_height = static_cast<int>(v->as_integer(1, 65536));
   if (auto v = render.find("spp")) scene.default_spp = static_cast<int>(v->as_integer(1, 1 << 24));
-  if (auto v = render.find("max_depth")) scene.default_max_depth = static_cast<int>(v->as_integer(1, 1024));
+  if (auto v = render.find("max_depth")) scene.default_max_depth = static_cast<int>(v->as_integer(0, 1024));
   if (auto v = render.find("normal_mapping"))
     scene.default_normal_mapping = v->as_enum<NormalMapping>(
         {{normal_mapping_name(NormalMapping::classic), NormalMapping::classic},

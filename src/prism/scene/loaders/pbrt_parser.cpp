@@ -147,7 +147,7 @@ void PbrtBuilder::directive(PbrtTokenizer& tokens, const PbrtToken& name, int in
     } else {
       const int depth = p.get_int("maxdepth", 5);
       if (depth < 0 || depth > 100000) p.fail(*p.find("maxdepth"), "must be between 0 and 100000");
-      scene_.default_max_depth = std::max(depth, 1);
+      scene_.default_max_depth = depth;  // 0: what the camera sees of emitters, as in pbrt-v4
       if (type != "path" && type != "volpath") ignore(fmt::format("Integrator \"{}\" (Prism's own path tracer is used)", type), p);
     }
     note_unused(d, p);

@@ -310,7 +310,8 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
   w("\nFilm \"rgb\" \"integer xresolution\" [ {} ] \"integer yresolution\" [ {} ] \"string filename\" \"{}.exr\"\n",
     scene.default_width, scene.default_height, scene.name);
   if (scene.default_spp > 0) w("Sampler \"zsobol\" \"integer pixelsamples\" [ {} ]\n", scene.default_spp);
-  if (scene.default_max_depth > 0) w("Integrator \"volpath\" \"integer maxdepth\" [ {} ]\n", scene.default_max_depth);
+  if (scene.default_max_depth)
+    w("Integrator \"volpath\" \"integer maxdepth\" [ {} ]\n", *scene.default_max_depth);
   w("\nWorldBegin\n\n");
   for (const Light& l : scene.lights) {
     const Vec3f L = radiance_rgb(l.color, l.intensity);

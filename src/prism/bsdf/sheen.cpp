@@ -21,6 +21,16 @@ float sheen_lambda(float cos_theta, float alpha) {
                           : std::exp(2.0f * fitted_l(0.5f, alpha) - fitted_l(1.0f - cos_theta, alpha));
 }
 
+// D(h) V(wo, wi) for directions above the surface, given Λ at both.
+float charlie_sheen(const Vec3f& wo, const Vec3f& wi, float alpha, float lambda_o, float lambda_i) {
+  const Vec3f h = normalize(wo + wi);
+  const float sin2_h = std::max(0.0f, 1.0f - h.z * h.z);
+  const float inv_alpha = 1.0f / alpha;
+  const float d = (2.0f + inv_alpha) * std::pow(sin2_h, 0.5f * inv_alpha) * (0.5f * std::numbers::inv_pi_v<float>);
+  const float v = 1.0f / ((1.0f + lambda_o + lambda_i) * 4.0f * wo.z * wi.z);
+  return d * v;
+}
+
 constexpr int kGrid = 32;
 constexpr int kThetaSteps = 64;  // midpoint rule in t, cos θi = t² (dense at grazing)
 constexpr int kPhiSteps = 32;    // midpoint rule over φ ∈ [0, π]; the lobe is symmetric in φ
@@ -30,17 +40,20 @@ float roughness_at(int j) {
 }
 
 // E at one node: ∫ f cos θi dω with dω = d(cos θi) dφ = 2t dt dφ, doubled for φ ∈ [π, 2π].
+// Λ(cos θo) is the node's and Λ(cos θi) the row's: only D is evaluated per direction.
 float albedo_at_node(float cos_theta, float perceptual_roughness) {
   const float alpha = perceptual_roughness * perceptual_roughness;
   const Vec3f wo(std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta)), 0.0f, cos_theta);
+  const float lambda_o = sheen_lambda(wo.z, alpha);
   double sum = 0.0;
   for (int a = 0; a < kThetaSteps; ++a) {
     const float t = (static_cast<float>(a) + 0.5f) / kThetaSteps;
     const float cos_i = t * t, sin_i = std::sqrt(std::max(0.0f, 1.0f - cos_i * cos_i));
+    const float lambda_i = sheen_lambda(cos_i, alpha);
     for (int b = 0; b < kPhiSteps; ++b) {
       const float phi = std::numbers::pi_v<float> * (static_cast<float>(b) + 0.5f) / kPhiSteps;
       const Vec3f wi(sin_i * std::cos(phi), sin_i * std::sin(phi), cos_i);
-      sum += double(charlie_sheen_brdf(wo, wi, alpha)) * cos_i * 2.0 * t;
+      sum += double(charlie_sheen(wo, wi, alpha, lambda_o, lambda_i)) * cos_i * 2.0 * t;
     }
   }
   return static_cast<float>(sum * 2.0 * (1.0 / kThetaSteps) * (std::numbers::pi / kPhiSteps));
@@ -62,12 +75,7 @@ struct AlbedoTable {
 
 float charlie_sheen_brdf(const Vec3f& wo, const Vec3f& wi, float alpha) {
   if (!(wo.z > 0.0f && wi.z > 0.0f)) return 0.0f;
-  const Vec3f h = normalize(wo + wi);
-  const float sin2_h = std::max(0.0f, 1.0f - h.z * h.z);
-  const float inv_alpha = 1.0f / alpha;
-  const float d = (2.0f + inv_alpha) * std::pow(sin2_h, 0.5f * inv_alpha) * (0.5f * std::numbers::inv_pi_v<float>);
-  const float v = 1.0f / ((1.0f + sheen_lambda(wo.z, alpha) + sheen_lambda(wi.z, alpha)) * 4.0f * wo.z * wi.z);
-  return d * v;
+  return charlie_sheen(wo, wi, alpha, sheen_lambda(wo.z, alpha), sheen_lambda(wi.z, alpha));
 }
 
 float sheen_directional_albedo(float cos_theta, float perceptual_roughness) {

@@ -134,6 +134,24 @@ TEST(Sheen, SamplesCarryEvalAndPdf) {
     }
 }
 
+// Sheen::at_wo keeps E and Λ of the last wo: a BSDF asked about one wo and then another
+// answers as a fresh one does, bit for bit (eval, pdf, albedo, and on the lower side).
+TEST(Sheen, WhatItKeepsOfWoFollowsWo) {
+  Bsdf<3> b{Lambertian<3>{rgb(0.3f, 0.5f, 0.7f)}};
+  b.sheen = Sheen<3>::make(rgb(0.8f, 0.6f, 0.2f), 0.35f);
+  const Bsdf<3> pristine = b;
+  const Vec3f wi = direction_at(70, 150);
+  for (const Vec3f& wo : {direction_at(20, 10), direction_at(85, 40), direction_at(50, 300), -direction_at(60, 90)}) {
+    const Bsdf<3> fresh = pristine;
+    const Vec3f w = wo.z < 0.0f ? -wi : wi;
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_EQ(b.eval(wo, w)[c], fresh.eval(wo, w)[c]) << wo.z;
+      EXPECT_EQ(b.sheen.albedo(wo)[c], Bsdf<3>(pristine).sheen.albedo(wo)[c]) << wo.z;
+    }
+    EXPECT_EQ(b.pdf(wo, w), Bsdf<3>(pristine).pdf(wo, w)) << wo.z;
+  }
+}
+
 // A black sheen is no sheen: the BSDF is the lobe's, bit for bit, and a mirror stays a delta.
 TEST(Sheen, BlackSheenIsNone) {
   Bsdf<3> plain{Lambertian<3>{rgb(0.2f, 0.4f, 0.6f)}}, black = plain;

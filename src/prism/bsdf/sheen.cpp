@@ -15,22 +15,6 @@ float fitted_l(float x, float alpha) {
   return a / (1.0f + b * std::pow(x, c)) + d * x + e;
 }
 
-// Λ(cos θ), the paper's §3 extension of the fit past cos θ = 0.5 (symmetric in ln Λ).
-float sheen_lambda(float cos_theta, float alpha) {
-  return cos_theta < 0.5f ? std::exp(fitted_l(cos_theta, alpha))
-                          : std::exp(2.0f * fitted_l(0.5f, alpha) - fitted_l(1.0f - cos_theta, alpha));
-}
-
-// D(h) V(wo, wi) for directions above the surface, given Λ at both.
-float charlie_sheen(const Vec3f& wo, const Vec3f& wi, float alpha, float lambda_o, float lambda_i) {
-  const Vec3f h = normalize(wo + wi);
-  const float sin2_h = std::max(0.0f, 1.0f - h.z * h.z);
-  const float inv_alpha = 1.0f / alpha;
-  const float d = (2.0f + inv_alpha) * std::pow(sin2_h, 0.5f * inv_alpha) * (0.5f * std::numbers::inv_pi_v<float>);
-  const float v = 1.0f / ((1.0f + lambda_o + lambda_i) * 4.0f * wo.z * wi.z);
-  return d * v;
-}
-
 constexpr int kGrid = 32;
 constexpr int kThetaSteps = 64;  // midpoint rule in t, cos θi = t² (dense at grazing)
 constexpr int kPhiSteps = 32;    // midpoint rule over φ ∈ [0, π]; the lobe is symmetric in φ
@@ -72,6 +56,22 @@ struct AlbedoTable {
 };
 
 }  // namespace
+
+// Λ(cos θ), the paper's §3 extension of the fit past cos θ = 0.5 (symmetric in ln Λ).
+float sheen_lambda(float cos_theta, float alpha) {
+  return cos_theta < 0.5f ? std::exp(fitted_l(cos_theta, alpha))
+                          : std::exp(2.0f * fitted_l(0.5f, alpha) - fitted_l(1.0f - cos_theta, alpha));
+}
+
+// D(h) V(wo, wi) for directions above the surface, given Λ at both.
+float charlie_sheen(const Vec3f& wo, const Vec3f& wi, float alpha, float lambda_o, float lambda_i) {
+  const Vec3f h = normalize(wo + wi);
+  const float sin2_h = std::max(0.0f, 1.0f - h.z * h.z);
+  const float inv_alpha = 1.0f / alpha;
+  const float d = (2.0f + inv_alpha) * std::pow(sin2_h, 0.5f * inv_alpha) * (0.5f * std::numbers::inv_pi_v<float>);
+  const float v = 1.0f / ((1.0f + lambda_o + lambda_i) * 4.0f * wo.z * wi.z);
+  return d * v;
+}
 
 float charlie_sheen_brdf(const Vec3f& wo, const Vec3f& wi, float alpha) {
   if (!(wo.z > 0.0f && wi.z > 0.0f)) return 0.0f;

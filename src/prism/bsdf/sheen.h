@@ -35,6 +35,10 @@ inline constexpr float kMinSheenPerceptualRoughness = 0.1f;
 
 // f_sheen / c for directions in the upper hemisphere (cos θ > 0 both), α = r².
 float charlie_sheen_brdf(const Vec3f& wo, const Vec3f& wi, float alpha);
+// Its parts: Λ(cos θ) of the fitted visibility (cos θ > 0), and D(h) V(wo, wi) given Λ at
+// both directions (both above the surface).
+float sheen_lambda(float cos_theta, float alpha);
+float charlie_sheen(const Vec3f& wo, const Vec3f& wi, float alpha, float lambda_o, float lambda_i);
 // E(μ, r) = ∫ charlie_sheen_brdf cos θi dωi over the upper hemisphere, from a direction with
 // |cos θ| = cos_theta, r ∈ [kMinSheenPerceptualRoughness, 1] (clamped): tabulated on first
 // use on a 32 × 32 grid (nodes at μ = (i/31)², dense at grazing where E changes fastest)
@@ -62,19 +66,35 @@ struct Sheen {
   // c Ê(|cos θo|) per channel: what the sheen reflects of light from wo; the base under it
   // gets 1 − c Ê.
   color::SampledSpectrum<N> albedo(const Vec3f& wo) const {
-    return color * std::min(sheen_directional_albedo(abs_cos_theta(wo), perceptual_roughness), 1.0f);
+    return color * std::min(at_wo(abs_cos_theta(wo)).albedo, 1.0f);
   }
   // f_sheen (cosine not included); 0 on opposite sides or at the horizon.
   color::SampledSpectrum<N> eval(const Vec3f& wo, const Vec3f& wi) const {
     if (!same_hemisphere(wo, wi)) return color::SampledSpectrum<N>(0.0f);
     const Vec3f o = wo.z < 0.0f ? flip_z(wo) : wo, i = wo.z < 0.0f ? flip_z(wi) : wi;
-    const float normalisation = std::max(sheen_directional_albedo(o.z, perceptual_roughness), 1.0f);
-    return color * (charlie_sheen_brdf(o, i, alpha) / normalisation);
+    const AtWo& w = at_wo(o.z);
+    const float normalisation = std::max(w.albedo, 1.0f);
+    return color * (charlie_sheen(o, i, alpha, w.lambda_o, sheen_lambda(i.z, alpha)) / normalisation);
   }
   // Uniform over wo's hemisphere: 1/2π there.
   float pdf(const Vec3f& wo, const Vec3f& wi) const {
     return same_hemisphere(wo, wi) ? 0.5f * std::numbers::inv_pi_v<float> : 0.0f;
   }
+  // What depends on wo alone, E(|cos θo|) and Λ(|cos θo|), kept for the vertex's next call:
+  // a shading vertex asks for the albedo, f and pdf several times with one wo (sampling,
+  // NEE, MIS). A BSDF is one vertex's, on one thread; a copy carries the cache along.
+  struct AtWo {
+    float cos_o = -1.0f;  // none yet
+    float albedo = 0.0f;
+    float lambda_o = 0.0f;
+  };
+  mutable AtWo at_wo_;
+  const AtWo& at_wo(float cos_o) const {
+    if (cos_o != at_wo_.cos_o)
+      at_wo_ = {cos_o, sheen_directional_albedo(cos_o, perceptual_roughness), sheen_lambda(cos_o, alpha)};
+    return at_wo_;
+  }
+
   std::optional<Vec3f> sample_direction(const Vec3f& wo, Vec2f u) const {
     if (wo.z == 0.0f) return std::nullopt;
     const float z = std::max(u.x, 1e-7f);  // cos θ uniform in (0, 1]: uniform solid angle

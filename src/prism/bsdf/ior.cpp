@@ -21,6 +21,12 @@ ConductorIor from_table(const color::data::Table& t) {
   return {color::PiecewiseLinearSpectrum(nm, std::move(n)), color::PiecewiseLinearSpectrum(nm, std::move(k))};
 }
 
+// 1/λ² in µm⁻², λ in nm: the variable in which Cauchy's equation is a line.
+double inverse_square_um(double wavelength_nm) {
+  const double um = wavelength_nm * 1e-3;
+  return 1.0 / (um * um);
+}
+
 }  // namespace
 
 ConductorIor conductor_ior(std::string_view name) {
@@ -37,29 +43,27 @@ double CauchyIor::operator()(double wavelength_nm) const {
 }
 
 CauchyIor CauchyIor::from_abbe_number(double n_d, double abbe_number) {
-  const auto inverse_square_um = [](double nm) { return 1.0 / (nm * 1e-3 * nm * 1e-3); };
   const double b = (n_d - 1.0) / (abbe_number * (inverse_square_um(kFraunhoferF_nm) - inverse_square_um(kFraunhoferC_nm)));
   return {n_d - b * inverse_square_um(kFraunhoferD_nm), b};
 }
 
 CauchyFit fit_cauchy(std::span<const double> wavelength_nm, std::span<const double> n) {
-  const auto x_of = [](double nm) { return 1.0 / (nm * 1e-3 * nm * 1e-3); };
   const double count = static_cast<double>(n.size());
   double mean_x = 0.0, mean_n = 0.0;
   for (std::size_t i = 0; i < n.size(); ++i) {
-    mean_x += x_of(wavelength_nm[i]) / count;
+    mean_x += inverse_square_um(wavelength_nm[i]) / count;
     mean_n += n[i] / count;
   }
   double sxx = 0.0, sxn = 0.0;
   for (std::size_t i = 0; i < n.size(); ++i) {
-    const double dx = x_of(wavelength_nm[i]) - mean_x;
+    const double dx = inverse_square_um(wavelength_nm[i]) - mean_x;
     sxx += dx * dx;
     sxn += dx * (n[i] - mean_n);
   }
   const double b = sxx > 0.0 ? sxn / sxx : 0.0;
   CauchyFit fit{{mean_n - b * mean_x, b}, 0.0};
   for (std::size_t i = 0; i < n.size(); ++i)
-    fit.max_residual = std::max(fit.max_residual, std::abs(n[i] - (fit.ior.a + b * x_of(wavelength_nm[i]))));
+    fit.max_residual = std::max(fit.max_residual, std::abs(n[i] - (fit.ior.a + b * inverse_square_um(wavelength_nm[i]))));
   return fit;
 }
 

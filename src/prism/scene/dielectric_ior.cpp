@@ -2,8 +2,6 @@
 
 #include <limits>
 
-#include "prism/bsdf/ior.h"
-
 namespace prism {
 
 double dielectric_ior(const Material& m, double wavelength_nm) {
@@ -21,6 +19,11 @@ double dielectric_ior(const Material& m, double wavelength_nm) {
     case DispersionModel::none: break;
   }
   return m.ior;
+}
+
+void set_cauchy_dispersion(Material& m, const bsdf::CauchyIor& glass) {
+  m.dispersion = DispersionModel::cauchy;
+  m.dispersion_coefficients = {static_cast<float>(glass.a), static_cast<float>(glass.b_um2), 0, 0, 0, 0};
 }
 
 double dielectric_abbe_number(const Material& m) {

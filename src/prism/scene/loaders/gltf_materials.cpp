@@ -8,9 +8,9 @@
 
 #include <fmt/format.h>
 
-#include "prism/bsdf/ior.h"
 #include "prism/core/error.h"
 #include "prism/core/parallel.h"
+#include "prism/scene/dielectric_ior.h"
 #include "prism/scene/emission.h"
 #include "prism/scene/loaders/gltf_builder.h"
 #include "prism/scene/loaders/path_safety.h"
@@ -317,9 +317,7 @@ void GltfBuilder::read_dispersion(Material& m, const tinygltf::Value& dispersion
   if (!(strength >= 0.0) || !std::isfinite(strength))
     fail(fmt::format("{}.extensions.KHR_materials_dispersion: dispersion must be finite and ≥ 0", where));
   if (strength == 0.0 || m.ior == 1.0f) return;
-  const bsdf::CauchyIor cauchy = bsdf::CauchyIor::from_abbe_number(m.ior, 20.0 / strength);
-  m.dispersion = DispersionModel::cauchy;
-  m.dispersion_coefficients = {static_cast<float>(cauchy.a), static_cast<float>(cauchy.b_um2), 0, 0, 0, 0};
+  set_cauchy_dispersion(m, bsdf::CauchyIor::from_abbe_number(m.ior, 20.0 / strength));
 }
 
 // KHR_materials_specular: the dielectric specular layer's weight (specularFactor, default 1)

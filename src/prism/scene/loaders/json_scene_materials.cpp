@@ -4,7 +4,7 @@
 
 #include <fmt/format.h>
 
-#include "prism/bsdf/ior.h"
+#include "prism/scene/dielectric_ior.h"
 #include "prism/scene/emission.h"
 #include "prism/scene/loaders/json_scene_reader.h"
 #include "prism/scene/loaders/path_safety.h"
@@ -51,9 +51,7 @@ void read_dispersion(Material& m, const JsonValue& value) {
     value.expect_keys({"n_d", "abbe_number"});
     const float n_d = value["n_d"].as_float(1.0f, 10.0f);
     const float abbe_number = value["abbe_number"].as_float(1.0f, 1e6f);
-    const bsdf::CauchyIor cauchy = bsdf::CauchyIor::from_abbe_number(n_d, abbe_number);
-    m.dispersion = DispersionModel::cauchy;
-    m.dispersion_coefficients = {static_cast<float>(cauchy.a), static_cast<float>(cauchy.b_um2), 0, 0, 0, 0};
+    set_cauchy_dispersion(m, bsdf::CauchyIor::from_abbe_number(n_d, abbe_number));
     m.ior = n_d;
     return;
   }

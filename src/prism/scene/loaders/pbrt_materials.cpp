@@ -8,6 +8,7 @@
 
 #include "prism/bsdf/ior.h"
 #include "prism/core/error.h"
+#include "prism/scene/dielectric_ior.h"
 #include "prism/scene/loaders/pbrt_builder.h"
 #include "prism/scene/spectral_inputs.h"
 
@@ -85,10 +86,7 @@ std::optional<std::string> read_sampled_eta(Material& m, const PbrtParams& p, co
   }
   const bsdf::CauchyFit fit = bsdf::fit_cauchy(nm, n);
   m.ior = static_cast<float>(fit.ior(bsdf::kFraunhoferD_nm));
-  if (fit.ior.b_um2 != 0.0) {
-    m.dispersion = DispersionModel::cauchy;
-    m.dispersion_coefficients = {static_cast<float>(fit.ior.a), static_cast<float>(fit.ior.b_um2), 0, 0, 0, 0};
-  }
+  if (fit.ior.b_um2 != 0.0) set_cauchy_dispersion(m, fit.ior);
   constexpr double kIndexTolerance = 1e-3;
   if (fit.max_residual <= kIndexTolerance) return std::nullopt;
   return fmt::format("dielectric (line {}) sampled eta as the Cauchy glass closest to it (index off by up to {:.4f})",

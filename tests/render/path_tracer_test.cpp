@@ -240,7 +240,9 @@ TEST(PathTracer, DepthZeroIsEmittedLightOnly) {
     const Vec3d e = emitted.sums()[i];
     lit += e.y > 0.0;
     lit_direct += direct.sums()[i].y > 0.0;
-    if (e.y > 0.0) EXPECT_LE(e.y, direct.sums()[i].y) << i;
+    if (e.y > 0.0) {
+      EXPECT_LE(e.y, direct.sums()[i].y) << i;
+    }
     EXPECT_GE(std::min({e.x, e.y, e.z}), 0.0) << i;
   }
   EXPECT_GT(lit, 0u);

@@ -84,16 +84,19 @@ struct Bsdf {
 
   // Probability that a coated sample() draws from the coat, given the coat's albedo at wo.
   float coat_probability(const Vec3f& wo, float a_coat) const {
-    // The floor keeps the base sampled at least now and then even where the estimate says
-    // it reflects nothing at this wo (a black metal at normal incidence still reflects at
-    // other angles): a lobe gets probability 0 only if its f is identically 0.
-    const float a_base = std::max(0.02f, base_albedo_estimate(wo));
-    return a_coat / (a_coat + (1.0f - a_coat) * a_base);
+    return top_layer_probability(a_coat, base_albedo_estimate(wo));
   }
   // Probability that a sheened sample draws from the sheen, given its mean albedo at wo.
   float sheen_probability(const Vec3f& wo, float a_sheen) const {
-    const float a_lobe = std::max(0.02f, lobe_albedo_estimate(wo));  // the floor as in coat_probability
-    return a_sheen / (a_sheen + (1.0f - a_sheen) * a_lobe);
+    return top_layer_probability(a_sheen, lobe_albedo_estimate(wo));
+  }
+  // A layer of albedo a_top over what lies below, whose albedo is estimated as a_below: the
+  // top is chosen in proportion to what it reflects, a_top : (1 − a_top) a_below. The floor
+  // keeps what lies below sampled now and then even where the estimate says it reflects
+  // nothing at this wo (a black metal at normal incidence still reflects at other angles):
+  // a layer gets probability 0 only if its f is identically 0.
+  static float top_layer_probability(float a_top, float a_below) {
+    return a_top / (a_top + (1.0f - a_top) * std::max(0.02f, a_below));
   }
 
  private:

@@ -122,10 +122,8 @@ std::optional<Vec3f> WavefrontIntegrator<Mode>::textured_base_color(const Materi
                                                                    float cone_width, const Ray& ray) const {
   const auto texel = texel_at_hit(m.base_color_texture, si, cone_width, ray);
   if (!texel) return std::nullopt;
-  // Grey and two-channel textures carry luminance in their first channel.
-  const bool colour = scene_.textures[static_cast<std::size_t>(m.base_color_texture)].channels >= 3;
-  const Vec3f rgb = colour ? Vec3f((*texel)[0], (*texel)[1], (*texel)[2]) : Vec3f((*texel)[0]);
-  return rgb * m.base_color;
+  // Grey and two-channel textures come expanded to (g, g, g) (texture_sampling.h).
+  return Vec3f((*texel)[0], (*texel)[1], (*texel)[2]) * m.base_color;
 }
 
 template <class Mode>
@@ -210,10 +208,8 @@ MaterialPoint WavefrontIntegrator<Mode>::material_point(const Material& m, const
   // multiplies sheenColorFactor, sheenRoughnessTexture's A channel sheenRoughnessFactor.
   if (__builtin_expect(point.has_sheen(), 0)) {
     if (m.sheen_color_texture >= 0)
-      if (const auto texel = texel_at_hit(m.sheen_color_texture, si, cone_width, ray)) {
-        const bool colour = scene_.textures[static_cast<std::size_t>(m.sheen_color_texture)].channels >= 3;
-        point.sheen_color *= colour ? Vec3f((*texel)[0], (*texel)[1], (*texel)[2]) : Vec3f((*texel)[0]);
-      }
+      if (const auto texel = texel_at_hit(m.sheen_color_texture, si, cone_width, ray))
+        point.sheen_color *= Vec3f((*texel)[0], (*texel)[1], (*texel)[2]);  // greys come expanded
     if (m.sheen_roughness_texture >= 0)
       if (const auto texel = texel_at_hit(m.sheen_roughness_texture, si, cone_width, ray))
         point.sheen_roughness *= (*texel)[3];

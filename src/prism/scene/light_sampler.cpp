@@ -66,7 +66,7 @@ struct TexelEmissionWeight {
   double operator()(Vec2f uv) const {
     if (!(y_colour > 0.0)) return 0.0;
     const TexelRgba t = sample_bilinear(texture, apply_uv_transform(texture, uv));
-    return of_rgb(texture.channels >= 3 ? Vec3f(t[0], t[1], t[2]) : Vec3f(t[0]));
+    return of_rgb(Vec3f(t[0], t[1], t[2]));  // greys come expanded to (g, g, g) (texture_sampling.h)
   }
   // Of texel (x, y) itself.
   double at_texel(int x, int y) const { return y_colour > 0.0 ? of_rgb(texel_rgb(texture, x, y)) : 0.0; }

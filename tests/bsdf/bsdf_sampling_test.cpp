@@ -127,6 +127,14 @@ TEST(BsdfSampling, MetallicRoughnessMatchesPdf) {
         bsdf_p_value(Bsdf<3>{m}, wo, Vec3f(-wo.x, -wo.y, wo.z), s, 0, ++seed);
       }
     }
+  // A tinted F0 (KHR_materials_specular's colour): the lobe probabilities come from its mean,
+  // the diffuse weight from its largest component.
+  const auto tinted = MetallicRoughness<3>::from_roughness(rgb(0.2f, 0.5f, 0.9f), 0.2f, 0.5f,
+                                                           rgb(0.3f, 0.05f, 0.0f), 0.3f, 0.7f);
+  for (double theta : kThetas) {
+    const Vec3f wo = direction_at(theta, 120.0);
+    bsdf_p_value(Bsdf<3>{tinted}, wo, Vec3f(-wo.x, -wo.y, wo.z), 0.5f, 0, ++seed);
+  }
 }
 
 // Rough dielectric (η = 1.5, GGX VNDF): each wo is tested twice, once on the reflection

@@ -69,5 +69,34 @@ TEST(SpecularLayer, WhiteFurnaceWithWeightZeroIsOne) {
   }
 }
 
+// A tinted F0 (KHR_materials_specular's specularColorFactor) colours the specular lobe per
+// channel, F_c = F0_c + (1 − F0_c)(1 − wi·h)⁵, and dims the diffuse base by
+// 1 − s F(max F0) in every channel (the extension's fresnel_mix); a grey one is the
+// scalar constructor's BSDF bit for bit.
+TEST(SpecularLayer, TintedF0ColoursTheLobeAndDimsTheBaseByItsLargestComponent) {
+  const S3 c = rgb(0.6f, 0.3f, 0.1f), f0 = rgb(0.3f, 0.05f, 0.0f);
+  const float weight = 0.7f, metallic = 0.2f;
+  const auto tinted = MetallicRoughness<3>::from_roughness(c, metallic, 0.4f, f0, 0.3f, weight);
+  const auto grey_scalar = MetallicRoughness<3>::from_roughness(c, metallic, 0.4f, 0.12f, weight);
+  const auto grey_spectrum = MetallicRoughness<3>::from_roughness(c, metallic, 0.4f, S3(0.12f), 0.12f, weight);
+  const auto lobe_only = MetallicRoughness<3>::from_roughness(S3(0.0f), 0.0f, 0.4f, 1.0f, 1.0f);  // F ≡ 1
+  Pcg32 rng(3, 4);
+  for (int k = 0; k < 200; ++k) {
+    const Vec3f wo = sample_cosine_hemisphere(Vec2f(rng.next_float(), rng.next_float()));
+    const Vec3f wi = sample_cosine_hemisphere(Vec2f(rng.next_float(), rng.next_float()));
+    const float i_h = dot(wi, normalize(wo + wi));
+    const float lobe = lobe_only.eval(wo, wi)[0];  // D G2 / (4 cos θo cos θi)
+    const float diffuse = (1.0f - metallic) * (1.0f - weight * fresnel_schlick(0.3f, i_h)) / std::numbers::pi_v<float>;
+    const S3 f = tinted.eval(wo, wi);
+    for (int i = 0; i < 3; ++i) {
+      const float specular = metallic * fresnel_schlick(c[i], i_h) + (1.0f - metallic) * weight * fresnel_schlick(f0[i], i_h);
+      // float rounding of the two sums (a few ulps of values ≤ 1)
+      EXPECT_NEAR(f[i], c[i] * diffuse + specular * lobe, 1e-5f * (1.0f + f[i])) << i;
+      EXPECT_EQ(grey_scalar.eval(wo, wi)[i], grey_spectrum.eval(wo, wi)[i]);
+    }
+    EXPECT_EQ(grey_scalar.pdf(wo, wi), grey_spectrum.pdf(wo, wi));
+  }
+}
+
 }  // namespace
 }  // namespace prism::bsdf

@@ -144,6 +144,25 @@ TEST(MaterialTextures, MetallicRoughnessTextureGivesEachHalfItsConstantsImage) {
   expect_halves_match_constants(scene_of, textured, metal, dielectric, 1, "mr-tex");
 }
 
+// The textured floor under a sun 70° from the zenith (low, so that sheens and specular
+// layers show), with two 16×1 clamped textures of two halves each: texture 0 the colours
+// `left` | `right`, texture 1 RGBA texels of alpha `left_alpha` | `right_alpha` (and RGB 0).
+Scene floor_with_colour_and_alpha_halves(const Material& m, const Vec3f& left, const Vec3f& right, float left_alpha,
+                                         float right_alpha) {
+  TextureImage alpha;
+  alpha.name = "alpha-halves";
+  alpha.width = 16;
+  alpha.height = 1;
+  alpha.channels = 4;
+  for (int i = 0; i < 16; ++i) alpha.texels.insert(alpha.texels.end(), {0.0f, 0.0f, 0.0f, i < 8 ? left_alpha : right_alpha});
+  alpha.wrap_u = alpha.wrap_v = TextureWrap::clamp;
+  Scene s = textured_floor(m);
+  s.lights.push_back(sun_from_zenith(1.2217f));
+  s.textures.push_back(two_halves(left, right));
+  s.textures.push_back(alpha);
+  return s;
+}
+
 // KHR_materials_sheen's textures: sheenColorTexture's RGB multiplies the sheen colour, the
 // A channel of sheenRoughnessTexture its roughness. Left texels: colour (1, 0.5, 0.2), A =
 // 0.5; right: grey 0.2, A = 1; factors white and 0.8. Each half must equal a render of the
@@ -158,20 +177,8 @@ TEST(MaterialTextures, SheenTexturesGiveEachHalfItsConstantsImage) {
   textured.sheen_roughness = 0.8f;
   textured.sheen_color_texture = 0;
   textured.sheen_roughness_texture = 1;
-  TextureImage roughness;
-  roughness.name = "sheen-roughness";
-  roughness.width = 16;
-  roughness.height = 1;
-  roughness.channels = 4;
-  for (int i = 0; i < 16; ++i) roughness.texels.insert(roughness.texels.end(), {0.0f, 0.0f, 0.0f, i < 8 ? 0.5f : 1.0f});
-  roughness.wrap_u = roughness.wrap_v = TextureWrap::clamp;
-  const Light sun = sun_from_zenith(1.2217f);
   const auto scene_of = [&](const Material& m) {
-    Scene s = textured_floor(m);
-    s.lights.push_back(sun);
-    s.textures.push_back(two_halves(Vec3f(1.0f, 0.5f, 0.2f), Vec3f(0.2f)));
-    s.textures.push_back(roughness);
-    return s;
+    return floor_with_colour_and_alpha_halves(m, Vec3f(1.0f, 0.5f, 0.2f), Vec3f(0.2f), 0.5f, 1.0f);
   };
   Material left = textured, right = textured;
   left.sheen_color_texture = right.sheen_color_texture = -1;
@@ -180,6 +187,34 @@ TEST(MaterialTextures, SheenTexturesGiveEachHalfItsConstantsImage) {
   left.sheen_roughness = 0.4f;
   right.sheen_color = Vec3f(0.2f);
   expect_halves_match_constants(scene_of, textured, left, right, 0, "sheen-tex");
+}
+
+// KHR_materials_specular's textures: specularColorTexture's RGB multiplies the specular
+// colour, the A channel of specularTexture the layer's weight. Left texels: colour
+// (1, 0.3, 0.1), A = 0.5; right: grey 0.6, A = 1; factors 0.9 and colour white, on a dark
+// metallic_roughness floor of IOR 2 (F0 1/9 × colour). Each half must equal a render of its
+// constants, with the same seed (float rounding only, 1e-4 relative), and the halves must
+// differ by over 10 %. A sun 70° from the zenith; direct light only.
+TEST(MaterialTextures, SpecularTexturesGiveEachHalfItsConstantsImage) {
+  Material textured;
+  textured.type = MaterialType::metallic_roughness;
+  textured.base_color = Vec3f(0.05f);
+  textured.metallic = 0.0f;
+  textured.roughness = 0.5f;
+  textured.ior = 2.0f;
+  textured.specular = 0.9f;
+  textured.specular_color_texture = 0;
+  textured.specular_texture = 1;
+  const auto scene_of = [&](const Material& m) {
+    return floor_with_colour_and_alpha_halves(m, Vec3f(1.0f, 0.3f, 0.1f), Vec3f(0.6f), 0.5f, 1.0f);
+  };
+  Material left = textured, right = textured;
+  left.specular_color_texture = right.specular_color_texture = -1;
+  left.specular_texture = right.specular_texture = -1;
+  left.specular_color = Vec3f(1.0f, 0.3f, 0.1f);
+  left.specular = 0.45f;
+  right.specular_color = Vec3f(0.6f);
+  expect_halves_match_constants(scene_of, textured, left, right, 0, "specular-tex");
 }
 
 // A quad emitter with an emission texture, facing the camera: glTF's emissive factor c,

@@ -38,6 +38,27 @@ TEST(SpecularLayerRender, BlackDielectricShowsItsWeightedF0) {
   }
 }
 
+// A tinted specular colour reflects per channel: with colour (0.2, 1, 0.4) and η = 2 the
+// same floor reflects F0 = (0.2, 1, 0.4)/9, i.e. what a Lambertian floor of that colour
+// reflects under the sky, channel by channel of the film, in both transports (spectral:
+// the F0 colour is upsampled as the base colour is). Its mean grey would give 0.0593 in
+// every channel. The bound: 5σ of both films' noise plus, as above, 2e-3 for the lobe.
+TEST(SpecularLayerRender, TintedSpecularColourReflectsPerChannel) {
+  const Scene tinted = floor_under_white_sky(R"({"name": "floor", "type": "metallic_roughness", "base_color": [0, 0, 0],
+      "roughness": 0.1, "ior": 2, "specular_color": [0.2, 1, 0.4]})");
+  const Scene lambert = floor_under_white_sky(R"({"name": "floor", "type": "diffuse",
+      "base_color": [0.022222222, 0.111111111, 0.044444444]})");
+  for (TransportKind kind : {TransportKind::rgb, TransportKind::spectral}) {
+    const auto settings = test::direct_light_settings(kind, LightEstimator::mis, 64, 5);
+    const test::BlockEstimate t = test::block_estimate(render(tinted, settings).film, 0, 0, 8, 8);
+    const test::BlockEstimate l = test::block_estimate(render(lambert, settings).film, 0, 0, 8, 8);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(t.mean[c], l.mean[c], 5.0 * std::sqrt(t.variance[c] + l.variance[c]) + 2e-3)
+          << static_cast<int>(kind) << " channel " << c;
+    if (kind == TransportKind::rgb) EXPECT_NEAR(l.mean.y, 1.0 / 9.0, 1e-4);  // the working space's G
+  }
+}
+
 TEST(SpecularLayerRender, JsonKeysAreForMetallicRoughnessOnly) {
   const auto error = [](const std::string& material) {
     return test::error_of<SceneError>([&] { floor_under_white_sky(material); });
@@ -50,11 +71,31 @@ TEST(SpecularLayerRender, JsonKeysAreForMetallicRoughnessOnly) {
   EXPECT_NE(error(R"({"name": "floor", "type": "metallic_roughness", "specular_color": [1, -1, 1]})")
                 .find("materials[0].specular_color: colour components must not be negative"),
             std::string::npos);
+  EXPECT_NE(error(R"({"name": "floor", "type": "dielectric", "specular_texture": "s.png"})")
+                .find("materials[0].specular_texture: only metallic_roughness materials"),
+            std::string::npos);
+}
+
+// A 2×1 texture of RGBA texels.
+TextureImage rgba_texture(const char* name, std::initializer_list<float> texels) {
+  TextureImage t;
+  t.name = name;
+  t.width = 2;
+  t.height = 1;
+  t.channels = 4;
+  t.texels = texels;
+  return t;
 }
 
 TEST(SpecularLayerRender, JsonAndGlbKeepTheLayerAndTheIor) {
-  const Scene original = floor_under_white_sky(R"({"name": "floor", "type": "metallic_roughness", "base_color": [0.2, 0.3, 0.4],
+  Scene original = floor_under_white_sky(R"({"name": "floor", "type": "metallic_roughness", "base_color": [0.2, 0.3, 0.4],
       "ior": 1.7, "specular": 0.3, "specular_color": [0.5, 0.6, 0.7]})");
+  original.meshes[0].uvs = {Vec2f(0, 0), Vec2f(1, 0), Vec2f(1, 1), Vec2f(0, 1)};
+  original.textures.push_back(rgba_texture("weight", {0, 0, 0, 0.5f, 0, 0, 0, 1}));
+  original.textures.push_back(rgba_texture("tint", {1, 0.5f, 0.25f, 1, 0.25f, 0.5f, 1, 1}));
+  original.textures[1].encoding = TextureEncoding::srgb;
+  original.materials[0].specular_texture = 0;
+  original.materials[0].specular_color_texture = 1;
   test::ScratchFolder dir;
   for (const char* name : {"floor.json", "floor.glb"}) {
     const std::filesystem::path path = dir / name;
@@ -64,6 +105,13 @@ TEST(SpecularLayerRender, JsonAndGlbKeepTheLayerAndTheIor) {
     EXPECT_FLOAT_EQ(m.ior, 1.7f) << name;
     EXPECT_FLOAT_EQ(m.specular, 0.3f) << name;
     EXPECT_EQ(m.specular_color, Vec3f(0.5f, 0.6f, 0.7f)) << name;
+    ASSERT_GE(m.specular_texture, 0) << name;
+    ASSERT_GE(m.specular_color_texture, 0) << name;
+    EXPECT_EQ(loaded.textures[m.specular_texture].encoding, TextureEncoding::linear) << name;
+    EXPECT_EQ(loaded.textures[m.specular_color_texture].encoding, TextureEncoding::srgb) << name;
+    const TextureImage& weight = loaded.textures[m.specular_texture];
+    ASSERT_GE(weight.channels, 2) << name;
+    EXPECT_NEAR(weight.value(weight.channels - 1), 0.5f, 1.0f / 255) << name;  // A, through an 8-bit PNG
   }
 }
 
@@ -78,6 +126,11 @@ TEST(SpecularLayerRender, TheLayerIsPartOfTheImageFingerprint) {
   Scene b = floor_under_white_sky(plain);
   b.materials[0].specular_color = Vec3f(0.5f);
   EXPECT_NE(image_fingerprint(b, s), before);
+  Scene c = floor_under_white_sky(plain);
+  c.textures.push_back(rgba_texture("weight", {0, 0, 0, 0.5f, 0, 0, 0, 1}));
+  const std::uint64_t untextured = image_fingerprint(c, s);
+  c.materials[0].specular_texture = 0;
+  EXPECT_NE(image_fingerprint(c, s), untextured);
 }
 
 }  // namespace

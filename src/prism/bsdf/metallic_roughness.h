@@ -10,10 +10,15 @@
 // kMinAlpha so that roughness 0 stays a finite, evaluable lobe rather than a delta).
 //
 // KHR_materials_ior and KHR_materials_specular generalise the dielectric part: its F0 is
-// ((η − 1)/(η + 1))² times the specular colour (0.04 at η = 1.5, white) and its specular
-// layer has a weight s (specularFactor) that scales the whole Fresnel term, f90 included:
-//   f = (1 − m)(1 − s F_F0d(wi·h)) c/π + [(1 − m) s F_F0d(wi·h) + m F_c(wi·h)] D G2 / (4 |cos θo| |cos θi|).
-// With s = 1 the bracket is F of mix(F0d, c, m) (Schlick is affine in F0), the form above.
+// the colour min(((η − 1)/(η + 1))² × specular colour, 1) (0.04 at η = 1.5, white), and its
+// specular layer has a weight s (specularFactor) that scales the whole Fresnel term, f90
+// included. The extension's fresnel_mix weights the base by 1 − s max(F_F0d), the largest
+// RGB component, so that a coloured F0 dims the diffuse part evenly:
+//   f = (1 − m)(1 − s F_max F0d(wi·h)) c/π
+//       + [(1 − m) s F_F0d(wi·h) + m F_c(wi·h)] D G2 / (4 |cos θo| |cos θi|).
+// F0d is per channel (upsampled from its RGB colour in spectral transport); max F0d is that
+// RGB colour's, so spectral and RGB renders dim the base alike. With s = 1 the bracket is
+// F of mix(F0d, c, m) (Schlick is affine in F0), the form above.
 //
 // Sampling picks the specular lobe with probability p_s = E_s / (E_s + E_d) from
 // albedo estimates at wo (E_s = mean F_F0(cos θo), E_d = (1 − m) mean(c) (1 − F_0.04(cos θo)))
@@ -38,29 +43,37 @@ struct MetallicRoughness {
   color::SampledSpectrum<N> base_color{0.8f};
   float metallic = 0.0f;
   MicrofacetDistribution distribution = MicrofacetDistribution::isotropic(MicrofacetType::ggx, 0.25f);
-  float dielectric_f0 = kDielectricF0;  // F0d, in [0, 1]
-  float specular_weight = 1.0f;         // s, in [0, 1]
+  color::SampledSpectrum<N> dielectric_f0{kDielectricF0};  // F0d per channel, in [0, 1]
+  float dielectric_f0_max = kDielectricF0;                 // max F0d of its RGB colour
+  float specular_weight = 1.0f;                            // s, in [0, 1]
 
+  // A grey F0d.
   static MetallicRoughness from_roughness(const color::SampledSpectrum<N>& base, float metallic,
                                           float perceptual_roughness, float dielectric_f0 = kDielectricF0,
                                           float specular_weight = 1.0f) {
+    return from_roughness(base, metallic, perceptual_roughness, color::SampledSpectrum<N>(dielectric_f0),
+                          dielectric_f0, specular_weight);
+  }
+  // A coloured F0d (KHR_materials_specular's specularColorFactor): per channel, with the
+  // largest component of its RGB colour.
+  static MetallicRoughness from_roughness(const color::SampledSpectrum<N>& base, float metallic,
+                                          float perceptual_roughness, const color::SampledSpectrum<N>& dielectric_f0,
+                                          float dielectric_f0_max, float specular_weight) {
     const float alpha = std::max(kMinAlpha, perceptual_roughness * perceptual_roughness);
-    return {base, metallic, MicrofacetDistribution::isotropic(MicrofacetType::ggx, alpha), dielectric_f0,
-            specular_weight};
+    return {base,          metallic,          MicrofacetDistribution::isotropic(MicrofacetType::ggx, alpha),
+            dielectric_f0, dielectric_f0_max, specular_weight};
   }
 
-  color::SampledSpectrum<N> f0() const {
-    return color::SampledSpectrum<N>(dielectric_f0 * (1.0f - metallic)) + base_color * metallic;
-  }
+  color::SampledSpectrum<N> f0() const { return dielectric_f0 * (1.0f - metallic) + base_color * metallic; }
   // The bracket above: the specular lobe's Fresnel colour at cos θ = wi·h.
   color::SampledSpectrum<N> specular_fresnel(float cos_theta) const {
     if (specular_weight == 1.0f) return fresnel_schlick(f0(), cos_theta);
     return fresnel_schlick(base_color, cos_theta) * metallic +
-           color::SampledSpectrum<N>((1.0f - metallic) * specular_weight * fresnel_schlick(dielectric_f0, cos_theta));
+           fresnel_schlick(dielectric_f0, cos_theta) * ((1.0f - metallic) * specular_weight);
   }
-  // The diffuse lobe's weight 1 − s F_F0d, without (1 − m).
+  // The diffuse lobe's weight 1 − s F_max F0d, without (1 − m).
   float diffuse_transmission(float cos_theta) const {
-    return 1.0f - specular_weight * fresnel_schlick(dielectric_f0, cos_theta);
+    return 1.0f - specular_weight * fresnel_schlick(dielectric_f0_max, cos_theta);
   }
 
   // Albedo estimates of the two lobes at |cos θo| (channel means).

@@ -10,17 +10,19 @@ MaterialTables::MaterialTables(const std::vector<Material>& materials) {
     // not by the first shading call that needs it.
     if (m.has_clearcoat()) bsdf::coat_directional_albedo(1.0f, m.clearcoat_roughness);
     if (m.has_sheen()) bsdf::sheen_directional_albedo(1.0f, m.sheen_roughness);  // likewise, its table
-    // F0 = ((η − 1)/(η + 1))² × the specular colour's mean, in double so that η = 1.5 gives
-    // 0.04f exactly, the glTF constant.
     const double r = (double(m.ior) - 1.0) / (double(m.ior) + 1.0);
-    const Vec3f& c = m.specular_color;
-    const double mean = (double(c.x) + c.y + c.z) / 3.0;
-    dielectric_f0_.push_back(static_cast<float>(std::clamp(r * r * mean, 0.0, 1.0)));
+    fresnel_f0_.push_back(r * r);
     if ((m.type == MaterialType::conductor) && m.conductor_fresnel == ConductorFresnel::complex_ior)
       conductors_.emplace_back(bsdf::conductor_ior(m.conductor_name));  // UsageError for unknown metals
     else
       conductors_.emplace_back(std::nullopt);
   }
+}
+
+Vec3f MaterialTables::dielectric_f0(std::uint32_t material, const Vec3f& specular_color) const {
+  const double f0 = fresnel_f0_[material];
+  const auto component = [&](float c) { return static_cast<float>(std::clamp(f0 * c, 0.0, 1.0)); };
+  return {component(specular_color.x), component(specular_color.y), component(specular_color.z)};
 }
 
 namespace {
@@ -44,7 +46,7 @@ float channel_wavelength_nm(const Wavelengths<Mode>& w, int channel) {
 template <class Mode>
 bsdf::Bsdf<Mode::kChannels> base_bsdf(const Material& m, std::uint32_t material_index, const Spectrum<Mode>& base,
                                       const MaterialPoint& point, const Wavelengths<Mode>& w,
-                                      const MaterialTables& tables) {
+                                      const MaterialTables& tables, const LayerColors<Mode>& layer_colors) {
   constexpr int N = Mode::kChannels;
   // glTF and pbrt give perceptual roughness r; the microfacet α is r² (Burley 2012).
   const float alpha = point.roughness * point.roughness;
@@ -78,10 +80,15 @@ bsdf::Bsdf<Mode::kChannels> base_bsdf(const Material& m, std::uint32_t material_
       if (m.thin_walled) return {bsdf::ThinDielectric<N>{eta, tint}};
       return {bsdf::Dielectric<N>{eta, distribution, tint}};
     }
-    case MaterialType::metallic_roughness:
-      return {bsdf::MetallicRoughness<N>::from_roughness(base, std::clamp(point.metallic, 0.0f, 1.0f), point.roughness,
-                                                         tables.dielectric_f0(material_index),
-                                                         std::clamp(m.specular, 0.0f, 1.0f))};
+    case MaterialType::metallic_roughness: {
+      const Vec3f f0 = tables.dielectric_f0(material_index, point.specular_color);
+      const float metallic = std::clamp(point.metallic, 0.0f, 1.0f);
+      const float weight = std::clamp(point.specular, 0.0f, 1.0f);
+      if (point.has_tinted_specular())
+        return {bsdf::MetallicRoughness<N>::from_roughness(base, metallic, point.roughness, layer_colors.specular_f0,
+                                                           max_component(f0), weight)};
+      return {bsdf::MetallicRoughness<N>::from_roughness(base, metallic, point.roughness, f0.x, weight)};
+    }
     case MaterialType::diffuse: break;
   }
   return {bsdf::Lambertian<N>{base}};
@@ -92,22 +99,22 @@ bsdf::Bsdf<Mode::kChannels> base_bsdf(const Material& m, std::uint32_t material_
 template <class Mode>
 bsdf::Bsdf<Mode::kChannels> make_bsdf(const Material& m, std::uint32_t material_index, const Spectrum<Mode>& base,
                                       const MaterialPoint& point, const Wavelengths<Mode>& w,
-                                      const MaterialTables& tables, const Spectrum<Mode>& sheen_color) {
-  auto b = base_bsdf<Mode>(m, material_index, base, point, w, tables);
+                                      const MaterialTables& tables, const LayerColors<Mode>& layer_colors) {
+  auto b = base_bsdf<Mode>(m, material_index, base, point, w, tables, layer_colors);
   // untextured_point() gives dielectrics no coat and no sheen.
   if (point.clearcoat > 0.0f)
     b.coat = bsdf::Clearcoat::make(std::min(point.clearcoat, 1.0f), std::clamp(point.clearcoat_roughness, 0.0f, 1.0f));
-  if (point.has_sheen()) b.sheen = bsdf::Sheen<Mode::kChannels>::make(sheen_color, point.sheen_roughness);
+  if (point.has_sheen()) b.sheen = bsdf::Sheen<Mode::kChannels>::make(layer_colors.sheen, point.sheen_roughness);
   return b;
 }
 
 template bsdf::Bsdf<3> make_bsdf<SpectralMode<3>>(const Material&, std::uint32_t, const Spectrum<SpectralMode<3>>&, const MaterialPoint&,
-                                                   const Wavelengths<SpectralMode<3>>&, const MaterialTables&, const Spectrum<SpectralMode<3>>&);
+                                                   const Wavelengths<SpectralMode<3>>&, const MaterialTables&, const LayerColors<SpectralMode<3>>&);
 template bsdf::Bsdf<4> make_bsdf<SpectralMode<4>>(const Material&, std::uint32_t, const Spectrum<SpectralMode<4>>&, const MaterialPoint&,
-                                                   const Wavelengths<SpectralMode<4>>&, const MaterialTables&, const Spectrum<SpectralMode<4>>&);
+                                                   const Wavelengths<SpectralMode<4>>&, const MaterialTables&, const LayerColors<SpectralMode<4>>&);
 template bsdf::Bsdf<8> make_bsdf<SpectralMode<8>>(const Material&, std::uint32_t, const Spectrum<SpectralMode<8>>&, const MaterialPoint&,
-                                                   const Wavelengths<SpectralMode<8>>&, const MaterialTables&, const Spectrum<SpectralMode<8>>&);
+                                                   const Wavelengths<SpectralMode<8>>&, const MaterialTables&, const LayerColors<SpectralMode<8>>&);
 template bsdf::Bsdf<3> make_bsdf<RgbMode>(const Material&, std::uint32_t, const Spectrum<RgbMode>&, const MaterialPoint&,
-                                          const Wavelengths<RgbMode>&, const MaterialTables&, const Spectrum<RgbMode>&);
+                                          const Wavelengths<RgbMode>&, const MaterialTables&, const LayerColors<RgbMode>&);
 
 }  // namespace prism

@@ -25,12 +25,14 @@ class MaterialTables {
   const bsdf::ConductorIor* conductor(std::uint32_t material) const {
     return conductors_[material] ? &*conductors_[material] : nullptr;
   }
-  // A metallic_roughness material's dielectric F0 (bsdf/metallic_roughness.h).
-  float dielectric_f0(std::uint32_t material) const { return dielectric_f0_[material]; }
+  // A metallic_roughness material's dielectric F0 (bsdf/metallic_roughness.h) for a
+  // specular colour (KHR_materials_specular): min(((η − 1)/(η + 1))² × colour, 1) per
+  // component, in double so that η = 1.5 and white give 0.04f exactly, the glTF constant.
+  Vec3f dielectric_f0(std::uint32_t material, const Vec3f& specular_color) const;
 
  private:
   std::vector<std::optional<bsdf::ConductorIor>> conductors_;
-  std::vector<float> dielectric_f0_;
+  std::vector<double> fresnel_f0_;  // ((η − 1)/(η + 1))²
 };
 
 inline constexpr std::array<float, 3> kRgbRepresentativeWavelengthsNm = {630.0f, 532.0f, 465.0f};
@@ -45,20 +47,42 @@ struct MaterialPoint {
   float clearcoat_roughness = 0.0f;  // its perceptual roughness
   Vec3f sheen_color{0.0f};           // the sheen's colour (linear Rec.709); black: none
   float sheen_roughness = 0.0f;
+  float specular = 1.0f;             // metallic_roughness' specular layer: its weight
+  Vec3f specular_color{1.0f};        // and its colour (KHR_materials_specular)
 
   bool has_sheen() const { return max_component(sheen_color) > 0.0f; }
+  // A specular colour that is not a grey needs its own spectrum (make_bsdf's specular_f0).
+  bool has_tinted_specular() const {
+    return specular_color.x != specular_color.y || specular_color.y != specular_color.z;
+  }
 };
 inline MaterialPoint untextured_point(const Material& m) {
-  return {m.roughness, m.metallic, m.has_clearcoat() ? m.clearcoat : 0.0f, m.clearcoat_roughness,
-          m.has_sheen() ? m.sheen_color : Vec3f(0.0f), m.sheen_roughness};
+  return {m.roughness,
+          m.metallic,
+          m.has_clearcoat() ? m.clearcoat : 0.0f,
+          m.clearcoat_roughness,
+          m.has_sheen() ? m.sheen_color : Vec3f(0.0f),
+          m.sheen_roughness,
+          m.specular,
+          m.type == MaterialType::metallic_roughness ? m.specular_color : Vec3f(1.0f)};
 }
 
-// `sheen_color` is point.sheen_color in the transport's terms (upsampled, or in the working
-// space); read only where point.has_sheen().
+// The colours of a shading point beside its base colour, in the transport's terms
+// (upsampled, or in the working space), each read only where the point has it:
+//   sheen        point.sheen_color, where point.has_sheen();
+//   specular_f0  tables.dielectric_f0(material, point.specular_color), where
+//                point.has_tinted_specular() on a metallic_roughness material (a grey F0 is
+//                the same number in every channel and needs no conversion).
+template <class Mode>
+struct LayerColors {
+  Spectrum<Mode> sheen{0.0f};
+  Spectrum<Mode> specular_f0{0.0f};
+};
+
 template <class Mode>
 bsdf::Bsdf<Mode::kChannels> make_bsdf(const Material& material, std::uint32_t material_index,
                                       const Spectrum<Mode>& base_color, const MaterialPoint& point,
                                       const Wavelengths<Mode>& wavelengths, const MaterialTables& tables,
-                                      const Spectrum<Mode>& sheen_color = Spectrum<Mode>(0.0f));
+                                      const LayerColors<Mode>& layer_colors = {});
 
 }  // namespace prism

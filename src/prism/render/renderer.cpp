@@ -107,6 +107,8 @@ void hash_scene_details(Fnv1a& h, const Scene& scene) {
     }
     if (m.specular != plain.specular) h.value(m.specular);
     if (m.specular_color != plain.specular_color) h.value(m.specular_color);
+    if (m.specular_texture != plain.specular_texture) h.value(m.specular_texture);
+    if (m.specular_color_texture != plain.specular_color_texture) h.value(m.specular_color_texture);
     if (m.has_clearcoat()) {
       h.value(m.clearcoat);
       h.value(m.clearcoat_roughness);

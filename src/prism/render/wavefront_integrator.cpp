@@ -214,6 +214,13 @@ MaterialPoint WavefrontIntegrator<Mode>::material_point(const Material& m, const
       if (const auto texel = texel_at_hit(m.sheen_roughness_texture, si, cone_width, ray))
         point.sheen_roughness *= (*texel)[3];
   }
+  // KHR_materials_specular: specularTexture's A channel scales specularFactor,
+  // specularColorTexture (sRGB-encoded colour, decoded to linear) specularColorFactor.
+  if (m.specular_texture >= 0)
+    if (const auto texel = texel_at_hit(m.specular_texture, si, cone_width, ray)) point.specular *= (*texel)[3];
+  if (m.specular_color_texture >= 0)
+    if (const auto texel = texel_at_hit(m.specular_color_texture, si, cone_width, ray))
+      point.specular_color *= Vec3f((*texel)[0], (*texel)[1], (*texel)[2]);  // greys come expanded
   return point;
 }
 
@@ -331,12 +338,14 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   }
 
   const MaterialPoint point = material_point(material, si, p.cone_width[slot], ray);
-  // A sheen's colour is upsampled here, where the path's wavelengths are known (rare: only
-  // sheened materials pay for it).
+  // A sheen's colour and a tinted specular F0 are upsampled here, where the path's
+  // wavelengths are known (rare: only the materials that have them pay for it).
+  LayerColors<Mode> layer_colors;
+  if (__builtin_expect(point.has_sheen(), 0)) layer_colors.sheen = colors_.reflectance(point.sheen_color, wl);
+  if (__builtin_expect(point.has_tinted_specular(), 0) && material.type == MaterialType::metallic_roughness)
+    layer_colors.specular_f0 = colors_.reflectance(tables_.dielectric_f0(si.material, point.specular_color), wl);
   const auto bsdf = make_bsdf<Mode>(material, si.material, base_color(material, si, p.cone_width[slot], ray, wl), point,
-                                    wl, tables_,
-                                    __builtin_expect(point.has_sheen(), 0) ? colors_.reflectance(point.sheen_color, wl)
-                                                                           : Spectrum<Mode>(0.0f));
+                                    wl, tables_, layer_colors);
   if constexpr (Mode::kSpectral) {
     // Hero wavelength after a dispersive event (Wilkie et al. 2014): from here on only
     // channel 0 carries an estimate; terminate once (pdf[1] = 0 marks it done).

@@ -91,10 +91,15 @@ struct Material {
   float transmission = 0.0f; // glTF KHR_materials_transmission factor (metallic_roughness)
 
   // metallic_roughness' dielectric specular layer (glTF KHR_materials_specular): its weight
-  // specularFactor ∈ [0, 1] and its colour specularColorFactor (linear Rec.709), whose mean
-  // scales F0 = ((ior − 1)/(ior + 1))² (KHR_materials_ior; 0.04 at the default 1.5).
+  // specularFactor ∈ [0, 1] and its colour specularColorFactor (linear Rec.709, ≥ 0), which
+  // scales F0 = ((ior − 1)/(ior + 1))² (KHR_materials_ior; 0.04 at the default 1.5) per
+  // component, up to 1 (bsdf/metallic_roughness.h). The A channel of specular_texture
+  // (linear) multiplies the weight; specular_color_texture (a colour, sRGB-encoded like
+  // base_color_texture) the colour.
   float specular = 1.0f;
   Vec3f specular_color{1.0f};
+  int specular_texture = -1;
+  int specular_color_texture = -1;
 
   // Clear coat (glTF KHR_materials_clearcoat, pbrt-v4's coated materials): a colourless
   // η = 1.5 GGX layer of weight `clearcoat` ∈ [0, 1] and perceptual roughness

@@ -17,6 +17,8 @@ std::vector<bool> textures_used_by_materials(const Scene& scene) {
     mark(m.clearcoat_roughness_texture);
     mark(m.sheen_color_texture);
     mark(m.sheen_roughness_texture);
+    mark(m.specular_texture);
+    mark(m.specular_color_texture);
   }
   return used;
 }

@@ -425,36 +425,47 @@ TEST(GltfLoader, QuantizedAttributesAreRead) {
 }
 
 // KHR_materials_specular and KHR_materials_ior on an opaque material: the layer's weight
-// and colour (a coloured one as its mean, said), the IOR kept for F0, factor 0 on a plain
-// dielectric read as Lambert, the textures said to be ignored, bad factors refused.
+// and colour, the IOR kept for F0, the textures with their encodings (the colour's sRGB,
+// the weight's A channel linear) and their own transforms, factor 0 on a plain dielectric
+// read as Lambert, no texture kept on glass, bad factors refused.
 TEST(GltfLoader, SpecularAndIorOnOpaqueMaterials) {
+  test::ScratchFolder dir;
+  write_png(dir / "specular.png", EncodedImage{1, 1, 4, 8, {200, 100, 50, 128}});
+  dir.write("quad.bin", quad_buffer());
   const std::string materials = R"([
     {"pbrMetallicRoughness": {"metallicFactor": 0},
      "extensions": {"KHR_materials_specular": {"specularFactor": 0.5, "specularColorFactor": [0.8, 0.8, 0.8]},
                     "KHR_materials_ior": {"ior": 1.33}}},
     {"pbrMetallicRoughness": {"metallicFactor": 0},
-     "extensions": {"KHR_materials_specular": {"specularColorFactor": [1, 0.5, 0.5], "specularTexture": {"index": 0}}}},
+     "extensions": {"KHR_materials_specular": {"specularColorFactor": [1, 0.5, 0.5], "specularTexture": {"index": 0},
+       "specularColorTexture": {"index": 0, "extensions": {"KHR_texture_transform": {"scale": [4, 4]}}}}}},
     {"pbrMetallicRoughness": {"metallicFactor": 0}, "extensions": {"KHR_materials_specular": {"specularFactor": 0}}},
-    {"pbrMetallicRoughness": {"metallicFactor": 0.5}, "extensions": {"KHR_materials_specular": {"specularFactor": 0}}}])";
-  const Scene s = parse(quad_document(kDataUri + base64(quad_buffer()), "", materials));
-  ASSERT_EQ(s.materials.size(), 4u);
+    {"pbrMetallicRoughness": {"metallicFactor": 0.5}, "extensions": {"KHR_materials_specular": {"specularFactor": 0}}},
+    {"extensions": {"KHR_materials_specular": {"specularTexture": {"index": 0}},
+                    "KHR_materials_transmission": {"transmissionFactor": 1}}}])";
+  const std::string top = R"("extensionsUsed": ["KHR_materials_specular", "KHR_texture_transform"],
+    "textures": [{"source": 0}], "images": [{"uri": "specular.png"}],)";
+  const Scene s = parse(quad_document("quad.bin", top, materials), dir.path());
+  ASSERT_EQ(s.materials.size(), 5u);
   EXPECT_EQ(s.materials[0].type, MaterialType::metallic_roughness);
   EXPECT_FLOAT_EQ(s.materials[0].specular, 0.5f);
   EXPECT_EQ(s.materials[0].specular_color, Vec3f(0.8f));
   EXPECT_FLOAT_EQ(s.materials[0].ior, 1.33f);
-  EXPECT_EQ(s.materials[1].specular_color, Vec3f(1, 0.5f, 0.5f));
+  EXPECT_EQ(s.materials[0].specular_texture, -1);
+  const Material& textured = s.materials[1];
+  EXPECT_EQ(textured.specular_color, Vec3f(1, 0.5f, 0.5f));
+  ASSERT_GE(textured.specular_texture, 0);
+  ASSERT_GE(textured.specular_color_texture, 0);
+  EXPECT_EQ(s.textures[textured.specular_texture].encoding, TextureEncoding::linear);
+  EXPECT_EQ(s.textures[textured.specular_color_texture].encoding, TextureEncoding::srgb);
+  EXPECT_FLOAT_EQ(s.textures[textured.specular_texture].scale_u, 1.0f);
+  EXPECT_FLOAT_EQ(s.textures[textured.specular_color_texture].scale_u, 4.0f);  // its own transform
   EXPECT_EQ(s.materials[2].type, MaterialType::diffuse);
   EXPECT_EQ(s.materials[3].type, MaterialType::metallic_roughness);  // a metal keeps its layer
   EXPECT_EQ(s.materials[3].specular, 0.0f);
-  int mean = 0, textures = 0;
-  for (const std::string& w : s.warnings) {
-    mean += w.find("materials[1].extensions.KHR_materials_specular: specularColorFactor (1, 0.5, 0.5) used as its "
-                   "mean grey") != std::string::npos;
-    textures += w.find("materials[1].extensions.KHR_materials_specular: specularTexture and specularColorTexture "
-                       "ignored") != std::string::npos;
-  }
-  EXPECT_EQ(mean, 1);
-  EXPECT_EQ(textures, 1);
+  EXPECT_EQ(s.materials[4].type, MaterialType::dielectric);
+  EXPECT_EQ(s.materials[4].specular_texture, -1);
+  for (const std::string& w : s.warnings) EXPECT_EQ(w.find("KHR_materials_specular"), std::string::npos) << w;
   for (const auto& [specular, expected] : std::initializer_list<std::pair<std::string, std::string>>{
            {R"({"specularFactor": 2})", "specularFactor must be in [0, 1]"},
            {R"({"specularColorFactor": [1, -1, 1]})", "components must be finite and ≥ 0"},

@@ -239,6 +239,7 @@ Material GltfBuilder::make_material(const tinygltf::Material& src, int index) {
     if (m.transmission > 0.0f) {
       // A transmissive glTF material becomes Prism's dielectric, tinted by the base colour.
       m.type = MaterialType::dielectric;
+      m.specular_texture = m.specular_color_texture = -1;  // the specular layer is metallic_roughness'
       read_volume(m, extension(src.extensions, "KHR_materials_volume"), where);
       if (const tinygltf::Value* dispersion = extension(src.extensions, "KHR_materials_dispersion"))
         read_dispersion(m, *dispersion, where);
@@ -321,11 +322,11 @@ void GltfBuilder::read_dispersion(Material& m, const tinygltf::Value& dispersion
 }
 
 // KHR_materials_specular: the dielectric specular layer's weight (specularFactor, default 1)
-// and colour (specularColorFactor, default white; F0 = ((η − 1)/(η + 1))² × colour, so a
-// colour above 1 may raise it, up to 1). Factor 0 on a plain dielectric (metallic 0, no
-// metallic-roughness texture) removes the layer: Prism's diffuse, exactly (its own GLB
-// writer says so). A coloured factor is used as its mean grey, and the textures are not
-// read: both are said.
+// and colour (specularColorFactor, default white; F0 = ((η − 1)/(η + 1))² × colour per
+// component, so a colour above 1 may raise it, up to 1). specularTexture's A channel (linear)
+// multiplies the weight, specularColorTexture (sRGB-encoded) the colour. Factor 0 on a plain
+// dielectric (metallic 0, no metallic-roughness texture) removes the layer, whatever its
+// textures: Prism's diffuse, exactly (its own GLB writer says so).
 void GltfBuilder::read_specular(Material& m, const tinygltf::Value& specular, const std::string& where) {
   const std::string specular_where = where + ".extensions.KHR_materials_specular";
   const double factor = number(specular, "specularFactor", 1.0);
@@ -338,17 +339,15 @@ void GltfBuilder::read_specular(Material& m, const tinygltf::Value& specular, co
       fail(fmt::format("{}: specularColorFactor components must be finite and ≥ 0", specular_where));
     color = *c;
   }
-  if (specular.Has("specularTexture") || specular.Has("specularColorTexture"))
-    warnings_.push_back(fmt::format("glTF: {}: specularTexture and specularColorTexture ignored", specular_where));
   if (factor == 0.0 && m.metallic == 0.0f && m.metallic_roughness_texture < 0) {
     m.type = MaterialType::diffuse;
     return;
   }
   m.specular = static_cast<float>(factor);
   m.specular_color = color;
-  if (color.x != color.y || color.y != color.z)
-    warnings_.push_back(fmt::format("glTF: {}: specularColorFactor ({}, {}, {}) used as its mean grey", specular_where,
-                                    color.x, color.y, color.z));
+  m.specular_texture = extension_texture(specular, "specularTexture", TextureEncoding::linear, specular_where);
+  m.specular_color_texture =
+      extension_texture(specular, "specularColorTexture", TextureEncoding::srgb, specular_where);
 }
 
 // An extension's textureInfo (an object with "index", optional "texCoord" and its own

@@ -119,10 +119,14 @@ json material_json(const Scene& scene, const Material& m) {
     case MaterialType::metallic_roughness:
       pbr["metallicFactor"] = m.metallic;
       if (m.ior != 1.5f) j["extensions"]["KHR_materials_ior"] = {{"ior", m.ior}};
-      if (m.specular != 1.0f || m.specular_color != Vec3f(1.0f)) {
+      if (m.specular != 1.0f || m.specular_color != Vec3f(1.0f) || m.specular_texture >= 0 ||
+          m.specular_color_texture >= 0) {
         const Vec3f& c = m.specular_color;
-        j["extensions"]["KHR_materials_specular"] = {{"specularFactor", m.specular},
-                                                     {"specularColorFactor", {c.x, c.y, c.z}}};
+        auto& specular = j["extensions"]["KHR_materials_specular"];
+        specular = {{"specularFactor", m.specular}, {"specularColorFactor", {c.x, c.y, c.z}}};
+        if (m.specular_texture >= 0) specular["specularTexture"] = texture_info(scene, m.specular_texture);
+        if (m.specular_color_texture >= 0)
+          specular["specularColorTexture"] = texture_info(scene, m.specular_color_texture);
       }
       break;
   }

@@ -187,7 +187,7 @@ void JsonSceneReader::read_material(const JsonValue& value) {
                      "anisotropy", "metallic", "metallic_roughness_texture", "normal_texture", "normal_scale",
                      "bump_texture", "bump_scale", "microfacet", "conductor", "ior", "dispersion", "thin_walled",
                      "transmission", "attenuation_color", "attenuation_distance", "specular", "specular_color",
-                     "clearcoat", "clearcoat_roughness",
+                     "specular_texture", "specular_color_texture", "clearcoat", "clearcoat_roughness",
                      "clearcoat_texture", "clearcoat_roughness_texture", "sheen_color", "sheen_roughness",
                      "sheen_color_texture", "sheen_roughness_texture", "alpha_mode", "alpha_cutoff", "opacity",
                      "emission"});
@@ -259,12 +259,15 @@ void JsonSceneReader::read_material(const JsonValue& value) {
   read_attenuation(m, value);
   // KHR_materials_specular's factors, on metallic_roughness (after transmission, which
   // makes glass of it, has had its say).
-  for (const char* key : {"specular", "specular_color"})
+  for (const char* key : {"specular", "specular_color", "specular_texture", "specular_color_texture"})
     if (value.has(key) && m.type != MaterialType::metallic_roughness)
       value[key].fail("only metallic_roughness materials have a dielectric specular layer to weight");
   m.specular = value.get_float("specular", m.specular, 0.0f, 1.0f);
   m.specular_color = value.get_vec3("specular_color", m.specular_color);
   if (!(min_component(m.specular_color) >= 0.0f)) value["specular_color"].fail("colour components must not be negative");
+  // glTF's encodings: the weight in A, linear; the colour texture sRGB-encoded.
+  if (auto t = value.find("specular_texture")) m.specular_texture = read_texture(*t, TextureEncoding::linear);
+  if (auto t = value.find("specular_color_texture")) m.specular_color_texture = read_texture(*t, TextureEncoding::srgb);
   read_clearcoat(m, value);
   read_sheen(m, value);
   if (auto a = value.find("alpha_mode"))

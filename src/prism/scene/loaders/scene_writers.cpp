@@ -145,6 +145,9 @@ void write_scene_json(const Scene& scene, const std::filesystem::path& path) {
       if (m.ior != 1.5f) w(", \"ior\": {}", m.ior);
       if (m.specular != 1.0f) w(", \"specular\": {}", m.specular);
       if (m.specular_color != Vec3f(1.0f)) w(", \"specular_color\": {}", vec(m.specular_color));
+      if (m.specular_texture >= 0) w(", \"specular_texture\": {}", json_texture(scene, files, m.specular_texture));
+      if (m.specular_color_texture >= 0)
+        w(", \"specular_color_texture\": {}", json_texture(scene, files, m.specular_color_texture));
     }
     if (m.has_clearcoat()) {
       w(", \"clearcoat\": {}, \"clearcoat_roughness\": {}", m.clearcoat, m.clearcoat_roughness);

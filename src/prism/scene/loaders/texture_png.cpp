@@ -69,7 +69,8 @@ std::vector<TextureEncoding> texture_encodings(const Scene& scene) {
     if (t >= 0 && static_cast<std::size_t>(t) < encodings.size()) encodings[static_cast<std::size_t>(t)] = TextureEncoding::srgb;
   };
   for (const Material& m : scene.materials)
-    colour(m.base_color_texture), colour(m.emission.texture), colour(m.sheen_color_texture);
+    colour(m.base_color_texture), colour(m.emission.texture), colour(m.sheen_color_texture),
+        colour(m.specular_color_texture);
   return encodings;
 }
 

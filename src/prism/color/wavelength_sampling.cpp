@@ -1,6 +1,10 @@
 // Slot techniques of the wavelength sampling strategies (see wavelength_sampling.h).
 #include "prism/color/wavelength_sampling.h"
 
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -11,6 +15,7 @@
 
 #include "prism/core/branch_free.h"
 #include "prism/core/error.h"
+#include "prism/core/log4.h"
 #include "prism/sampling/piecewise_constant.h"
 
 namespace prism::color {
@@ -44,10 +49,13 @@ namespace {
 // hottest function.
 struct PreparedLobe {
   double a_per_nm, center_nm, tanh_low, tanh_range;
+  double nm_per_ln_ratio;       // 1/(2A): λ − B = ln((1 + t)/(1 − t)) / (2A)
+  double pdf_per_one_minus_t2;  // A / (tanh(A(780 − B)) − tanh(A(380 − B)))
 
   explicit PreparedLobe(const CoshLobe& l)
       : a_per_nm(l.a_per_nm), center_nm(l.center_nm), tanh_low(l.tanh_low()),
-        tanh_range(l.tanh_high() - l.tanh_low()) {}
+        tanh_range(l.tanh_high() - l.tanh_low()), nm_per_ln_ratio(0.5 / a_per_nm),
+        pdf_per_one_minus_t2(a_per_nm / tanh_range) {}
 
   double pdf(double nm) const {
     if (nm < kVisibleMinNm || nm > kVisibleMaxNm) return 0.0;
@@ -231,24 +239,72 @@ void sample_three_cosh_wavelengths(double u, int count, float* wavelength_nm, fl
   }
 }
 
+namespace {
+
+// Slots first … first + 3 of a cosh tuple (sample_cosh_wavelengths), n ≤ 4 of them stored.
+// Each slot's number, tanh, ratio, pdf and λ are the scalar code's operations in the same
+// order, two slots per SSE2 double instruction; the four logarithms are one log4.
+void cosh_tuple_slots(const PreparedLobe& lobe, double u, double slot_step, int first, int n, float* wavelength_nm,
+                      float* pdf) {
+#if defined(__SSE2__)
+  const __m128d one = _mm_set1_pd(1.0);
+  __m128d ratio[2], density[2];
+  for (int half = 0; half < 2; ++half) {
+    const int i = first + 2 * half;
+    // frac(u + i/count): u ∈ [0, 1), so one wrap at most.
+    __m128d along = _mm_add_pd(_mm_set1_pd(u), _mm_mul_pd(_mm_set_pd(i + 1, i), _mm_set1_pd(slot_step)));
+    along = _mm_sub_pd(along, _mm_and_pd(_mm_cmpge_pd(along, one), one));
+    const __m128d t = _mm_add_pd(_mm_set1_pd(lobe.tanh_low), _mm_mul_pd(along, _mm_set1_pd(lobe.tanh_range)));
+    ratio[half] = _mm_div_pd(_mm_add_pd(one, t), _mm_sub_pd(one, t));
+    density[half] = _mm_mul_pd(_mm_set1_pd(lobe.pdf_per_one_minus_t2), _mm_sub_pd(one, _mm_mul_pd(t, t)));
+  }
+  const __m128 ln = log4_ps(_mm_movelh_ps(_mm_cvtpd_ps(ratio[0]), _mm_cvtpd_ps(ratio[1])));
+  __m128d nm[2];
+  const __m128d low = _mm_set1_pd(kVisibleMinNm), high = _mm_set1_pd(kVisibleMaxNm);
+  for (int half = 0; half < 2; ++half) {
+    const __m128d ln_pd = _mm_cvtps_pd(half == 0 ? ln : _mm_movehl_ps(ln, ln));
+    nm[half] = _mm_add_pd(_mm_set1_pd(lobe.center_nm), _mm_mul_pd(ln_pd, _mm_set1_pd(lobe.nm_per_ln_ratio)));
+    nm[half] = _mm_min_pd(_mm_max_pd(nm[half], low), high);
+  }
+  alignas(16) std::array<float, 4> nm_out, pdf_out;
+  _mm_store_ps(nm_out.data(), _mm_movelh_ps(_mm_cvtpd_ps(nm[0]), _mm_cvtpd_ps(nm[1])));
+  _mm_store_ps(pdf_out.data(), _mm_movelh_ps(_mm_cvtpd_ps(density[0]), _mm_cvtpd_ps(density[1])));
+#else
+  std::array<float, 4> ratio{1.0f, 1.0f, 1.0f, 1.0f}, pdf_out{};
+  for (int k = 0; k < 4; ++k) {
+    double along = u + (first + k) * slot_step;
+    along -= select_less(along, 1.0, 0.0, 1.0);  // core/branch_free.h
+    const double t = lobe.tanh_low + along * lobe.tanh_range;
+    ratio[static_cast<std::size_t>(k)] = static_cast<float>((1.0 + t) / (1.0 - t));
+    pdf_out[static_cast<std::size_t>(k)] = static_cast<float>(lobe.pdf_per_one_minus_t2 * (1.0 - t * t));
+  }
+  const std::array<float, 4> ln = log4(ratio);
+  std::array<float, 4> nm_out;
+  for (std::size_t k = 0; k < 4; ++k)
+    nm_out[k] = static_cast<float>(
+        std::clamp(lobe.center_nm + double(ln[k]) * lobe.nm_per_ln_ratio, kVisibleMinNm, kVisibleMaxNm));
+#endif
+  for (int k = 0; k < n; ++k) {
+    wavelength_nm[first + k] = nm_out[static_cast<std::size_t>(k)];
+    pdf[first + k] = pdf_out[static_cast<std::size_t>(k)];
+  }
+}
+
+}  // namespace
+
 void sample_cosh_wavelengths(double u, int count, float* wavelength_nm, float* pdf) {
   // The generic loop's slot_u and inverse CDF, with the pdf taken from the tanh the
   // inversion starts from instead of a cosh of the result: λ = B + atanh(t)/A with
   // t = tanh(A(λ − B)), and 1/cosh²(x) = 1 − tanh²(x), so p(λ) = A (1 − t²) / (tanh(A(780 − B))
   // − tanh(A(380 − B))): the same density, for one float logarithm per wavelength instead of
   // a double atanh and a double cosh (BM_SampleWavelengths: cosh 216–245 → 66–79 ns).
+  // atanh(t) = ½ ln((1 + t)/(1 − t)), the logarithm in float: |t| ≤ 0.94 here, so the ratio
+  // stays in [0.1, 33], and log4's error there (< 1e-6) moves λ by < 1e-4 nm. Four slots at
+  // a time (BENCHMARKS.md "Session 22").
   const PreparedLobe& lobe = radziszewski_lobe();
-  for (int i = 0; i < count; ++i) {
-    double along = u + double(i) / count;            // frac(u + i/count): u ∈ [0, 1), so one wrap at most
-    along -= select_less(along, 1.0, 0.0, 1.0);       // core/branch_free.h
-    const double t = lobe.tanh_low + along * lobe.tanh_range;
-    // atanh(t) = ½ ln((1 + t)/(1 − t)), the logarithm in float: |t| ≤ 0.94 here, so the
-    // ratio stays in [0.1, 33] and float's 2^-24 relative error in ln moves λ by < 1e-4 nm.
-    const float ratio = static_cast<float>((1.0 + t) / (1.0 - t));
-    wavelength_nm[i] = static_cast<float>(std::clamp(lobe.center_nm + 0.5 * double(std::log(ratio)) / lobe.a_per_nm,
-                                                     kVisibleMinNm, kVisibleMaxNm));
-    pdf[i] = static_cast<float>(lobe.a_per_nm * (1.0 - t * t) / lobe.tanh_range);
-  }
+  const double slot_step = 1.0 / count;  // exact for 1, 2, 4 and 8 wavelengths
+  for (int first = 0; first < count; first += 4)
+    cosh_tuple_slots(lobe, u, slot_step, first, std::min(4, count - first), wavelength_nm, pdf);
 }
 
 }  // namespace prism::color

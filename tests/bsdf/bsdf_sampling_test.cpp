@@ -131,9 +131,16 @@ TEST(BsdfSampling, MetallicRoughnessMatchesPdf) {
   // the diffuse weight from its largest component.
   const auto tinted = MetallicRoughness<3>::from_roughness(rgb(0.2f, 0.5f, 0.9f), 0.2f, 0.5f,
                                                            rgb(0.3f, 0.05f, 0.0f), 0.3f, 0.7f);
+  // A thin film (iridescence) over both bases: the probabilities come from its colours.
+  auto filmed = MetallicRoughness<3>::from_roughness(rgb(0.2f, 0.5f, 0.9f), 0.4f, 0.3f);
+  filmed.film.weight = 0.9f;
+  filmed.film.thickness_nm = 300.0f;
+  filmed.film.eta_film = 2.0f;
+  filmed.film.wavelength_nm = rgb(630.0f, 532.0f, 465.0f);
   for (double theta : kThetas) {
     const Vec3f wo = direction_at(theta, 120.0);
     bsdf_p_value(Bsdf<3>{tinted}, wo, Vec3f(-wo.x, -wo.y, wo.z), 0.5f, 0, ++seed);
+    bsdf_p_value(Bsdf<3>{filmed}, wo, Vec3f(-wo.x, -wo.y, wo.z), 0.6f, 0, ++seed);
   }
 }
 

@@ -217,6 +217,34 @@ TEST(MaterialTextures, SpecularTexturesGiveEachHalfItsConstantsImage) {
   expect_halves_match_constants(scene_of, textured, left, right, 0, "specular-tex");
 }
 
+// KHR_materials_iridescence's textures, both read from one image here: the R channel of
+// iridescenceTexture multiplies the film's weight, the G channel of
+// iridescenceThicknessTexture mixes the thickness range (100–500 nm). Left texels R = 1,
+// G = 0.25 (200 nm); right R = 0.5, G = 1 (500 nm); factor 0.9 on a dark metallic_roughness
+// floor. Each half must equal a render of its constants (weight 0.9 at 200 nm, 0.45 at 500
+// nm) with the same seed (float rounding only, 1e-4 relative), and differ by over 10 %.
+TEST(MaterialTextures, IridescenceTexturesGiveEachHalfItsConstantsImage) {
+  Material textured;
+  textured.type = MaterialType::metallic_roughness;
+  textured.base_color = Vec3f(0.05f);
+  textured.metallic = 0.0f;
+  textured.roughness = 0.4f;
+  textured.iridescence = 0.9f;
+  textured.iridescence_ior = 1.8f;
+  textured.iridescence_thickness_min_nm = 100.0f;
+  textured.iridescence_thickness_max_nm = 500.0f;
+  textured.iridescence_texture = textured.iridescence_thickness_texture = 0;
+  const auto scene_of = [&](const Material& m) {
+    return floor_with_colour_and_alpha_halves(m, Vec3f(1.0f, 0.25f, 0.0f), Vec3f(0.5f, 1.0f, 0.0f), 1.0f, 1.0f);
+  };
+  Material left = textured, right = textured;
+  left.iridescence_texture = right.iridescence_texture = -1;
+  left.iridescence_thickness_texture = right.iridescence_thickness_texture = -1;
+  left.iridescence_thickness_max_nm = 200.0f;
+  right.iridescence = 0.45f;
+  expect_halves_match_constants(scene_of, textured, left, right, 0, "iridescence-tex");
+}
+
 // A quad emitter with an emission texture, facing the camera: glTF's emissive factor c,
 // strength s and texel t give radiance c ⊙ t · s in linear Rec.709 (luminance Y(c)·s for a
 // white texel, scene-formats.md's mapping of emissive 1 to 1 nit).

@@ -16,6 +16,7 @@
 #include "prism/scene/scene_summary.h"
 #include "scene/loaders/loader_test_files.h"
 #include "support/floor_under_sky.h"
+#include "support/one_triangle_gltf.h"
 #include "support/write_and_reload.h"
 
 namespace prism {
@@ -68,16 +69,8 @@ TEST(SheenRender, JsonKeysAndTheirRules) {
                    .has_sheen());
 }
 
-// A one-triangle glTF document with the given material extensions.
 Scene gltf_with_material(const std::string& material) {
-  const std::string text = R"({"asset": {"version": "2.0"}, "extensionsUsed": ["KHR_materials_sheen"],
-    "buffers": [{"uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA", "byteLength": 36}],
-    "bufferViews": [{"buffer": 0, "byteLength": 36}],
-    "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3", "min": [0, 0, 0], "max": [1, 1, 0]}],
-    "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "material": 0}]}],
-    "materials": [)" + material + R"(], "nodes": [{"mesh": 0}], "scenes": [{"nodes": [0]}]})";
-  return loaders::parse_gltf_scene({reinterpret_cast<const unsigned char*>(text.data()), text.size()}, "test.gltf",
-                                   {}, {});
+  return test::one_triangle_gltf(material, "KHR_materials_sheen");
 }
 
 TEST(SheenRender, GltfSheenFactorsAndRules) {

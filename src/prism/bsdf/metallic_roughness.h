@@ -20,6 +20,18 @@
 // RGB colour's, so spectral and RGB renders dim the base alike. With s = 1 the bracket is
 // F of mix(F0d, c, m) (Schlick is affine in F0), the form above.
 //
+// KHR_materials_iridescence puts a thin film of weight w on both bases (bsdf/thin_film.h):
+// the metal's Fresnel becomes (1 − w) F_c + w R_film(metal), the dielectric layer's
+// (1 − w) s F_F0d + w R_film(η), both at wi·h, and the diffuse base's weight
+//   (1 − w)(1 − s F_max F0d(wi·h)) + w (1 − R_film(η, |cos θo|)),
+// per channel: the base keeps what the film does not reflect towards the viewer, as the
+// clear coat and the sheen scale theirs by their albedo at wo (clearcoat.h, sheen.h), so a
+// white furnace stays within 1 in every channel, and like theirs the layering is not
+// reciprocal. The extension weights the base by 1 − max(R_film(wi·h)), the largest RGB
+// component: that form gains energy wherever R_film at wi·h falls below its value at the
+// viewing angle (up to 9 % for a white base under a 250 nm film), and dims the base evenly
+// where a lossless film passes the complement of its colour.
+//
 // Sampling picks the specular lobe with probability p_s = E_s / (E_s + E_d) from
 // albedo estimates at wo (E_s = mean F_F0(cos θo), E_d = (1 − m) mean(c) (1 − F_0.04(cos θo)))
 // and pdf() is the matching one-sample mixture p_s p_spec + (1 − p_s) p_diffuse. A lobe is
@@ -27,10 +39,12 @@
 #include <algorithm>
 #include <numbers>
 #include <optional>
+#include <utility>
 
 #include "prism/bsdf/bsdf_sample.h"
 #include "prism/bsdf/fresnel.h"
 #include "prism/bsdf/microfacet.h"
+#include "prism/bsdf/thin_film.h"
 #include "prism/sampling/warps.h"
 
 namespace prism::bsdf {
@@ -46,6 +60,7 @@ struct MetallicRoughness {
   color::SampledSpectrum<N> dielectric_f0{kDielectricF0};  // F0d per channel, in [0, 1]
   float dielectric_f0_max = kDielectricF0;                 // max F0d of its RGB colour
   float specular_weight = 1.0f;                            // s, in [0, 1]
+  ThinFilm<N> film{};                                      // iridescence; weight 0: none
 
   // A grey F0d.
   static MetallicRoughness from_roughness(const color::SampledSpectrum<N>& base, float metallic,
@@ -76,18 +91,45 @@ struct MetallicRoughness {
     return 1.0f - specular_weight * fresnel_schlick(dielectric_f0_max, cos_theta);
   }
 
-  // Albedo estimates of the two lobes at |cos θo| (channel means).
-  float specular_albedo_estimate(float cos_o) const { return specular_fresnel(cos_o).average(); }
-  float diffuse_albedo_estimate(float cos_o) const {
-    return (1.0f - metallic) * base_color.average() * diffuse_transmission(cos_o);
+  // With a film: the bracket at cos θ = wi·h, given the film's reflectance there, per
+  // channel.
+  color::SampledSpectrum<N> filmed_specular_fresnel(float cos_theta,
+                                                    const color::SampledSpectrum<N>& over_dielectric) const {
+    const float w = film.weight;
+    color::SampledSpectrum<N> specular =
+        (fresnel_schlick(dielectric_f0, cos_theta) * ((1.0f - w) * specular_weight) + over_dielectric * w) *
+        (1.0f - metallic);
+    if (metallic > 0.0f)
+      specular += (fresnel_schlick(base_color, cos_theta) * (1.0f - w) + film.over_metal(cos_theta) * w) * metallic;
+    return specular;
   }
-  float albedo_estimate(float cos_o) const { return specular_albedo_estimate(cos_o) + diffuse_albedo_estimate(cos_o); }
+  // The diffuse weight (without (1 − m)) at cos θ = wi·h, given the film's reflectance
+  // towards the viewer.
+  color::SampledSpectrum<N> filmed_diffuse_weight(float cos_theta,
+                                                  const color::SampledSpectrum<N>& reflected_to_viewer) const {
+    const float w = film.weight;
+    return color::SampledSpectrum<N>((1.0f - w) * diffuse_transmission(cos_theta) + w) - reflected_to_viewer * w;
+  }
+
+  // Albedo estimates of the two lobes at |cos θo| (channel means): specular, diffuse.
+  std::pair<float, float> albedo_estimates(float cos_o) const {
+    if (__builtin_expect(film.present(), 0)) {
+      // The film's reflectance at θo stands in for its average over the lobe's facets and
+      // the diffuse directions (an estimate: only the sampling probabilities use it).
+      const color::SampledSpectrum<N> reflected = film.over_dielectric(cos_o);
+      return {filmed_specular_fresnel(cos_o, reflected).average(),
+              (1.0f - metallic) * (base_color * filmed_diffuse_weight(cos_o, reflected)).average()};
+    }
+    return {specular_fresnel(cos_o).average(), (1.0f - metallic) * base_color.average() * diffuse_transmission(cos_o)};
+  }
+  float albedo_estimate(float cos_o) const {
+    const auto [e_spec, e_diff] = albedo_estimates(cos_o);
+    return e_spec + e_diff;
+  }
 
   // Probability of sampling the specular lobe for this wo.
   float specular_probability(const Vec3f& wo) const {
-    const float cos_o = abs_cos_theta(wo);
-    const float e_spec = specular_albedo_estimate(cos_o);
-    const float e_diff = diffuse_albedo_estimate(cos_o);
+    const auto [e_spec, e_diff] = albedo_estimates(abs_cos_theta(wo));
     return e_spec + e_diff > 0.0f ? e_spec / (e_spec + e_diff) : 1.0f;
   }
 
@@ -96,8 +138,13 @@ struct MetallicRoughness {
     if (!r) return {};
     const Vec3f &o = r->o, &i = r->i, &h = r->h;
     const float i_h = dot(i, h);
-    const float diffuse_weight = (1.0f - metallic) * diffuse_transmission(i_h) * std::numbers::inv_pi_v<float>;
     const float spec = distribution.D(h) * distribution.G2(o, i) / (4.0f * o.z * i.z);
+    if (__builtin_expect(film.present(), 0)) {
+      const color::SampledSpectrum<N> diffuse = filmed_diffuse_weight(i_h, film.over_dielectric(o.z));
+      return base_color * diffuse * ((1.0f - metallic) * std::numbers::inv_pi_v<float>) +
+             filmed_specular_fresnel(i_h, film.over_dielectric(i_h)) * spec;
+    }
+    const float diffuse_weight = (1.0f - metallic) * diffuse_transmission(i_h) * std::numbers::inv_pi_v<float>;
     return base_color * diffuse_weight + specular_fresnel(i_h) * spec;
   }
 

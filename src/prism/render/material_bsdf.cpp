@@ -84,10 +84,22 @@ bsdf::Bsdf<Mode::kChannels> base_bsdf(const Material& m, std::uint32_t material_
       const Vec3f f0 = tables.dielectric_f0(material_index, point.specular_color);
       const float metallic = std::clamp(point.metallic, 0.0f, 1.0f);
       const float weight = std::clamp(point.specular, 0.0f, 1.0f);
-      if (point.has_tinted_specular())
-        return {bsdf::MetallicRoughness<N>::from_roughness(base, metallic, point.roughness, layer_colors.specular_f0,
-                                                           max_component(f0), weight)};
-      return {bsdf::MetallicRoughness<N>::from_roughness(base, metallic, point.roughness, f0.x, weight)};
+      auto lobe = point.has_tinted_specular()
+                      ? bsdf::MetallicRoughness<N>::from_roughness(base, metallic, point.roughness,
+                                                                  layer_colors.specular_f0, max_component(f0), weight)
+                      : bsdf::MetallicRoughness<N>::from_roughness(base, metallic, point.roughness, f0.x, weight);
+      if (__builtin_expect(point.iridescence > 0.0f, 0)) {
+        bsdf::ThinFilm<N>& film = lobe.film;
+        film.weight = std::min(point.iridescence, 1.0f);
+        film.thickness_nm = std::max(point.iridescence_thickness_nm, 0.0f);
+        film.eta_film = m.iridescence_ior;
+        film.dielectric_eta = m.ior;
+        for (int c = 0; c < N; ++c) {
+          film.wavelength_nm[c] = channel_wavelength_nm<Mode>(w, c);
+          film.metal_eta[c] = bsdf::eta_from_f0(base[c]);
+        }
+      }
+      return {lobe};
     }
     case MaterialType::diffuse: break;
   }

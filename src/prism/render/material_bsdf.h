@@ -49,6 +49,8 @@ struct MaterialPoint {
   float sheen_roughness = 0.0f;
   float specular = 1.0f;             // metallic_roughness' specular layer: its weight
   Vec3f specular_color{1.0f};        // and its colour (KHR_materials_specular)
+  float iridescence = 0.0f;          // the thin film's weight (KHR_materials_iridescence); 0: none
+  float iridescence_thickness_nm = 0.0f;
 
   bool has_sheen() const { return max_component(sheen_color) > 0.0f; }
   // A specular colour that is not a grey needs its own spectrum (make_bsdf's specular_f0).
@@ -64,7 +66,9 @@ inline MaterialPoint untextured_point(const Material& m) {
           m.has_sheen() ? m.sheen_color : Vec3f(0.0f),
           m.sheen_roughness,
           m.specular,
-          m.type == MaterialType::metallic_roughness ? m.specular_color : Vec3f(1.0f)};
+          m.type == MaterialType::metallic_roughness ? m.specular_color : Vec3f(1.0f),
+          m.has_iridescence() ? m.iridescence : 0.0f,
+          m.iridescence_thickness_max_nm};
 }
 
 // The colours of a shading point beside its base colour, in the transport's terms

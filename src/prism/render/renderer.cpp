@@ -115,6 +115,14 @@ void hash_scene_details(Fnv1a& h, const Scene& scene) {
       h.value(m.clearcoat_texture);
       h.value(m.clearcoat_roughness_texture);
     }
+    if (m.has_iridescence()) {
+      h.value(m.iridescence);
+      h.value(m.iridescence_ior);
+      h.value(m.iridescence_thickness_min_nm);
+      h.value(m.iridescence_thickness_max_nm);
+      h.value(m.iridescence_texture);
+      h.value(m.iridescence_thickness_texture);
+    }
     if (m.has_sheen()) {
       h.value(m.sheen_color);
       h.value(m.sheen_roughness);

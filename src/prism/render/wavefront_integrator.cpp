@@ -221,6 +221,16 @@ MaterialPoint WavefrontIntegrator<Mode>::material_point(const Material& m, const
   if (m.specular_color_texture >= 0)
     if (const auto texel = texel_at_hit(m.specular_color_texture, si, cone_width, ray))
       point.specular_color *= Vec3f((*texel)[0], (*texel)[1], (*texel)[2]);  // greys come expanded
+  // KHR_materials_iridescence: iridescenceTexture's R channel scales iridescenceFactor;
+  // iridescenceThicknessTexture's G channel mixes the thickness range's ends.
+  if (__builtin_expect(point.iridescence > 0.0f, 0)) {
+    if (m.iridescence_texture >= 0)
+      if (const auto texel = texel_at_hit(m.iridescence_texture, si, cone_width, ray)) point.iridescence *= (*texel)[0];
+    if (m.iridescence_thickness_texture >= 0)
+      if (const auto texel = texel_at_hit(m.iridescence_thickness_texture, si, cone_width, ray))
+        point.iridescence_thickness_nm =
+            m.iridescence_thickness_min_nm + (*texel)[1] * (m.iridescence_thickness_max_nm - m.iridescence_thickness_min_nm);
+  }
   return point;
 }
 

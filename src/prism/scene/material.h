@@ -122,6 +122,19 @@ struct Material {
   int sheen_color_texture = -1;
   int sheen_roughness_texture = -1;
 
+  // Iridescence (glTF KHR_materials_iridescence): a thin film of weight `iridescence`
+  // ∈ [0, 1] (0: none), index `iridescence_ior` ≥ 1 and a thickness in nm over a
+  // metallic_roughness material's bases (bsdf/thin_film.h). The thickness is
+  // iridescence_thickness_max_nm, or with iridescence_thickness_texture (its G channel,
+  // linear) the mix of min and max by the texel; the R channel of iridescence_texture
+  // (linear) multiplies the weight.
+  float iridescence = 0.0f;
+  float iridescence_ior = 1.3f;
+  float iridescence_thickness_min_nm = 100.0f;
+  float iridescence_thickness_max_nm = 400.0f;
+  int iridescence_texture = -1;
+  int iridescence_thickness_texture = -1;
+
   AlphaMode alpha_mode = AlphaMode::opaque;
   float alpha_cutoff = 0.5f;  // for AlphaMode::mask; alpha comes from base colour texture's A
   float opacity = 1.0f;       // constant alpha (AlphaMode::blend: stochastic coverage)
@@ -131,6 +144,7 @@ struct Material {
   bool is_emissive() const { return emission.is_emissive(); }
   bool has_clearcoat() const { return clearcoat > 0.0f && type != MaterialType::dielectric; }
   bool has_sheen() const { return max_component(sheen_color) > 0.0f && type != MaterialType::dielectric; }
+  bool has_iridescence() const { return iridescence > 0.0f && type == MaterialType::metallic_roughness; }
   // Whether paths inside this material lose light on the way (render/volume_absorption.h).
   bool absorbs_inside() const {
     return type == MaterialType::dielectric && !thin_walled && std::isfinite(attenuation_distance) &&

@@ -19,6 +19,8 @@ std::vector<bool> textures_used_by_materials(const Scene& scene) {
     mark(m.sheen_roughness_texture);
     mark(m.specular_texture);
     mark(m.specular_color_texture);
+    mark(m.iridescence_texture);
+    mark(m.iridescence_thickness_texture);
   }
   return used;
 }

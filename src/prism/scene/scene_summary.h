@@ -19,6 +19,7 @@ struct SceneSummary {
   std::size_t absorbing_materials = 0;  // solid glass with attenuation (Material::absorbs_inside)
   std::size_t coated_materials = 0;     // with a clear coat (Material::has_clearcoat)
   std::size_t sheened_materials = 0;    // with a sheen (Material::has_sheen)
+  std::size_t iridescent_materials = 0; // with a thin film (Material::has_iridescence)
   std::size_t spectral_materials = 0;  // with a reflectance or emission spectrum given as data
   std::size_t spectral_lights = 0;
   std::map<std::string, std::size_t> materials_by_type;  // "diffuse" → count

@@ -238,10 +238,10 @@ TEST(JsonScene, ErrorsInMeshArraysNameTheElement) {
 }
 
 TEST(JsonScene, UnknownKeysGiveOneWarning) {
-  const Scene scene = parse(quad_scene(R"(, "sheen": 1, "iridescence": 0.5)", R"(, "extras": {})"));
+  const Scene scene = parse(quad_scene(R"(, "sheen": 1, "subsurface": 0.5)", R"(, "extras": {})"));
   ASSERT_EQ(scene.warnings.size(), 1u);
   EXPECT_NE(scene.warnings[0].find("materials[0].sheen"), std::string::npos);
-  EXPECT_NE(scene.warnings[0].find("materials[0].iridescence"), std::string::npos);
+  EXPECT_NE(scene.warnings[0].find("materials[0].subsurface"), std::string::npos);
   EXPECT_NE(scene.warnings[0].find("extras"), std::string::npos);
 }
 

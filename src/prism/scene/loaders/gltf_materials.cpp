@@ -253,6 +253,8 @@ Material GltfBuilder::make_material(const tinygltf::Material& src, int index) {
   if (const tinygltf::Value* clearcoat = extension(src.extensions, "KHR_materials_clearcoat"))
     read_clearcoat(m, *clearcoat, where);
   if (const tinygltf::Value* sheen = extension(src.extensions, "KHR_materials_sheen")) read_sheen(m, *sheen, where);
+  if (const tinygltf::Value* iridescence = extension(src.extensions, "KHR_materials_iridescence"))
+    read_iridescence(m, *iridescence, where);
   // Occlusion is meaningless for a path tracer (the transport computes it) and is ignored.
   if (src.normalTexture.index >= 0) {
     const std::string normal_where = where + ".normalTexture";
@@ -348,6 +350,36 @@ void GltfBuilder::read_specular(Material& m, const tinygltf::Value& specular, co
   m.specular_texture = extension_texture(specular, "specularTexture", TextureEncoding::linear, specular_where);
   m.specular_color_texture =
       extension_texture(specular, "specularColorTexture", TextureEncoding::srgb, specular_where);
+}
+
+// KHR_materials_iridescence: iridescenceFactor ∈ [0, 1] (default 0: no film),
+// iridescenceIor ≥ 1 (default 1.3), iridescenceThicknessMinimum / Maximum ≥ 0 in nm
+// (defaults 100 and 400), iridescenceTexture (R) and iridescenceThicknessTexture (G),
+// linear data. Prism's film goes on metallic_roughness materials, not on glass.
+void GltfBuilder::read_iridescence(Material& m, const tinygltf::Value& iridescence, const std::string& where) {
+  const std::string film_where = where + ".extensions.KHR_materials_iridescence";
+  const double factor = number(iridescence, "iridescenceFactor", 0.0);
+  if (!(factor >= 0.0 && factor <= 1.0)) fail(fmt::format("{}: iridescenceFactor must be in [0, 1]", film_where));
+  const double ior = number(iridescence, "iridescenceIor", 1.3);
+  if (!(ior >= 1.0 && ior <= 10.0)) fail(fmt::format("{}: iridescenceIor must be between 1 and 10", film_where));
+  const double thinnest = number(iridescence, "iridescenceThicknessMinimum", 100.0);
+  const double thickest = number(iridescence, "iridescenceThicknessMaximum", 400.0);
+  for (const double d : {thinnest, thickest})
+    if (!(d >= 0.0 && d <= 1e5))
+      fail(fmt::format("{}: iridescenceThicknessMinimum and Maximum must be in [0, 100000] nm", film_where));
+  if (factor == 0.0) return;  // no film
+  if (m.type != MaterialType::metallic_roughness) {
+    warnings_.push_back(
+        fmt::format("glTF: {}: ignored on a transmitting material (Prism puts no thin film on glass)", film_where));
+    return;
+  }
+  m.iridescence = static_cast<float>(factor);
+  m.iridescence_ior = static_cast<float>(ior);
+  m.iridescence_thickness_min_nm = static_cast<float>(thinnest);
+  m.iridescence_thickness_max_nm = static_cast<float>(thickest);
+  m.iridescence_texture = extension_texture(iridescence, "iridescenceTexture", TextureEncoding::linear, film_where);
+  m.iridescence_thickness_texture =
+      extension_texture(iridescence, "iridescenceThicknessTexture", TextureEncoding::linear, film_where);
 }
 
 // An extension's textureInfo (an object with "index", optional "texCoord" and its own

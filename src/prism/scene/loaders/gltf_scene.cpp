@@ -122,9 +122,10 @@ void GltfBuilder::check_extensions() {
       "KHR_materials_emissive_strength", "KHR_lights_punctual", "KHR_materials_transmission",
       "KHR_materials_ior",               "KHR_materials_volume", "KHR_texture_transform",
       "KHR_materials_dispersion",  // on transmitting materials: a Cauchy glass of the Abbe number
-      "KHR_materials_specular",  // factors (a coloured one as its mean, warned); textures warned
-      "KHR_materials_clearcoat",  // clearcoatNormalTexture is warned (gltf_materials.cpp)
-      "KHR_materials_sheen",      // bsdf/sheen.h; none on glass (warned)
+      "KHR_materials_specular",     // factors and textures (metallic_roughness.h)
+      "KHR_materials_clearcoat",    // clearcoatNormalTexture is warned (gltf_materials.cpp)
+      "KHR_materials_sheen",        // bsdf/sheen.h; none on glass (warned)
+      "KHR_materials_iridescence",  // bsdf/thin_film.h; none on glass (warned)
       "KHR_mesh_quantization",    // integer attributes: gltf_accessors.cpp reads every allowed type
       "KHR_materials_variants"};  // LoadOptions::material_variant picks one
   const auto supported = [](const std::string& e) { return std::find(kSupported.begin(), kSupported.end(), e) != kSupported.end(); };

@@ -140,6 +140,16 @@ json material_json(const Scene& scene, const Material& m) {
     if (m.clearcoat_roughness_texture >= 0)
       coat["clearcoatRoughnessTexture"] = texture_info(scene, m.clearcoat_roughness_texture);
   }
+  if (m.has_iridescence()) {
+    auto& film = j["extensions"]["KHR_materials_iridescence"];
+    film = {{"iridescenceFactor", m.iridescence},
+            {"iridescenceIor", m.iridescence_ior},
+            {"iridescenceThicknessMinimum", m.iridescence_thickness_min_nm},
+            {"iridescenceThicknessMaximum", m.iridescence_thickness_max_nm}};
+    if (m.iridescence_texture >= 0) film["iridescenceTexture"] = texture_info(scene, m.iridescence_texture);
+    if (m.iridescence_thickness_texture >= 0)
+      film["iridescenceThicknessTexture"] = texture_info(scene, m.iridescence_thickness_texture);
+  }
   if (m.has_sheen()) {
     auto& sheen = j["extensions"]["KHR_materials_sheen"];
     const Vec3f& c = m.sheen_color;
@@ -181,7 +191,8 @@ void write_scene_glb(const Scene& scene, const std::filesystem::path& path) {
   json doc = {{"asset", {{"version", "2.0"}, {"generator", "Prism"}}},
               {"extensionsUsed", {"KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior",
                                   "KHR_materials_specular", "KHR_materials_volume", "KHR_materials_clearcoat",
-                                  "KHR_materials_dispersion", "KHR_materials_sheen"}},
+                                  "KHR_materials_dispersion", "KHR_materials_sheen",
+                                  "KHR_materials_iridescence"}},
               {"bufferViews", json::array()}, {"accessors", json::array()}, {"meshes", json::array()},
               {"materials", json::array()}, {"nodes", json::array()}};
   for (const Material& m : scene.materials) doc["materials"].push_back(material_json(scene, m));

@@ -182,6 +182,30 @@ void JsonSceneReader::read_sheen(Material& m, const JsonValue& value) {
     m.sheen_roughness_texture = read_texture(*t, TextureEncoding::linear);
 }
 
+// A thin film (glTF KHR_materials_iridescence; bsdf/thin_film.h) on a metallic_roughness
+// material.
+void JsonSceneReader::read_iridescence(Material& m, const JsonValue& value) {
+  const auto weight = value.find("iridescence");
+  if (!weight) {
+    for (const char* key : {"iridescence_ior", "iridescence_thickness_min_nm", "iridescence_thickness_max_nm",
+                            "iridescence_texture", "iridescence_thickness_texture"})
+      if (value.has(key)) value[key].fail("give 'iridescence' (the thin film's weight) with it");
+    return;
+  }
+  if (m.type != MaterialType::metallic_roughness)
+    weight->fail("only metallic_roughness materials take a thin film");
+  m.iridescence = value.get_float("iridescence", m.iridescence, 0.0f, 1.0f);
+  m.iridescence_ior = value.get_float("iridescence_ior", m.iridescence_ior, 1.0f, 10.0f);
+  m.iridescence_thickness_min_nm =
+      value.get_float("iridescence_thickness_min_nm", m.iridescence_thickness_min_nm, 0.0f, 1e5f);
+  m.iridescence_thickness_max_nm =
+      value.get_float("iridescence_thickness_max_nm", m.iridescence_thickness_max_nm, 0.0f, 1e5f);
+  // glTF's encodings: both linear, the weight in R, the thickness in G.
+  if (auto t = value.find("iridescence_texture")) m.iridescence_texture = read_texture(*t, TextureEncoding::linear);
+  if (auto t = value.find("iridescence_thickness_texture"))
+    m.iridescence_thickness_texture = read_texture(*t, TextureEncoding::linear);
+}
+
 void JsonSceneReader::read_material(const JsonValue& value) {
   value.expect_keys({"name", "type", "base_color", "base_color_spectrum", "base_color_texture", "roughness",
                      "anisotropy", "metallic", "metallic_roughness_texture", "normal_texture", "normal_scale",
@@ -189,7 +213,9 @@ void JsonSceneReader::read_material(const JsonValue& value) {
                      "transmission", "attenuation_color", "attenuation_distance", "specular", "specular_color",
                      "specular_texture", "specular_color_texture", "clearcoat", "clearcoat_roughness",
                      "clearcoat_texture", "clearcoat_roughness_texture", "sheen_color", "sheen_roughness",
-                     "sheen_color_texture", "sheen_roughness_texture", "alpha_mode", "alpha_cutoff", "opacity",
+                     "sheen_color_texture", "sheen_roughness_texture", "iridescence", "iridescence_ior",
+                     "iridescence_thickness_min_nm", "iridescence_thickness_max_nm", "iridescence_texture",
+                     "iridescence_thickness_texture", "alpha_mode", "alpha_cutoff", "opacity",
                      "emission"});
   Material m;
   m.name = value["name"].as_string();
@@ -270,6 +296,7 @@ void JsonSceneReader::read_material(const JsonValue& value) {
   if (auto t = value.find("specular_color_texture")) m.specular_color_texture = read_texture(*t, TextureEncoding::srgb);
   read_clearcoat(m, value);
   read_sheen(m, value);
+  read_iridescence(m, value);
   if (auto a = value.find("alpha_mode"))
     m.alpha_mode = a->as_enum<AlphaMode>({{"opaque", AlphaMode::opaque}, {"mask", AlphaMode::mask}, {"blend", AlphaMode::blend}});
   m.alpha_cutoff = value.get_float("alpha_cutoff", m.alpha_cutoff, 0.0f, 1.0f);

@@ -44,6 +44,7 @@ struct JsonSceneReader {
   void read_attenuation(Material& m, const JsonValue& value) const;
   void read_clearcoat(Material& m, const JsonValue& value);
   void read_sheen(Material& m, const JsonValue& value);
+  void read_iridescence(Material& m, const JsonValue& value);
   void read_light(const JsonValue& value);
   void read_environment(const JsonValue& value);
   // A light's `color` (≥ 0) and `color_space`, or its `spectrum` instead.

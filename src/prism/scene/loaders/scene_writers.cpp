@@ -155,6 +155,15 @@ void write_scene_json(const Scene& scene, const std::filesystem::path& path) {
       if (m.clearcoat_roughness_texture >= 0)
         w(", \"clearcoat_roughness_texture\": {}", json_texture(scene, files, m.clearcoat_roughness_texture));
     }
+    if (m.has_iridescence()) {
+      w(", \"iridescence\": {}, \"iridescence_ior\": {}, \"iridescence_thickness_min_nm\": {}, "
+        "\"iridescence_thickness_max_nm\": {}",
+        m.iridescence, m.iridescence_ior, m.iridescence_thickness_min_nm, m.iridescence_thickness_max_nm);
+      if (m.iridescence_texture >= 0)
+        w(", \"iridescence_texture\": {}", json_texture(scene, files, m.iridescence_texture));
+      if (m.iridescence_thickness_texture >= 0)
+        w(", \"iridescence_thickness_texture\": {}", json_texture(scene, files, m.iridescence_thickness_texture));
+    }
     if (m.has_sheen()) {
       w(", \"sheen_color\": {}, \"sheen_roughness\": {}", vec(m.sheen_color), m.sheen_roughness);
       if (m.sheen_color_texture >= 0) w(", \"sheen_color_texture\": {}", json_texture(scene, files, m.sheen_color_texture));
@@ -298,10 +307,15 @@ PbrtMaterialTextures write_pbrt_textures(Writer& w, const Scene& scene, std::siz
 
 void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
   check_writable(scene);
-  // pbrt-v4 has no sheen: refused before any file is written, not dropped in silence.
-  for (const Material& m : scene.materials)
+  // pbrt-v4 has no sheen and no thin film: refused before any file is written, not dropped
+  // in silence.
+  for (const Material& m : scene.materials) {
     if (m.has_sheen())
       throw UsageError(fmt::format("pbrt writer: material '{}' has a sheen, which pbrt-v4 cannot hold", m.name));
+    if (m.has_iridescence())
+      throw UsageError(fmt::format("pbrt writer: material '{}' has a thin film (iridescence), which pbrt-v4 cannot hold",
+                                   m.name));
+  }
   const std::vector<std::string> files = write_scene_textures(scene, path);
   Writer w(path);
   const Camera& c = scene.camera;

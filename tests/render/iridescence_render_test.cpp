@@ -98,12 +98,18 @@ TEST(IridescenceRender, GltfFactorsDefaultsAndRules) {
   EXPECT_FLOAT_EQ(m.iridescence_thickness_max_nm, 700.0f);
   for (const std::string& w : s.warnings) EXPECT_EQ(w.find("KHR_materials_iridescence"), std::string::npos) << w;
   // The extension's defaults: η 1.3, 100–400 nm; factor 0 is no film.
-  const Material& d = gltf_with_material(R"({"extensions": {"KHR_materials_iridescence": {"iridescenceFactor": 1}}})")
-                          .materials[0];
+  const Scene defaults = gltf_with_material(R"({"extensions": {"KHR_materials_iridescence": {"iridescenceFactor": 1}}})");
+  const Material& d = defaults.materials[0];
   EXPECT_FLOAT_EQ(d.iridescence_ior, 1.3f);
   EXPECT_FLOAT_EQ(d.iridescence_thickness_min_nm, 100.0f);
   EXPECT_FLOAT_EQ(d.iridescence_thickness_max_nm, 400.0f);
   EXPECT_FALSE(gltf_with_material(R"({"extensions": {"KHR_materials_iridescence": {}}})").materials[0].has_iridescence());
+  // specularFactor 0 (Lambert alone) keeps its film: metallic_roughness with a layer of weight 0.
+  const Scene lambert_scene = gltf_with_material(R"({"pbrMetallicRoughness": {"metallicFactor": 0},
+      "extensions": {"KHR_materials_specular": {"specularFactor": 0}, "KHR_materials_iridescence": {"iridescenceFactor": 1}}})");
+  const Material& lambert = lambert_scene.materials[0];
+  EXPECT_TRUE(lambert.has_iridescence());
+  EXPECT_EQ(lambert.specular, 0.0f);
   const Scene glass = gltf_with_material(R"({"extensions": {"KHR_materials_transmission": {"transmissionFactor": 1},
       "KHR_materials_iridescence": {"iridescenceFactor": 1}}})");
   EXPECT_FALSE(glass.materials[0].has_iridescence());

@@ -368,6 +368,9 @@ void GltfBuilder::read_iridescence(Material& m, const tinygltf::Value& iridescen
     if (!(d >= 0.0 && d <= 1e5))
       fail(fmt::format("{}: iridescenceThicknessMinimum and Maximum must be in [0, 100000] nm", film_where));
   if (factor == 0.0) return;  // no film
+  // specularFactor 0 made Lambert of a plain dielectric (read_specular); under a film it
+  // stays the metallic_roughness material it is, its specular layer weighted 0.
+  if (m.type == MaterialType::diffuse) m.type = MaterialType::metallic_roughness, m.specular = 0.0f;
   if (m.type != MaterialType::metallic_roughness) {
     warnings_.push_back(
         fmt::format("glTF: {}: ignored on a transmitting material (Prism puts no thin film on glass)", film_where));

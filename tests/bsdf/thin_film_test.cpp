@@ -142,7 +142,9 @@ TEST(ThinFilm, WhiteBaseUnderAFilmGainsNoEnergy) {
       });
       std::printf("[ film furnace ] θ %.0f° channel %d: %.4f ± %.4f\n", theta, channel, e.mean, e.stderr_);
       EXPECT_LE(e.mean, 1.0 + 4.0 * e.stderr_) << theta << " " << channel;
-      if (theta <= 45.0) EXPECT_GT(e.mean, 0.95) << theta << " " << channel;
+      if (theta <= 45.0) {
+        EXPECT_GT(e.mean, 0.95) << theta << " " << channel;
+      }
     }
 }
 

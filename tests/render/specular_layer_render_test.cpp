@@ -55,7 +55,9 @@ TEST(SpecularLayerRender, TintedSpecularColourReflectsPerChannel) {
     for (int c = 0; c < 3; ++c)
       EXPECT_NEAR(t.mean[c], l.mean[c], 5.0 * std::sqrt(t.variance[c] + l.variance[c]) + 2e-3)
           << static_cast<int>(kind) << " channel " << c;
-    if (kind == TransportKind::rgb) EXPECT_NEAR(l.mean.y, 1.0 / 9.0, 1e-4);  // the working space's G
+    if (kind == TransportKind::rgb) {
+      EXPECT_NEAR(l.mean.y, 1.0 / 9.0, 1e-4);  // the working space's G
+    }
   }
 }
 

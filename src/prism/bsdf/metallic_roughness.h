@@ -93,14 +93,14 @@ struct MetallicRoughness {
 
   // With a film: the bracket at cos θ = wi·h, given the film's reflectance there, per
   // channel.
-  color::SampledSpectrum<N> filmed_specular_fresnel(float cos_theta,
-                                                    const color::SampledSpectrum<N>& over_dielectric) const {
+  color::SampledSpectrum<N> filmed_specular_fresnel(float cos_theta, const color::SampledSpectrum<N>& over_dielectric,
+                                                    const color::SampledSpectrum<N>& over_metal) const {
     const float w = film.weight;
     color::SampledSpectrum<N> specular =
         (fresnel_schlick(dielectric_f0, cos_theta) * ((1.0f - w) * specular_weight) + over_dielectric * w) *
         (1.0f - metallic);
     if (metallic > 0.0f)
-      specular += (fresnel_schlick(base_color, cos_theta) * (1.0f - w) + film.over_metal(cos_theta) * w) * metallic;
+      specular += (fresnel_schlick(base_color, cos_theta) * (1.0f - w) + over_metal * w) * metallic;
     return specular;
   }
   // The diffuse weight (without (1 − m)) at cos θ = wi·h, given the film's reflectance
@@ -116,9 +116,9 @@ struct MetallicRoughness {
     if (__builtin_expect(film.present(), 0)) {
       // The film's reflectance at θo stands in for its average over the lobe's facets and
       // the diffuse directions (an estimate: only the sampling probabilities use it).
-      const color::SampledSpectrum<N> reflected = film.over_dielectric(cos_o);
-      return {filmed_specular_fresnel(cos_o, reflected).average(),
-              (1.0f - metallic) * (base_color * filmed_diffuse_weight(cos_o, reflected)).average()};
+      const auto& at_wo = film.at_wo(cos_o, metallic > 0.0f);
+      return {filmed_specular_fresnel(cos_o, at_wo.over_dielectric, at_wo.over_metal).average(),
+              (1.0f - metallic) * (base_color * filmed_diffuse_weight(cos_o, at_wo.over_dielectric)).average()};
     }
     return {specular_fresnel(cos_o).average(), (1.0f - metallic) * base_color.average() * diffuse_transmission(cos_o)};
   }
@@ -140,9 +140,12 @@ struct MetallicRoughness {
     const float i_h = dot(i, h);
     const float spec = distribution.D(h) * distribution.G2(o, i) / (4.0f * o.z * i.z);
     if (__builtin_expect(film.present(), 0)) {
-      const color::SampledSpectrum<N> diffuse = filmed_diffuse_weight(i_h, film.over_dielectric(o.z));
+      const color::SampledSpectrum<N> diffuse =
+          filmed_diffuse_weight(i_h, film.at_wo(o.z, metallic > 0.0f).over_dielectric);
       return base_color * diffuse * ((1.0f - metallic) * std::numbers::inv_pi_v<float>) +
-             filmed_specular_fresnel(i_h, film.over_dielectric(i_h)) * spec;
+             filmed_specular_fresnel(i_h, film.over_dielectric(i_h),
+                                     metallic > 0.0f ? film.over_metal(i_h) : color::SampledSpectrum<N>(0.0f)) *
+                 spec;
     }
     const float diffuse_weight = (1.0f - metallic) * diffuse_transmission(i_h) * std::numbers::inv_pi_v<float>;
     return base_color * diffuse_weight + specular_fresnel(i_h) * spec;

@@ -55,6 +55,20 @@ struct ThinFilm {
       r[i] = static_cast<float>(thin_film_reflectance(cos_theta, wavelength_nm[i], thickness_nm, eta_film, metal_eta[i]));
     return r;
   }
+
+  // Both at |cos θo|, kept for the vertex's next call: a shading vertex asks with one wo for
+  // the sampling probabilities, f and pdf several times (sampling, NEE, MIS), as
+  // Sheen::at_wo does. A BSDF is one vertex's, on one thread; a copy carries the cache along.
+  struct AtWo {
+    float cos_o = -1.0f;  // none yet
+    color::SampledSpectrum<N> over_dielectric{0.0f}, over_metal{0.0f};
+  };
+  mutable AtWo at_wo_;
+  const AtWo& at_wo(float cos_o, bool metal) const {
+    if (cos_o != at_wo_.cos_o)
+      at_wo_ = {cos_o, over_dielectric(cos_o), metal ? over_metal(cos_o) : color::SampledSpectrum<N>(0.0f)};
+    return at_wo_;
+  }
 };
 
 // The real index whose normal-incidence reflectance from air is f0 ∈ [0, 1): (1 + √f0)/(1 − √f0),

@@ -127,23 +127,35 @@ TEST(ThinFilm, MetallicRoughnessWithAFilmFollowsItsFormula) {
 }
 
 // Under a film the diffuse base and the film's reflection share each channel's light: a
-// white, non-metal base under a full film (w = 1) reflects at most what arrives, in every
-// channel, at every angle (4σ): the base reflects 1 − R(θo), the lobe at most R(θo) (its
-// facets see the film at wi·h ≈ cos θo, and shadowing only loses). Near normal and at 45°
-// it loses little (measured 0.98–1.00); at grazing the lobe's own shadowing loses more
-// where the film reflects most, as without a film in proportion to F.
-TEST(ThinFilm, WhiteBaseUnderAFilmGainsNoEnergy) {
-  const Bsdf<3> b{filmed(S3(1.0f), 0.0f, 1.0f, 250.0f)};
+// white, non-metal base under a full film (w = 1) reflects 1 − R(θo) diffusely, plus the
+// lobe's own albedo, which a black base under the same film shows alone (both 4σ of their
+// combined noise). The lobe's albedo is close to R(θo): its facets see the film at
+// wi·h = wo·h near cos θo, and shadowing loses a little; so near normal and at 45° the
+// white furnace is within a few per cent of 1 (measured 0.98–1.001; the extension's
+// 1 − max(R(wi·h)) weighting measured up to 1.09 here), and at grazing the lobe's
+// shadowing loses more where the film reflects most.
+TEST(ThinFilm, WhiteBaseKeepsWhatTheFilmDoesNotReflectTowardsTheViewer) {
+  const auto white = filmed(S3(1.0f), 0.0f, 1.0f, 250.0f);
+  auto black = white;
+  black.base_color = S3(0.0f);
+  const auto albedo = [](const Bsdf<3>& b, double theta, int channel, unsigned long long seed) {
+    return test_helpers::monte_carlo(100'000, seed, [&](Pcg32& rng) {
+      const auto s = b.sample(test_helpers::direction_at(theta), rng.next_float(), Vec2f(rng.next_float(), rng.next_float()));
+      return s ? double(s->f[channel]) * std::abs(s->wi.z) / s->pdf : 0.0;
+    });
+  };
   for (double theta : {0.0, 45.0, 80.0})
     for (int channel = 0; channel < 3; ++channel) {
-      const test_helpers::Estimate e = test_helpers::monte_carlo(100'000, 9 + channel, [&](Pcg32& rng) {
-        const auto s = b.sample(test_helpers::direction_at(theta), rng.next_float(), Vec2f(rng.next_float(), rng.next_float()));
-        return s ? double(s->f[channel]) * std::abs(s->wi.z) / s->pdf : 0.0;
-      });
-      std::printf("[ film furnace ] θ %.0f° channel %d: %.4f ± %.4f\n", theta, channel, e.mean, e.stderr_);
-      EXPECT_LE(e.mean, 1.0 + 4.0 * e.stderr_) << theta << " " << channel;
+      const test_helpers::Estimate total = albedo(Bsdf<3>{white}, theta, channel, 9 + channel);
+      const test_helpers::Estimate lobe = albedo(Bsdf<3>{black}, theta, channel, 19 + channel);
+      const double cos_o = std::cos(theta * std::numbers::pi / 180.0);
+      const double reflected = thin_film_reflectance(cos_o, white.film.wavelength_nm[channel], 250.0, 1.8, 1.5);
+      std::printf("[ film furnace ] θ %.0f° channel %d: %.4f ± %.4f (lobe %.4f, R(θo) %.4f)\n", theta, channel,
+                  total.mean, total.stderr_, lobe.mean, reflected);
+      EXPECT_NEAR(total.mean, lobe.mean + (1.0 - reflected), 4.0 * std::hypot(total.stderr_, lobe.stderr_))
+          << theta << " " << channel;
       if (theta <= 45.0) {
-        EXPECT_GT(e.mean, 0.95) << theta << " " << channel;
+        EXPECT_NEAR(total.mean, 1.0, 0.05) << theta << " " << channel;
       }
     }
 }

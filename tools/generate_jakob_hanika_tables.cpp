@@ -11,7 +11,6 @@
 #include <vector>
 
 #include "prism/color/color_space.h"
-#include "prism/color/illuminants.h"
 #include "prism/color/jakob_hanika_fit.h"
 
 int main(int argc, char** argv) {
@@ -32,8 +31,7 @@ int main(int argc, char** argv) {
     const auto start = std::chrono::steady_clock::now();
     const prism::color::ColorSpace& space = prism::color::color_space(name);
     prism::color::JakobHanikaTableStats stats;
-    const prism::color::JakobHanikaTableData table = prism::color::generate_jakob_hanika_table(
-        space.rgb_to_xyz, prism::color::illuminant_for_white(space.white), resolution, &stats);
+    const prism::color::JakobHanikaTableData table = prism::color::generate_jakob_hanika_table(space, resolution, &stats);
     const std::string path = output_dir + "/jakob_hanika_" + name + "_" + std::to_string(resolution) + ".bin";
     std::ofstream out(path, std::ios::binary);
     out.write(reinterpret_cast<const char*>(table.scale.data()),

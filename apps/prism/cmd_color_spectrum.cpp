@@ -61,8 +61,9 @@ void add_spectrum(CLI::App& parent, Action& action) {
       ->type_name("METHOD");
   cmd->add_flag("--emission", opt->emission,
                 "Emission rule: adapt to illuminant E (Bradford), fit, scale so 683*int(S*ybar) = --nits; "
-                "values are spectral radiance in W/(m^2 sr nm). Without it: a reflectance in [0,1] "
-                "(components clamped to [0,1])");
+                "values are spectral radiance in W/(m^2 sr nm). Without it: the reflectance in [0,1] a "
+                "spectral render uses (components clamped to [0,1]), which under a flat (illuminant E) "
+                "light, adapted to the space's white, has the colour R G B");
   cmd->add_option("--nits", opt->nits, "Luminance of the emission spectrum in cd/m^2")
       ->capture_default_str()
       ->type_name("L");
@@ -75,7 +76,7 @@ void add_spectrum(CLI::App& parent, Action& action) {
       if (opt->method == "mallett-yuksel") {
         if (space.name != "srgb") throw UsageError("mallett-yuksel needs --space srgb (its basis is for sRGB under D65)");
         if (opt->emission) throw UsageError("mallett-yuksel describes reflectances; use --method jakob-hanika with --emission");
-        const color::MallettYukselSpectrum s(rgb);
+        const color::MallettYukselSpectrum s(color::mallett_yuksel_weights_under_e(rgb));
         print_spectrum([&](double nm) { return s(nm); });
       } else if (opt->method == "jakob-hanika") {
         if (opt->emission) {

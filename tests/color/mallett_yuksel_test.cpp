@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "prism/color/color_space.h"
+#include "prism/color/emission_spectrum.h"
 #include "prism/color/illuminants.h"
 #include "prism/color/mallett_yuksel.h"
 #include "prism/core/pcg32.h"
@@ -72,6 +73,45 @@ TEST(MallettYuksel, SpectrumStaysWithinZeroAndOne) {
       EXPECT_LE(s(nm), 1.0 + 1e-12);
     }
   }
+}
+
+// What a spectral render uses (mallett_yuksel_weights_under_e): under the flat spectrum E,
+// adapted E → D65 as the film does, the spectrum of the weights has the albedo's colour.
+// Where no weight is clipped this is exact algebra (A is computed with the same quadrature)
+// but for A's rows being scaled so that white stays s = 1, a relative 1e-4 (the CMFs'
+// ∫x̄ = ∫ȳ = ∫z̄ over 380–780 nm; measured 1.5e-4): bound 3e-4. Near the cube's primaries a
+// weight is clipped by at most 0.0065 (the header's figure), which moved a channel by
+// 4.7e-3 at most here; bound 1e-2. White itself must stay the perfect reflector.
+// The authors' own weights (the albedo) miss by up to 0.045 (the red of (0.63, 0.065,
+// 0.05)) — the failure this guards against.
+TEST(MallettYuksel, WeightsUnderEFilmAsTheAlbedo) {
+  const Mat3 film_to_srgb = spectral_xyz_to_rgb_matrix(color_space("srgb"));
+  const DenseSpectrum& e = standard_illuminant(StandardIlluminant::e);
+  Pcg32 rng(3, 4);
+  double max_inside = 0.0, max_anywhere = 0.0, max_plain = 0.0;
+  for (int n = 0; n < 1000; ++n) {
+    Vec3d rgb{rng.next_double(), rng.next_double(), rng.next_double()};
+    if (n < 8) rgb = Vec3d(n & 1, (n >> 1) & 1, (n >> 2) & 1);
+    if (n == 8) rgb = Vec3d(0.63, 0.065, 0.05);
+    const Vec3d w = mallett_yuksel_weights_under_e(rgb);
+    for (int c = 0; c < 3; ++c) ASSERT_TRUE(w[c] >= 0.0 && w[c] <= 1.0);
+    const bool clipped = !(w.x > 0.0 && w.x < 1.0 && w.y > 0.0 && w.y < 1.0 && w.z > 0.0 && w.z < 1.0);
+    const Vec3d filmed = film_to_srgb * reflectance_to_xyz(MallettYukselSpectrum(w), e);
+    const Vec3d plain = film_to_srgb * reflectance_to_xyz(MallettYukselSpectrum(rgb), e);
+    for (int c = 0; c < 3; ++c) {
+      const double error = std::abs(filmed[c] - rgb[c]);
+      max_anywhere = std::max(max_anywhere, error);
+      if (!clipped) max_inside = std::max(max_inside, error);
+      max_plain = std::max(max_plain, std::abs(plain[c] - rgb[c]));
+    }
+  }
+  std::printf("Mallett-Yuksel under E: max |rgb error| %.2e unclipped, %.2e with clipped weights; "
+              "the authors' weights %.3f\n", max_inside, max_anywhere, max_plain);
+  EXPECT_LT(max_inside, 3e-4);
+  const MallettYukselSpectrum white(mallett_yuksel_weights_under_e(Vec3d(1.0)));
+  for (double nm = 380.0; nm <= 780.0; nm += 1.0) EXPECT_NEAR(white(nm), 1.0, 1e-12) << nm;
+  EXPECT_LT(max_anywhere, 1e-2);
+  EXPECT_GT(max_plain, 0.03);  // the correction is needed (and still applied)
 }
 
 }  // namespace

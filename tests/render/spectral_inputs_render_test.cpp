@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "prism/color/color_space.h"
+#include "prism/color/emission_spectrum.h"
 #include "prism/color/illuminants.h"
 #include "prism/render/renderer.h"
 #include "prism/scene/spectral_inputs.h"
@@ -89,8 +90,9 @@ TEST(SpectralInputsRender, EmitterSpdIsItsXyzInRgbTransport) {
 TEST(SpectralInputsRender, MeasuredReflectanceUnderWhiteLight) {
   // A white directional light of E lux straight down on the floor: a white Lambertian surface
   // would have L = E/π nits with a flat spectrum (the emission rule for the working white).
-  // With reflectance R(λ) the film holds (E/π) · XYZ(R)/∫ȳ in spectral transport, and
-  // (E/π) · the working RGB of R under D65 in RGB transport (deterministic: a delta light).
+  // With reflectance R(λ) the film holds (E/π) · XYZ(R)/∫ȳ in spectral transport, and RGB
+  // transport holds exactly that converted to working RGB as a spectral film is (Bradford
+  // E → D65, then sRGB): the two transports agree (deterministic: a delta light).
   const color::PiecewiseLinearSpectrum red({400.0, 550.0, 600.0, 700.0}, {0.05, 0.08, 0.6, 0.7});
   Material m;
   m.base_color_spectrum = red;
@@ -109,9 +111,8 @@ TEST(SpectralInputsRender, MeasuredReflectanceUnderWhiteLight) {
   expect_within_noise(spectral, xyz_r * (white_nits / y_bar_integral), "spectral");
 
   const Film rgb = render(scene, small_render(TransportKind::rgb)).film;
-  const Vec3d expected = color::color_space("srgb").xyz_to_rgb *
-                         color::reflectance_to_xyz(red, color::standard_illuminant(color::StandardIlluminant::d65)) *
-                         white_nits;
+  const Vec3d expected =
+      color::spectral_xyz_to_rgb_matrix(color::color_space("srgb")) * xyz_r * (white_nits / y_bar_integral);
   const Vec3d mean = test::block_estimate(rgb, 0, 0, 16, 16).mean;
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], std::max(expected[c], 0.0), 1e-5 * white_nits) << "channel " << c;
 }

@@ -47,7 +47,8 @@ TEST(SpectralInputs, ColoursAreTheSpectraSeenByAD65BalancedCamera) {
   const Vec3f hot = emission_spectrum_srgb(blackbody_emission_spectrum(10000.0));
   EXPECT_FLOAT_EQ(hot.z, 1.0f);
   EXPECT_LT(hot.x, hot.y);
-  // A flat reflectance of 0.4 is the grey 0.4 under D65 (the white's rounding again).
+  // A flat reflectance of 0.4 is the grey 0.4: as a spectral render films it under a white
+  // (flat) light, adapted E → D65 (the CMFs' ∫x̄ = ∫ȳ = ∫z̄ holds to 1e-4).
   const color::PiecewiseLinearSpectrum grey({400.0, 700.0}, {0.4, 0.4});
   const Vec3f g = reflectance_spectrum_srgb(grey);
   for (float v : {g.x, g.y, g.z}) EXPECT_NEAR(v, 0.4f, 1e-3f);

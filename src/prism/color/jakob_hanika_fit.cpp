@@ -8,7 +8,9 @@
 
 #include <tbb/parallel_for.h>
 
+#include "prism/color/chromatic_adaptation.h"
 #include "prism/color/cielab.h"
+#include "prism/color/illuminants.h"
 
 namespace prism::color {
 namespace {
@@ -244,6 +246,15 @@ JakobHanikaTableData generate_jakob_hanika_table(const Mat3& rgb_to_xyz, const D
     stats->max_delta_e = worst;
   }
   return table;
+}
+
+Mat3 jakob_hanika_target_xyz_matrix(const ColorSpace& space) {
+  return adaptation_matrix(white_XYZ(space), xy_to_XYZ(kWhiteE), Cat::bradford) * space.rgb_to_xyz;
+}
+
+JakobHanikaTableData generate_jakob_hanika_table(const ColorSpace& space, int resolution, JakobHanikaTableStats* stats) {
+  return generate_jakob_hanika_table(jakob_hanika_target_xyz_matrix(space), standard_illuminant(StandardIlluminant::e),
+                                     resolution, stats);
 }
 
 }  // namespace prism::color

@@ -9,6 +9,7 @@
 #include <array>
 #include <vector>
 
+#include "prism/color/color_space.h"
 #include "prism/color/sigmoid_polynomial.h"
 #include "prism/color/spectrum.h"
 #include "prism/core/mat3.h"
@@ -79,6 +80,21 @@ double jakob_hanika_chroma_node(int i, int resolution);   // x (or y) of node i
 // Y = 1) seen under `illuminant`. Parallel over grid columns (oneTBB).
 JakobHanikaTableData generate_jakob_hanika_table(const Mat3& rgb_to_xyz, const DenseSpectrum& illuminant,
                                                  int resolution, JakobHanikaTableStats* stats = nullptr);
+
+// What Prism's embedded tables fit. A spectral render's neutral is illuminant E: a white
+// light of any colour space becomes the flat spectrum (the emission rule,
+// emission_spectrum.h), and the film adapts E to the working white by Bradford
+// (spectral_xyz_to_rgb_matrix). So the reflectance of an RGB must reproduce that RGB when
+// lit by E and adapted the same way, i.e. have the CIE XYZ under E
+//   jakob_hanika_target_xyz_matrix(space) · rgb = Bradford(white → E) · rgb_to_xyz · rgb.
+// The paper (and pbrt-v4) fit under the space's own white instead (D65 for sRGB); under
+// Prism's E-white lights such a table rendered the Cornell box's green wall (0.14, 0.45,
+// 0.091) as (0.116, 0.452, 0.086) and its red (0.63, 0.065, 0.05) as (0.675, 0.064, 0.050):
+// illuminant metamerism between D65 and E, which no von Kries adaptation undoes.
+Mat3 jakob_hanika_target_xyz_matrix(const ColorSpace& space);
+// The table of `space` fitted that way: under illuminant E, to the targets above.
+JakobHanikaTableData generate_jakob_hanika_table(const ColorSpace& space, int resolution,
+                                                 JakobHanikaTableStats* stats = nullptr);
 
 // The RGB of grid point (l, k, j, i) (the colour its coefficients were fitted to).
 Vec3d jakob_hanika_grid_rgb(int l, int k, int j, int i, int resolution);

@@ -4,9 +4,10 @@
 // generate_jakob_hanika_tables.cpp) and embedded in the library. A lookup trilinearly
 // interpolates the coefficients of the 8 surrounding grid points (paper §5).
 //
-// The tables describe reflectances in [0, 1]³: the spectrum s(λ), seen under the space's
-// white illuminant (D65 for srgb and rec2020; for acescg an SPD with the ACES white, see
-// illuminant_for_white), reproduces the RGB.
+// The tables describe reflectances in [0, 1]³: the spectrum s(λ), seen under the flat
+// spectrum (illuminant E, the neutral of a spectral render) and adapted from E to the
+// space's white by Bradford as the film does, reproduces the RGB (see
+// jakob_hanika_target_xyz_matrix for why not under the space's own white).
 #include <cstdint>
 #include <span>
 #include <string>

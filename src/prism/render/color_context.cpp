@@ -84,7 +84,7 @@ ColorContext<SpectralMode<N>>::ColorContext(const Scene& scene, const TransportS
       srgb_table_(&color::JakobHanikaTable::get("srgb")) {
   for (const Material& m : scene.materials) {
     base_color_jh_.push_back(srgb_table_->lookup(Vec3d(m.base_color)));
-    base_color_rgb_.emplace_back(m.base_color);
+    base_color_my_weights_.push_back(color::mallett_yuksel_weights_under_e(Vec3d(m.base_color)));
     base_color_table_.push_back(-1);
     if (m.base_color_spectrum) {
       base_color_table_.back() = static_cast<std::int32_t>(spectrum_tables_.size());
@@ -115,7 +115,7 @@ template <int N>
 Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::reflectance(const Vec3f& srgb, const Wavelengths<Mode>& w) const {
   Spectrum<Mode> s;
   if (settings_.upsampling == Upsampling::mallett_yuksel) {
-    const color::MallettYukselSpectrum my{Vec3d(srgb)};
+    const color::MallettYukselSpectrum my{color::mallett_yuksel_weights_under_e(Vec3d(srgb))};
     for (int i = 0; i < N; ++i) s[i] = static_cast<float>(my(w.wavelength_nm[i]));
   } else {
     s = Spectrum<Mode>(color::evaluate_sigmoid_polynomial(srgb_table_->lookup(Vec3d(srgb)), w.wavelength_nm));
@@ -127,7 +127,7 @@ template <int N>
 Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::mallett_yuksel_base_color(std::uint32_t material,
                                                                                     const Wavelengths<Mode>& w) const {
   Spectrum<Mode> s;
-  const color::MallettYukselSpectrum my(base_color_rgb_[material]);
+  const color::MallettYukselSpectrum my(base_color_my_weights_[material]);
   for (int i = 0; i < N; ++i) s[i] = static_cast<float>(my(w.wavelength_nm[i]));
   return s;
 }
@@ -158,11 +158,13 @@ template class ColorContext<SpectralMode<8>>;
 ColorContext<RgbMode>::ColorContext(const Scene& scene, const TransportSettings& settings) {
   const color::ColorSpace& working = color::color_space(settings.working_space);
   srgb_to_working_ = color::conversion_matrix(color::color_space("srgb"), working);
-  WorkingWhiteSpd white(working);
+  const Mat3 film_to_working = color::spectral_xyz_to_rgb_matrix(working);
   for (const Material& m : scene.materials) {
     base_colors_.push_back(reflectance(m.base_color, {}));
     if (!m.base_color_spectrum) continue;
-    const Vec3d rgb = working.xyz_to_rgb * color::reflectance_to_xyz(*m.base_color_spectrum, white.get());
+    // What spectral transport films under a white (flat) light, in working RGB.
+    const Vec3d rgb = film_to_working * color::reflectance_to_xyz(*m.base_color_spectrum,
+                                                                  color::standard_illuminant(color::StandardIlluminant::e));
     // A measured colour outside the working gamut has negative channels: no reflectance is.
     for (int i = 0; i < 3; ++i) base_colors_.back()[i] = static_cast<float>(std::max(rgb[i], 0.0));
   }

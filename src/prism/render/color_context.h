@@ -3,8 +3,9 @@
 // colours (sRGB reflectances, emitters in a colour-picker space with a luminance) become
 // per-path spectra, and how a path's radiance becomes film values.
 //   spectral: channels are N sampled wavelengths; reflectances are upsampled (Jakob–Hanika
-//             2019 table of sRGB, or Mallett–Yuksel 2019); emitters follow the emission rule
-//             of color/emission_spectrum.h (E-relative); the film holds 683·XYZ (Y in nits),
+//             2019 table of sRGB, fitted relative to E so that a flat white light films the
+//             colour itself; or Mallett–Yuksel 2019); emitters follow the emission rule of
+//             color/emission_spectrum.h (E-relative); the film holds 683·XYZ (Y in nits),
 //             relative to illuminant E.
 //   rgb:      channels are the working space's R, G, B; reflectances are converted from
 //             sRGB primaries; emitters from their picker space (Bradford); the film holds
@@ -15,10 +16,12 @@
 //             L(λ) = K S(λ)/W(λ), K such that 683 ∫ L ȳ dλ is its luminance, so an emitter
 //             whose SPD is the working white's (D65 for sRGB) is the flat spectrum, neutral,
 //             exactly as a working-white colour is; its spikes stay where they are;
-//   rgb:      R becomes the working RGB of its colour under W (CIE 15 §7.1), S the working
-//             RGB of its CIE XYZ (W itself → white), scaled to the luminance.
-// The two agree up to the difference between a von Kries (Bradford) adaptation and the
-// spectral division (tests/render/spectral_inputs_render_test.cpp measures it).
+//   rgb:      R becomes the working RGB spectral transport films it as under a white light
+//             (XYZ under E, adapted E → W by Bradford), S the working RGB of its CIE XYZ
+//             (W itself → white), scaled to the luminance.
+// Reflectances agree exactly under a white light; emitters up to the difference between a
+// von Kries (Bradford) adaptation and the spectral division
+// (tests/render/spectral_inputs_render_test.cpp measures both).
 #include <cstdint>
 #include <vector>
 
@@ -59,10 +62,9 @@ class ColorContext<SpectralMode<N>> {
   // Emitted radiance (or intensity / illuminance for delta lights) of an emitter.
   Spectrum<Mode> emission(std::uint32_t emitter, const Wavelengths<Mode>& w) const;
   // Radiance given as linear Rec.709 RGB in nits (environment texels): upsampled with the
-  // Jakob–Hanika sRGB table at half the largest channel and scaled so that a grey texel
-  // becomes the flat (E-white) spectrum of the same luminance — the E-relative convention
-  // of the emission rule; colours are reproduced to the accuracy of a von Kries swap of
-  // the table's D65 fit for E.
+  // Jakob–Hanika sRGB table (E-relative, like the emission rule) at half the largest
+  // channel and scaled so that a grey texel becomes the flat spectrum of the same
+  // luminance; a colour films as itself to the table's accuracy.
   Spectrum<Mode> rgb_radiance(const Vec3f& linear_rec709_nits, const Wavelengths<Mode>& w) const;
   Vec3d to_film(const Spectrum<Mode>& value, const Wavelengths<Mode>& w) const;
   // A linear Rec.709 reflectance (the albedo AOV) as film values: CIE XYZ relative to E,
@@ -92,7 +94,7 @@ class ColorContext<SpectralMode<N>> {
   // paid (and every thread contended for) when it was called per lookup.
   const color::JakobHanikaTable* srgb_table_;
   std::vector<color::SigmoidPolynomial> base_color_jh_;
-  std::vector<Vec3d> base_color_rgb_;
+  std::vector<Vec3d> base_color_my_weights_;  // mallett_yuksel_weights_under_e
   std::vector<color::EmissionSpectrum> emitters_;
   // Spectra given as data: per material and per emitter an index into spectrum_tables_ (−1:
   // the colour's upsampled spectrum above); emitters' tables hold L(λ) with K applied.

@@ -226,6 +226,14 @@ std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settin
   h.value(settings.transport.stratify_first_wavelengths);
   h.value(settings.transport.upsampling);
   h.bytes(settings.transport.working_space.data(), settings.transport.working_space.size());
+  // Reflectances became E-relative (jakob_hanika_target_xyz_matrix,
+  // mallett_yuksel_weights_under_e; in RGB transport measured reflectances likewise): every
+  // coloured spectral pixel changed, so checkpoints from before must not resume into it.
+  constexpr std::uint32_t kReflectanceConvention = 2;
+  if (settings.transport.kind == TransportKind::spectral ||
+      std::any_of(scene.materials.begin(), scene.materials.end(),
+                  [](const Material& m) { return m.base_color_spectrum.has_value(); }))
+    h.value(kReflectanceConvention);
   for (const auto& l : scene.lights) {
     h.value(l.type);
     h.value(l.position);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "prism/color/color_space.h"
+#include "prism/color/emission_spectrum.h"
 #include "prism/color/illuminants.h"
 
 namespace prism {
@@ -61,9 +62,9 @@ Vec3f emission_spectrum_srgb(const color::PiecewiseLinearSpectrum& spd) {
 }
 
 Vec3f reflectance_spectrum_srgb(const color::PiecewiseLinearSpectrum& reflectance) {
-  const Vec3d xyz =
-      color::reflectance_to_xyz(reflectance, color::standard_illuminant(color::StandardIlluminant::d65));
-  return Vec3f(min(max(color::color_space("srgb").xyz_to_rgb * xyz, Vec3d(0.0)), Vec3d(1.0)));
+  const Vec3d xyz = color::reflectance_to_xyz(reflectance, color::standard_illuminant(color::StandardIlluminant::e));
+  const Vec3d rgb = color::spectral_xyz_to_rgb_matrix(color::color_space("srgb")) * xyz;
+  return Vec3f(min(max(rgb, Vec3d(0.0)), Vec3d(1.0)));
 }
 
 }  // namespace prism

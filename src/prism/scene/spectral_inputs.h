@@ -27,7 +27,9 @@ color::PiecewiseLinearSpectrum blackbody_emission_spectrum(double temperature_k)
 // (1931 observer) in sRGB without adaptation, so D65 is white and illuminant A orange, as a
 // camera balanced for D65 sees them; negative channels (colours outside Rec.709) clipped.
 Vec3f emission_spectrum_srgb(const color::PiecewiseLinearSpectrum& spd);
-// A reflectance's colour under D65 as linear Rec.709, clipped to [0, 1].
+// A reflectance's colour as linear Rec.709, clipped to [0, 1], as a spectral render films it
+// under a white light: its XYZ under the flat spectrum (illuminant E, the neutral of the
+// emission rule), adapted E → D65 by Bradford (color::spectral_xyz_to_rgb_matrix).
 Vec3f reflectance_spectrum_srgb(const color::PiecewiseLinearSpectrum& reflectance);
 
 // Gives an emitter (Emission, Light, or a loader's record with `color` and `spectrum`) its

@@ -9,6 +9,7 @@
 #include "loader_test_files.h"
 #include "prism/bsdf/ior.h"
 #include "prism/color/color_space.h"
+#include "prism/color/emission_spectrum.h"
 #include "prism/color/illuminants.h"
 #include "prism/color/spectrum.h"
 #include "prism/scene/load_scene.h"
@@ -19,16 +20,18 @@ namespace prism::loaders {
 namespace {
 
 // F0(λ) = ((η − 1)² + k²) / ((η + 1)² + k²) (Born & Wolf §14.2 at normal incidence), its
-// XYZ under D65 normalised to the perfect white, then linear Rec.709: computed here in
-// double precision from the tables, independently of the writer's code path.
+// XYZ under the flat spectrum E normalised to the perfect white, adapted E → D65 (Bradford)
+// and taken to linear Rec.709 — the colour a spectral render films the conductor as under a
+// white light: computed here in double precision from the tables, independently of the
+// writer's code path.
 Vec3d gold_f0_rec709() {
   const bsdf::ConductorIor au = bsdf::conductor_ior("Au");
   const auto f0 = [&](double nm) {
     const double n = au.eta(nm), k = au.k(nm);
     return ((n - 1.0) * (n - 1.0) + k * k) / ((n + 1.0) * (n + 1.0) + k * k);
   };
-  const Vec3d xyz = color::reflectance_to_xyz(f0, color::standard_illuminant(color::StandardIlluminant::d65));
-  return color::color_space("srgb").xyz_to_rgb * xyz;
+  const Vec3d xyz = color::reflectance_to_xyz(f0, color::standard_illuminant(color::StandardIlluminant::e));
+  return color::spectral_xyz_to_rgb_matrix(color::color_space("srgb")) * xyz;
 }
 
 TEST(AtriumGold, GlbBaseColourIsTheConductorsNormalIncidenceReflectance) {
@@ -43,9 +46,9 @@ TEST(AtriumGold, GlbBaseColourIsTheConductorsNormalIncidenceReflectance) {
   EXPECT_EQ(gold->type, MaterialType::metallic_roughness);
   EXPECT_FLOAT_EQ(gold->metallic, 1.0f);
   const Vec3d f0 = gold_f0_rec709();
-  // Gold's F0 is more saturated than Rec.709 holds: its red is 1.038, beyond a glTF base
+  // Gold's F0 is more saturated than Rec.709 holds: its red is 1.044, beyond a glTF base
   // colour's [0, 1]. The writer clamps per channel (the nearest colour in the cube: Y
-  // drops by 0.2126 × 0.038 ≈ 1 %); green and blue are inside.
+  // drops by 0.2126 × 0.044 ≈ 1 %); green and blue are inside.
   EXPECT_GT(f0.x, 1.0);
   EXPECT_LT(f0.x, 1.05);
   const Vec3d expected(1.0, f0.y, f0.z);

@@ -32,6 +32,9 @@ TEST(BsdfEnergy, PdfIntegratesToSamplingSuccessRate) {
       {RoughConductor<3>{MicrofacetDistribution::isotropic(MicrofacetType::beckmann, 0.5f), ConductorFresnel<3>::schlick(S3(1))}},
       {MetallicRoughness<3>::from_roughness(S3(0.5f), 0.3f, 0.6f)},
       {Dielectric<3>{S3(1.5f), MicrofacetDistribution::isotropic(MicrofacetType::ggx, 0.3f)}},
+      // Anisotropic (render/anisotropy.h): α along x and y differ.
+      {RoughConductor<3>{{MicrofacetType::ggx, 0.6f, 0.08f}, ConductorFresnel<3>::schlick(S3(1))}},
+      {Dielectric<3>{S3(1.5f), {MicrofacetType::ggx, 0.1f, 0.5f}}},
   };
   constexpr long kN = 400'000;
   for (const auto& b : bsdfs)
@@ -55,6 +58,8 @@ TEST(BsdfEnergy, ReciprocityOfReflection) {
       {RoughConductor<3>{MicrofacetDistribution::isotropic(MicrofacetType::ggx, 0.3f), ConductorFresnel<3>::complex_ior(S3(0.29f), S3(2.86f))}},
       {MetallicRoughness<3>::from_roughness(S3(0.5f), 0.3f, 0.6f)},
       {Dielectric<3>{S3(1.5f), MicrofacetDistribution::isotropic(MicrofacetType::ggx, 0.3f)}},
+      {RoughConductor<3>{{MicrofacetType::ggx, 0.6f, 0.08f}, ConductorFresnel<3>::complex_ior(S3(0.29f), S3(2.86f))}},
+      {RoughConductor<3>{{MicrofacetType::beckmann, 0.1f, 0.4f}, ConductorFresnel<3>::schlick(S3(0.9f))}},
   };
   Pcg32 rng(8, 9);
   for (const auto& b : bsdfs)

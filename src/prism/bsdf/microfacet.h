@@ -11,6 +11,7 @@
 // with exponent e = 2/α² − 2 (Walter et al. 2007, "Microfacet Models for Refraction",
 // §5.2), and borrows Beckmann's Λ at the same α, which that paper recommends; that Λ is an
 // approximation, so Blinn-Phong satisfies the projected-area identity only approximately.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -80,6 +81,24 @@ struct MicrofacetDistribution {
     return type == MicrofacetType::ggx && sampling != MicrofacetSampling::ndf;
   }
 };
+
+// Anisotropy as glTF's KHR_materials_anisotropy parametrises it (render/anisotropy.h): α
+// along the anisotropy direction is mix(α, 1, a²) for α across it and strength a (clamped
+// to [0, 1]).
+inline float anisotropic_alpha_along(float alpha_across, float strength) {
+  const float a = std::clamp(strength, 0.0f, 1.0f);
+  return alpha_across + (1.0f - alpha_across) * a * a;
+}
+// Its inverse: the strength that stretches α_across to α_along (α_across ≤ α_along ≤ 1),
+// for formats that give the two α (pbrt-v4's uroughness, vroughness).
+inline float anisotropy_strength_for(float alpha_across, float alpha_along) {
+  if (!(alpha_across < 1.0f)) return 0.0f;
+  return std::sqrt(std::clamp((alpha_along - alpha_across) / (1.0f - alpha_across), 0.0f, 1.0f));
+}
+// The narrowest α across the direction: an anisotropic lobe is never a delta (its α along
+// the direction need not be small), and as MetallicRoughness::kMinAlpha this keeps
+// D(h) ∝ 1/(α_x α_y) finite and evaluable in float.
+inline constexpr float kMinAnisotropicAlpha = 2e-3f;
 
 // Density of the reflected direction wi = reflect(wo, h) given the density of h:
 // p(wi) = p(h) / (4 |wo·h|) (Walter et al. 2007, eq. 14).

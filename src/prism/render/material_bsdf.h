@@ -51,6 +51,9 @@ struct MaterialPoint {
   Vec3f specular_color{1.0f};        // and its colour (KHR_materials_specular)
   float iridescence = 0.0f;          // the thin film's weight (KHR_materials_iridescence); 0: none
   float iridescence_thickness_nm = 0.0f;
+  // Anisotropy strength a (render/anisotropy.h; the integrator sets it, with the shading
+  // frame's s along the direction, where the material has anisotropy); 0: isotropic.
+  float anisotropy = 0.0f;
 
   bool has_sheen() const { return max_component(sheen_color) > 0.0f; }
   // A specular colour that is not a grey needs its own spectrum (make_bsdf's specular_f0).

@@ -85,6 +85,8 @@ void hash_scene_details(Fnv1a& h, const Scene& scene) {
     if (m.emission.texture != plain.emission.texture) h.value(m.emission.texture);
     if (m.emission.two_sided != plain.emission.two_sided) h.value(m.emission.two_sided);
     if (m.anisotropy != plain.anisotropy) h.value(m.anisotropy);
+    if (m.anisotropy_rotation_rad != plain.anisotropy_rotation_rad) h.value(m.anisotropy_rotation_rad);
+    if (m.anisotropy_texture != plain.anisotropy_texture) h.value(m.anisotropy_texture);
     if (m.microfacet != plain.microfacet) h.value(m.microfacet);
     if (m.conductor_fresnel != plain.conductor_fresnel) {
       h.value(m.conductor_fresnel);

@@ -9,6 +9,7 @@
 
 #include "prism/core/frame.h"
 #include "prism/core/parallel.h"
+#include "prism/render/anisotropy.h"
 #include "prism/render/bump_mapping.h"
 #include "prism/render/material_bsdf.h"
 #include "prism/render/normal_mapping.h"
@@ -169,12 +170,35 @@ void WavefrontIntegrator<Mode>::apply_bump_map(const Material& m, SurfaceInterac
 }
 
 template <class Mode>
+std::optional<typename WavefrontIntegrator<Mode>::AnisotropyAtHit> WavefrontIntegrator<Mode>::anisotropy_at_hit(
+    const Material& m, const SurfaceInteraction& si, float cone_width, const Ray& ray) const {
+  const auto space = surface_tangent_space(scene_.meshes[si.mesh], si.triangle, si.shading, si.tangent_from_mesh,
+                                           si.bitangent_sign);
+  if (!space) return std::nullopt;
+  std::optional<Vec2f> rg;
+  float strength = m.anisotropy;
+  if (const auto texel = texel_at_hit(m.anisotropy_texture, si, cone_width, ray)) {
+    rg = Vec2f((*texel)[0], (*texel)[1]);
+    strength *= (*texel)[2];
+  }
+  const Vec2f d = anisotropy_direction_in_tangent_space(m.anisotropy_rotation_rad, rg);
+  return AnisotropyAtHit{space->tangent * d.x + space->bitangent * d.y, strength};
+}
+
+template <class Mode>
 std::optional<bsdf::NormalMapMicrosurface> WavefrontIntegrator<Mode>::apply_maps(const Material& m,
                                                                                SurfaceInteraction& si,
-                                                                               float cone_width, const Ray& ray) const {
-  const Frame unmapped = si.shading;
+                                                                               float cone_width, const Ray& ray,
+                                                                               const Vec3f* anisotropy_direction) const {
+  Frame unmapped = si.shading;
   if (m.normal_texture >= 0) apply_normal_map(m, si, cone_width, ray);
   if (m.bump_texture >= 0) apply_bump_map(m, si, cone_width, ray);
+  // The lobe's frame runs along the anisotropy direction about whichever normal shades
+  // (the mapped one; the unmapped one the microsurface is expressed in).
+  if (anisotropy_direction) {
+    unmapped = frame_along(unmapped, *anisotropy_direction);
+    si.shading = frame_along(si.shading, *anisotropy_direction);
+  }
   // Microfacet normal mapping: the mapped frame becomes facet p of a microsurface around
   // the unmapped normal, and the vertex is shaded in the unmapped frame. Dielectrics (the
   // only materials whose BSDFs transmit, material_bsdf.h) stay classic.
@@ -314,8 +338,12 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   const Material& material = scene_.materials[si.material];
   p.cone_width[slot] += p.cone_spread[slot] * p.hit[slot].t;  // the ray cone's width at this hit
   std::optional<bsdf::NormalMapMicrosurface> microsurface;
+  std::optional<AnisotropyAtHit> anisotropy;
+  if (__builtin_expect(material.has_anisotropy(), 0)) anisotropy = anisotropy_at_hit(material, si, p.cone_width[slot], ray);
   if (material.normal_texture >= 0 || material.bump_texture >= 0)
-    microsurface = apply_maps(material, si, p.cone_width[slot], ray);
+    microsurface = apply_maps(material, si, p.cone_width[slot], ray, anisotropy ? &anisotropy->direction : nullptr);
+  else if (anisotropy)
+    si.shading = frame_along(si.shading, anisotropy->direction);
   // Rare (an opt-in mode on mapped materials): told so, GCC keeps the BSDF's own calls
   // inlined on the common path (Cachegrind, BENCHMARKS.md "Session 17").
   const bool on_microsurface = __builtin_expect(microsurface.has_value(), 0);
@@ -347,7 +375,8 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     return;
   }
 
-  const MaterialPoint point = material_point(material, si, p.cone_width[slot], ray);
+  MaterialPoint point = material_point(material, si, p.cone_width[slot], ray);
+  if (anisotropy) point.anisotropy = anisotropy->strength;
   // A sheen's colour and a tinted specular F0 are upsampled here, where the path's
   // wavelengths are known (rare: only the materials that have them pay for it).
   LayerColors<Mode> layer_colors;

@@ -118,10 +118,22 @@ class WavefrontIntegrator {
   bool has_texture(int texture, std::uint32_t mesh) const;
   // Applies the material's normal and bump maps to si.shading. With microfacet normal
   // mapping (and a material that does not transmit), returns the microsurface of the
-  // mapped frame instead and leaves si.shading unmapped.
+  // mapped frame instead and leaves si.shading unmapped. With an anisotropy direction
+  // (world space), both frames are turned about their normals to run along it.
   [[gnu::noinline]] std::optional<bsdf::NormalMapMicrosurface> apply_maps(const Material& material,
                                                                           SurfaceInteraction& si, float cone_width,
-                                                                          const Ray& ray) const;
+                                                                          const Ray& ray,
+                                                                          const Vec3f* anisotropy_direction) const;
+  // An anisotropic material's direction at the hit (world space, from the unmapped tangent
+  // space, render/anisotropy.h) and its strength (after the texture's B); nothing where the
+  // surface has no usable tangent.
+  struct AnisotropyAtHit {
+    Vec3f direction;
+    float strength;
+  };
+  [[gnu::noinline]] std::optional<AnisotropyAtHit> anisotropy_at_hit(const Material& material,
+                                                                    const SurfaceInteraction& si, float cone_width,
+                                                                    const Ray& ray) const;
   // Replaces si.shading by the material's normal-mapped frame, where it has a normal map.
   void apply_normal_map(const Material& material, SurfaceInteraction& si, float cone_width, const Ray& ray) const;
   // Microfacet normal mapping's two numbers for the slot's current bounce (pixel_sampler.h).

@@ -54,10 +54,19 @@ struct Material {
   Vec3f base_color{0.8f};        // albedo / specular tint / F0 / glass tint (1: clear), linear Rec.709
   int base_color_texture = -1;   // index into Scene::textures; multiplies base_color
   // Measured reflectance in [0, 1] instead of an RGB base colour (no texture then);
-  // base_color holds its colour under D65 (scene/spectral_inputs.h).
+  // base_color holds its colour under a white light (scene/spectral_inputs.h).
   std::optional<color::PiecewiseLinearSpectrum> base_color_spectrum;
   float roughness = 0.5f;        // perceptual roughness r; microfacet α = r²
-  float anisotropy = 0.0f;       // reserved for anisotropic roughness (0 = isotropic)
+  // Anisotropic roughness (glTF KHR_materials_anisotropy) of the microfacet lobe of
+  // metallic_roughness, conductor and dielectric materials (GGX or Beckmann; Blinn-Phong
+  // stays isotropic): with strength a = `anisotropy` ∈ [0, 1], α along the anisotropy
+  // direction is mix(r², 1, a²) and across it r² (render/anisotropy.h). The direction is
+  // the surface's tangent (+u: the mesh's tangents, else dP/du, else the first edge),
+  // turned by anisotropy_rotation_rad towards the bitangent. anisotropy_texture (linear)
+  // replaces (1, 0) by its RG × 2 − 1 in that turned tangent space and multiplies a by B.
+  float anisotropy = 0.0f;
+  float anisotropy_rotation_rad = 0.0f;
+  int anisotropy_texture = -1;
   float metallic = 0.0f;
   int metallic_roughness_texture = -1;  // glTF layout: G = roughness, B = metallic
   // Tangent-space normal map (glTF normalTexture; linear RGB = normal · ½ + ½ in the frame
@@ -145,6 +154,11 @@ struct Material {
   bool has_clearcoat() const { return clearcoat > 0.0f && type != MaterialType::dielectric; }
   bool has_sheen() const { return max_component(sheen_color) > 0.0f && type != MaterialType::dielectric; }
   bool has_iridescence() const { return iridescence > 0.0f && type == MaterialType::metallic_roughness; }
+  bool has_anisotropy() const {
+    return anisotropy > 0.0f && microfacet != MicrofacetModel::blinn_phong &&
+           (type == MaterialType::metallic_roughness || type == MaterialType::conductor ||
+            type == MaterialType::dielectric);
+  }
   // Whether paths inside this material lose light on the way (render/volume_absorption.h).
   bool absorbs_inside() const {
     return type == MaterialType::dielectric && !thin_walled && std::isfinite(attenuation_distance) &&

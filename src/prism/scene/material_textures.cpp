@@ -21,6 +21,7 @@ std::vector<bool> textures_used_by_materials(const Scene& scene) {
     mark(m.specular_color_texture);
     mark(m.iridescence_texture);
     mark(m.iridescence_thickness_texture);
+    mark(m.anisotropy_texture);
   }
   return used;
 }

@@ -33,6 +33,7 @@ class GltfBuilder {
   void read_specular(Material& m, const tinygltf::Value& specular, const std::string& where);
   void read_sheen(Material& m, const tinygltf::Value& sheen, const std::string& where);
   void read_iridescence(Material& m, const tinygltf::Value& iridescence, const std::string& where);
+  void read_anisotropy(Material& m, const tinygltf::Value& anisotropy, const std::string& where);
   void read_dispersion(Material& m, const tinygltf::Value& dispersion, const std::string& where);
   int extension_texture(const tinygltf::Value& object, const char* key, TextureEncoding encoding,
                         const std::string& where);

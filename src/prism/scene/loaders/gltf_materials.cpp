@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <optional>
 
 #include <fmt/format.h>
@@ -255,6 +256,8 @@ Material GltfBuilder::make_material(const tinygltf::Material& src, int index) {
   if (const tinygltf::Value* sheen = extension(src.extensions, "KHR_materials_sheen")) read_sheen(m, *sheen, where);
   if (const tinygltf::Value* iridescence = extension(src.extensions, "KHR_materials_iridescence"))
     read_iridescence(m, *iridescence, where);
+  if (const tinygltf::Value* anisotropy = extension(src.extensions, "KHR_materials_anisotropy"))
+    read_anisotropy(m, *anisotropy, where);
   // Occlusion is meaningless for a path tracer (the transport computes it) and is ignored.
   if (src.normalTexture.index >= 0) {
     const std::string normal_where = where + ".normalTexture";
@@ -383,6 +386,23 @@ void GltfBuilder::read_iridescence(Material& m, const tinygltf::Value& iridescen
   m.iridescence_texture = extension_texture(iridescence, "iridescenceTexture", TextureEncoding::linear, film_where);
   m.iridescence_thickness_texture =
       extension_texture(iridescence, "iridescenceThicknessTexture", TextureEncoding::linear, film_where);
+}
+
+// KHR_materials_anisotropy: anisotropyStrength ∈ [0, 1] (default 0), anisotropyRotation in
+// radians counter-clockwise from the tangent (default 0) and anisotropyTexture (linear: RG
+// the direction in tangent space, B the strength), render/anisotropy.h. It stretches the
+// microfacet lobe of whatever the material became (metallic_roughness or glass; a Lambert
+// of specularFactor 0 has no lobe to stretch).
+void GltfBuilder::read_anisotropy(Material& m, const tinygltf::Value& anisotropy, const std::string& where) {
+  const std::string anisotropy_where = where + ".extensions.KHR_materials_anisotropy";
+  const double strength = number(anisotropy, "anisotropyStrength", 0.0);
+  if (!(strength >= 0.0 && strength <= 1.0))
+    fail(fmt::format("{}: anisotropyStrength must be in [0, 1]", anisotropy_where));
+  const double rotation = number(anisotropy, "anisotropyRotation", 0.0);
+  if (!std::isfinite(rotation)) fail(fmt::format("{}: anisotropyRotation is not finite", anisotropy_where));
+  m.anisotropy = static_cast<float>(strength);
+  m.anisotropy_rotation_rad = static_cast<float>(std::remainder(rotation, 2.0 * std::numbers::pi));
+  m.anisotropy_texture = extension_texture(anisotropy, "anisotropyTexture", TextureEncoding::linear, anisotropy_where);
 }
 
 // An extension's textureInfo (an object with "index", optional "texCoord" and its own

@@ -126,6 +126,7 @@ void GltfBuilder::check_extensions() {
       "KHR_materials_clearcoat",    // clearcoatNormalTexture is warned (gltf_materials.cpp)
       "KHR_materials_sheen",        // bsdf/sheen.h; none on glass (warned)
       "KHR_materials_iridescence",  // bsdf/thin_film.h; none on glass (warned)
+      "KHR_materials_anisotropy",   // render/anisotropy.h
       "KHR_mesh_quantization",    // integer attributes: gltf_accessors.cpp reads every allowed type
       "KHR_materials_variants"};  // LoadOptions::material_variant picks one
   const auto supported = [](const std::string& e) { return std::find(kSupported.begin(), kSupported.end(), e) != kSupported.end(); };

@@ -150,6 +150,11 @@ json material_json(const Scene& scene, const Material& m) {
     if (m.iridescence_thickness_texture >= 0)
       film["iridescenceThicknessTexture"] = texture_info(scene, m.iridescence_thickness_texture);
   }
+  if (m.anisotropy > 0.0f) {
+    auto& anisotropy = j["extensions"]["KHR_materials_anisotropy"];
+    anisotropy = {{"anisotropyStrength", m.anisotropy}, {"anisotropyRotation", m.anisotropy_rotation_rad}};
+    if (m.anisotropy_texture >= 0) anisotropy["anisotropyTexture"] = texture_info(scene, m.anisotropy_texture);
+  }
   if (m.has_sheen()) {
     auto& sheen = j["extensions"]["KHR_materials_sheen"];
     const Vec3f& c = m.sheen_color;
@@ -192,7 +197,7 @@ void write_scene_glb(const Scene& scene, const std::filesystem::path& path) {
               {"extensionsUsed", {"KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior",
                                   "KHR_materials_specular", "KHR_materials_volume", "KHR_materials_clearcoat",
                                   "KHR_materials_dispersion", "KHR_materials_sheen",
-                                  "KHR_materials_iridescence"}},
+                                  "KHR_materials_iridescence", "KHR_materials_anisotropy"}},
               {"bufferViews", json::array()}, {"accessors", json::array()}, {"meshes", json::array()},
               {"materials", json::array()}, {"nodes", json::array()}};
   for (const Material& m : scene.materials) doc["materials"].push_back(material_json(scene, m));

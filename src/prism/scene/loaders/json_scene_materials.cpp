@@ -1,6 +1,7 @@
 // prism-scene/1: materials and the textures they refer to.
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include <fmt/format.h>
 
@@ -208,7 +209,7 @@ void JsonSceneReader::read_iridescence(Material& m, const JsonValue& value) {
 
 void JsonSceneReader::read_material(const JsonValue& value) {
   value.expect_keys({"name", "type", "base_color", "base_color_spectrum", "base_color_texture", "roughness",
-                     "anisotropy", "metallic", "metallic_roughness_texture", "normal_texture", "normal_scale",
+                     "anisotropy", "anisotropy_rotation_degrees", "anisotropy_texture", "metallic", "metallic_roughness_texture", "normal_texture", "normal_scale",
                      "bump_texture", "bump_scale", "microfacet", "conductor", "ior", "dispersion", "thin_walled",
                      "transmission", "attenuation_color", "attenuation_distance", "specular", "specular_color",
                      "specular_texture", "specular_color_texture", "clearcoat", "clearcoat_roughness",
@@ -236,7 +237,12 @@ void JsonSceneReader::read_material(const JsonValue& value) {
     set_base_color_spectrum(m, read_spectrum(*s, SpectrumUse::reflectance));
   }
   m.roughness = value.get_float("roughness", m.roughness, 0.0f, 1.0f);
-  m.anisotropy = value.get_float("anisotropy", m.anisotropy, -1.0f, 1.0f);
+  // glTF KHR_materials_anisotropy's strength, rotation (here in degrees) and texture (linear:
+  // RG direction, B strength).
+  m.anisotropy = value.get_float("anisotropy", m.anisotropy, 0.0f, 1.0f);
+  m.anisotropy_rotation_rad = static_cast<float>(
+      value.get_float("anisotropy_rotation_degrees", 0.0f, -360.0f, 360.0f) * std::numbers::pi / 180.0);
+  if (auto t = value.find("anisotropy_texture")) m.anisotropy_texture = read_texture(*t, TextureEncoding::linear);
   m.metallic = value.get_float("metallic", m.metallic, 0.0f, 1.0f);
   if (auto t = value.find("metallic_roughness_texture"))
     m.metallic_roughness_texture = read_texture(*t, TextureEncoding::linear);

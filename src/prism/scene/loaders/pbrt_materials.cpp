@@ -1,5 +1,7 @@
 // pbrt-v4 materials and textures → Prism materials (mapping in docs/scene-formats.md).
+#include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <vector>
@@ -7,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "prism/bsdf/ior.h"
+#include "prism/bsdf/microfacet.h"
 #include "prism/core/error.h"
 #include "prism/scene/dielectric_ior.h"
 #include "prism/scene/loaders/pbrt_builder.h"
@@ -29,10 +32,15 @@ std::string metal_name(const std::string& spectrum) {
   return {};
 }
 
-// A layer's roughness as Prism's perceptual r: a number, or 1 times a texture.
+// A layer's roughness as Prism's perceptual r: a number, or 1 times a texture; with
+// different uroughness and vroughness numbers, r across the rougher direction and the
+// anisotropy that stretches it (render/anisotropy.h): along dP/du (rotation 0) where
+// uroughness is the larger, along the bitangent (rotation π/2) where vroughness is.
 struct LayerRoughness {
   float value = 0.0f;
   int texture = -1;
+  float anisotropy = 0.0f;
+  float anisotropy_rotation_rad = 0.0f;
 };
 
 // pbrt-v4's float texture of roughness (its channel 0 times `scale`, pbrt's value before
@@ -114,7 +122,9 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
   const bool remap = p.get_bool("remaproughness", true);
   // A layer's roughness: pbrt-v4's uroughness and vroughness, each defaulting to roughness
   // (default 0). `prefix` names the layer: "" or coatedconductor's "interface." / "conductor.".
-  const auto roughness = [&](const std::string& prefix = "") -> LayerRoughness {
+  // `anisotropic`: the layer can be anisotropic (a conductor's or a dielectric's base; the
+  // coat is isotropic and takes the mean).
+  const auto roughness = [&](const std::string& prefix = "", bool anisotropic = false) -> LayerRoughness {
     const PbrtParam* base = p.find(prefix + "roughness");
     const PbrtParam* u = p.has(prefix + "uroughness") ? p.find(prefix + "uroughness") : base;
     const PbrtParam* v = p.has(prefix + "vroughness") ? p.find(prefix + "vroughness") : base;
@@ -135,6 +145,16 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
     const auto value = [&](const PbrtParam* q) { return q ? p.get_float(q->name, 0.0) : 0.0; };
     const double ur = value(u), vr = value(v);
     if (ur < 0 || vr < 0) throw SceneError(fmt::format("{}:{}: roughness must not be negative", p.source, p.line));
+    if (ur != vr && anisotropic) {
+      // α = r² per direction; the narrower lobe sets α across, and at least
+      // kMinAnisotropicAlpha as the renderer holds it.
+      const float alpha_u = prism_roughness(ur, remap) * prism_roughness(ur, remap);
+      const float alpha_v = prism_roughness(vr, remap) * prism_roughness(vr, remap);
+      const float across = std::max(std::min(alpha_u, alpha_v), bsdf::kMinAnisotropicAlpha);
+      LayerRoughness out{std::sqrt(across), -1, bsdf::anisotropy_strength_for(across, std::max(alpha_u, alpha_v)),
+                         alpha_u >= alpha_v ? 0.0f : static_cast<float>(std::numbers::pi / 2)};
+      return out;
+    }
     if (ur != vr) approximations_.push_back(fmt::format("Material line {}: anisotropic roughness as its mean", p.line));
     return {prism_roughness(0.5 * (ur + vr), remap), -1};
   };
@@ -181,9 +201,11 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
       for (const char* n : {"roughness", "thickness", "albedo", "g"}) p.find(n);
   } else if (effective == "conductor") {
     m.type = MaterialType::conductor;
-    const LayerRoughness r = roughness(conductor_prefix);
+    const LayerRoughness r = roughness(conductor_prefix, true);
     m.roughness = r.value;
     m.metallic_roughness_texture = r.texture;
+    m.anisotropy = r.anisotropy;
+    m.anisotropy_rotation_rad = r.anisotropy_rotation_rad;
     if (auto r = reflectance(p, "reflectance", m.base_color_texture)) {
       m.conductor_fresnel = ConductorFresnel::schlick;
       m.base_color = *r;
@@ -203,9 +225,11 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
     }
   } else if (effective == "dielectric") {
     m.type = MaterialType::dielectric;
-    const LayerRoughness r = roughness();
+    const LayerRoughness r = roughness("", !m.thin_walled);  // thindielectric is smooth
     m.roughness = r.value;
     m.metallic_roughness_texture = r.texture;
+    m.anisotropy = r.anisotropy;
+    m.anisotropy_rotation_rad = r.anisotropy_rotation_rad;
     m.base_color = Vec3f(1.0f);
     if (const std::string* eta = named_spectrum(p, "eta")) {
       if (*eta == "glass-BK7") {

@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <numbers>
 #include <optional>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
 #include "prism/bsdf/ior.h"
+#include "prism/bsdf/microfacet.h"
 #include "prism/core/error.h"
 #include "prism/io/atomic_file.h"
 #include "prism/scene/dielectric_ior.h"
@@ -164,6 +166,11 @@ void write_scene_json(const Scene& scene, const std::filesystem::path& path) {
       if (m.iridescence_thickness_texture >= 0)
         w(", \"iridescence_thickness_texture\": {}", json_texture(scene, files, m.iridescence_thickness_texture));
     }
+    if (m.anisotropy > 0.0f) {
+      w(", \"anisotropy\": {}, \"anisotropy_rotation_degrees\": {}", m.anisotropy,
+        m.anisotropy_rotation_rad * 180.0 / std::numbers::pi);
+      if (m.anisotropy_texture >= 0) w(", \"anisotropy_texture\": {}", json_texture(scene, files, m.anisotropy_texture));
+    }
     if (m.has_sheen()) {
       w(", \"sheen_color\": {}, \"sheen_roughness\": {}", vec(m.sheen_color), m.sheen_roughness);
       if (m.sheen_color_texture >= 0) w(", \"sheen_color_texture\": {}", json_texture(scene, files, m.sheen_color_texture));
@@ -230,6 +237,27 @@ std::string pbrt_eta(const Material& m) {
   std::string pairs;
   for (int nm = 380; nm <= 780; nm += 20) pairs += fmt::format("{} {} ", nm, dielectric_ior(m, nm));
   return fmt::format("\"spectrum eta\" [ {}]", pairs);
+}
+
+// A conductor's or rough glass's roughness for pbrt-v4, as α = r² of Prism's perceptual
+// roughness r (written with remaproughness false):
+// "roughness", or where the material is anisotropic uroughness along dP/du and vroughness
+// across it (render/anisotropy.h), which holds a direction of rotation 0 or π/2 (mod π) and
+// no texture; any other is refused.
+std::string pbrt_roughness(const Material& m, const std::string& prefix) {
+  const float alpha = m.roughness * m.roughness;
+  if (!m.has_anisotropy()) return fmt::format("\"float {}roughness\" [ {} ]", prefix, alpha);
+  const double turns = m.anisotropy_rotation_rad / std::numbers::pi;  // in half turns
+  const double rest = turns - std::round(turns);                          // 0: along u; ±½: along v
+  const bool along_u = std::abs(rest) < 1e-6, along_v = std::abs(std::abs(rest) - 0.5) < 1e-6;
+  if (m.anisotropy_texture >= 0 || !(along_u || along_v))
+    throw UsageError(fmt::format("pbrt writer: material '{}': anisotropy {}, which pbrt-v4's uroughness and "
+                                 "vroughness cannot say",
+                                 m.name, m.anisotropy_texture >= 0 ? "from a texture" : "at an angle to the uv axes"));
+  const float across = std::max(alpha, bsdf::kMinAnisotropicAlpha);
+  const float along = bsdf::anisotropic_alpha_along(across, m.anisotropy);
+  return fmt::format("\"float {0}uroughness\" [ {1} ] \"float {0}vroughness\" [ {2} ]", prefix,
+                     along_u ? along : across, along_u ? across : along);
 }
 
 // pbrt-v4 texture names of what a material needs: its reflectance image and, for
@@ -307,14 +335,15 @@ PbrtMaterialTextures write_pbrt_textures(Writer& w, const Scene& scene, std::siz
 
 void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
   check_writable(scene);
-  // pbrt-v4 has no sheen and no thin film: refused before any file is written, not dropped
-  // in silence.
+  // pbrt-v4 has no sheen, no thin film and no anisotropy off the uv axes: refused before
+  // any file is written, not dropped in silence.
   for (const Material& m : scene.materials) {
     if (m.has_sheen())
       throw UsageError(fmt::format("pbrt writer: material '{}' has a sheen, which pbrt-v4 cannot hold", m.name));
     if (m.has_iridescence())
       throw UsageError(fmt::format("pbrt writer: material '{}' has a thin film (iridescence), which pbrt-v4 cannot hold",
                                    m.name));
+    pbrt_roughness(m, "");  // refuses an anisotropy direction pbrt-v4 cannot say
   }
   const std::vector<std::string> files = write_scene_textures(scene, path);
   Writer w(path);
@@ -348,8 +377,6 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
         "\"rgb sigma_s\" [ 0 0 0 ]\n",
         m.name, sigma(c.x), sigma(c.y), sigma(c.z));
     }
-    // Prism's perceptual roughness r has α = r²; written with remaproughness false.
-    const float alpha = m.roughness * m.roughness;
     w("MakeNamedMaterial \"{}\"", m.name);
     if (m.normal_texture >= 0) {
       // pbrt-v4's normalmap is a plain repeated image: no scale, no uv transform.
@@ -376,7 +403,10 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
           w(" \"spectrum {0}eta\" \"metal-{1}-eta\" \"spectrum {0}k\" \"metal-{1}-k\"", base, m.conductor_name);
         else
           w(" \"rgb reflectance\" [ {} {} {} ]", m.base_color.x, m.base_color.y, m.base_color.z);
-        w(" \"float {}roughness\" [ {} ]", base, m.type == MaterialType::mirror ? 0.0f : alpha);
+        if (m.type == MaterialType::mirror)
+          w(" \"float {}roughness\" [ 0 ]", base);
+        else
+          w(" {}", pbrt_roughness(m, base));
         if (coated) w(" \"float interface.roughness\" [ {} ]", coat_alpha);
         w(" \"bool remaproughness\" false\n");
         break;
@@ -385,8 +415,8 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
         if (m.thin_walled)  // pbrt-v4's thindielectric is smooth: it takes eta only
           w(" \"string type\" \"thindielectric\" {}\n", pbrt_eta(m));
         else
-          w(" \"string type\" \"dielectric\" {} \"float roughness\" [ {} ] \"bool remaproughness\" false\n",
-            pbrt_eta(m), alpha);
+          w(" \"string type\" \"dielectric\" {} {} \"bool remaproughness\" false\n", pbrt_eta(m),
+            pbrt_roughness(m, ""));
         break;
       default:
         w(" \"string type\" \"{}\"", coated ? "coateddiffuse" : "diffuse");

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <set>
+#include <string>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -194,13 +196,17 @@ void write_scene_glb(const Scene& scene, const std::filesystem::path& path) {
     if (m.base_color_spectrum || m.emission.spectrum)
       throw UsageError(fmt::format("glTF writer: material '{}' has a spectrum, which glTF 2.0 cannot hold", m.name));
   json doc = {{"asset", {{"version", "2.0"}, {"generator", "Prism"}}},
-              {"extensionsUsed", {"KHR_materials_emissive_strength", "KHR_materials_transmission", "KHR_materials_ior",
-                                  "KHR_materials_specular", "KHR_materials_volume", "KHR_materials_clearcoat",
-                                  "KHR_materials_dispersion", "KHR_materials_sheen",
-                                  "KHR_materials_iridescence", "KHR_materials_anisotropy"}},
               {"bufferViews", json::array()}, {"accessors", json::array()}, {"meshes", json::array()},
               {"materials", json::array()}, {"nodes", json::array()}};
-  for (const Material& m : scene.materials) doc["materials"].push_back(material_json(scene, m));
+  // extensionsUsed names exactly the extensions the file uses (glTF 2.0 §3.12), in a
+  // stable order, and is left out when there are none (the schema wants at least one item).
+  std::set<std::string> used;
+  for (const Material& m : scene.materials) {
+    json j = material_json(scene, m);
+    if (j.contains("extensions"))
+      for (const auto& [name, value] : j["extensions"].items()) used.insert(name);
+    doc["materials"].push_back(std::move(j));
+  }
   BinaryChunk bin;
   // Textures: each image embedded as PNG (a buffer view), with its own sampler and texture.
   const std::vector<TextureEncoding> encodings = texture_encodings(scene);
@@ -213,7 +219,8 @@ void write_scene_glb(const Scene& scene, const std::filesystem::path& path) {
     doc["textures"].push_back({{"name", t.name}, {"sampler", i}, {"source", i}});
     transformed |= has_uv_transform(t);
   }
-  if (transformed) doc["extensionsUsed"].push_back("KHR_texture_transform");
+  if (transformed) used.insert("KHR_texture_transform");
+  if (!used.empty()) doc["extensionsUsed"] = used;
   json scene_nodes = json::array();
   for (const TriangleMesh& mesh : scene.meshes) {
     Vec3f lo(INFINITY), hi(-INFINITY);

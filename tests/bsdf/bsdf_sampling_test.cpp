@@ -24,8 +24,8 @@ constexpr double kAlphaTotal = 0.01;
 // Histograms drawn in this file (Šidák split): lambert 4, conductor 5 kinds × 9 = 45,
 // metallic-roughness 7 × 3 = 21, rough dielectric 3 α × 5 wo × 2 halves = 30, dispersive 2,
 // smooth-dielectric lobe choice 4, coated lobes 3 bases × 2 coat roughnesses × 3 wo = 18 plus
-// a smooth coat's non-delta part 3, anisotropic lobes 12 + 2 + 4.
-constexpr int kChiSquareTests = 4 + 45 + 21 + 30 + 2 + 4 + 18 + 3 + 15 + 18;
+// a smooth coat's non-delta part 3, anisotropic lobes 12 + 2 + 4, tilted coats 6.
+constexpr int kChiSquareTests = 4 + 45 + 21 + 30 + 2 + 4 + 18 + 3 + 15 + 18 + 6;
 constexpr long kSamples = 100'000;
 
 // Draws (u_lobe, u) from the harness's 2D uniform by splitting u.x: the high bits pick the
@@ -292,6 +292,18 @@ TEST(BsdfSampling, CoatedLobesMatchPdf) {
         const float s = std::max(0.3f, 2.0f * coat_roughness * coat_roughness);
         bsdf_p_value(b, wo, Vec3f(-wo.x, -wo.y, wo.z), s, 0, ++seed);
       }
+  // Coats with a normal of their own (clearcoatNormalTexture), tilted 20° and 40° from the
+  // base's: reflections about the coat's normal, those below the base's surface dropped
+  // (failed samples, absent from pdf()).
+  for (const double tilt : {20.0, 40.0})
+    for (double theta : kThetas) {
+      Bsdf<3> b{MetallicRoughness<3>::from_roughness(rgb(0.2f, 0.5f, 0.9f), 0.3f, 0.7f)};
+      b.coat = Clearcoat::make(1.0f, 0.3f);
+      const float t = static_cast<float>(tilt * std::numbers::pi / 180.0);
+      b.coat.frame = *Frame::from_normal_and_tangent(Vec3f(std::sin(t), 0.0f, std::cos(t)), Vec3f(1, 0, 0));
+      const Vec3f wo = direction_at(theta, 60.0);
+      bsdf_p_value(b, wo, Vec3f(0, 0, 1), 1.0f, 0, ++seed, 32);
+    }
   // A smooth coat: its delta samples are left out (as failed samples: absent mass), the rest
   // must follow pdf(), which integrates to 1 − p_c.
   Bsdf<3> smooth{Lambertian<3>{Spectrum3(0.4f)}};

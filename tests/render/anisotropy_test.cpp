@@ -117,26 +117,15 @@ TEST(Anisotropy, MakeBsdfStretchesTheLobeAlongTheFramesS) {
 }
 
 // A glossy metal floor (u along world x, v along z) seen from 5 units straight above, lit
-// by a point light 2 units above the centre: the highlight at the centre is stretched along
+// by a point light 2 units above the centre (test::make_bulb_lit_uv_floor): the highlight
+// at the centre is stretched along
 // the lobe's wide axis. Returns the spread of the highlight along image x over its spread
 // along image y (luminance-weighted second moments about the centroid); image x is world
 // −x (camera up +z, looking down −y).
 double highlight_aspect(const Material& metal, const TextureImage* texture = nullptr) {
-  Scene scene = test::make_grey_floor_seen_from_above(5.0f, 60.0f);
-  scene.meshes[0].uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
-  scene.materials = {metal};
+  Scene scene = test::make_bulb_lit_uv_floor(metal);
   if (texture) scene.textures.push_back(*texture);
-  Light bulb;
-  bulb.type = LightType::point;
-  bulb.position = Vec3f(0, 2, 0);
-  bulb.intensity = 100.0f;
-  scene.lights.push_back(bulb);
-  RenderSettings s;
-  s.width = s.height = 48;
-  s.samples_per_pixel = 4;
-  s.path.max_depth = 1;
-  s.transport.kind = TransportKind::rgb;
-  const Film film = render(scene, s).film;
+  const Film film = render(scene, test::direct_light_rgb_settings(48)).film;
   double sum = 0, cx = 0, cy = 0;
   for (int y = 0; y < 48; ++y)
     for (int x = 0; x < 48; ++x) {

@@ -66,6 +66,36 @@ Scene make_sunlit_uv_floor(const Vec3f& toward_light, bool mirrored_u) {
   return scene;
 }
 
+TriangleMesh make_uv_triangle() {
+  TriangleMesh mesh;
+  mesh.name = "triangle";
+  mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  mesh.uvs = {{0, 0}, {1, 0}, {0, 1}};
+  mesh.indices = {0, 1, 2};
+  return mesh;
+}
+
+Scene make_bulb_lit_uv_floor(const Material& material) {
+  Scene scene = make_grey_floor_seen_from_above(5.0f, 60.0f);
+  scene.meshes[0].uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  scene.materials = {material};
+  Light bulb;
+  bulb.type = LightType::point;
+  bulb.position = Vec3f(0, 2, 0);
+  bulb.intensity = 100.0f;
+  scene.lights.push_back(bulb);
+  return scene;
+}
+
+RenderSettings direct_light_rgb_settings(int size) {
+  RenderSettings s;
+  s.width = s.height = size;
+  s.samples_per_pixel = 4;
+  s.path.max_depth = 1;
+  s.transport.kind = TransportKind::rgb;
+  return s;
+}
+
 double direct_light_mean_red(const Scene& scene) {
   RenderSettings settings;
   settings.width = settings.height = 8;

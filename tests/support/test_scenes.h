@@ -1,5 +1,6 @@
 #pragma once
 // Small synthetic scenes with known answers for integrator tests.
+#include "prism/render/renderer.h"
 #include "prism/scene/scene.h"
 
 namespace prism::test {
@@ -20,6 +21,17 @@ Scene make_grey_floor_seen_from_above(float eye_height, float fov_degrees);
 // directions within 5° of the normal; u, v ∈ [0.46, 0.54]): what normal- and bump-map
 // tests shade. The material is diffuse, ρ = 0.5; tests add its maps.
 Scene make_sunlit_uv_floor(const Vec3f& toward_light, bool mirrored_u = false);
+
+// One triangle in the z = 0 plane, (0,0,0), (1,0,0), (0,1,0), with uvs equal to its x and
+// y: what writer round trips of a material need.
+TriangleMesh make_uv_triangle();
+
+// The floor of make_grey_floor_seen_from_above(5, 60) with uvs (u along +x, v along +z)
+// wearing `material`, lit by a 100 cd point light 2 units above its centre, and the
+// settings to render it: RGB, direct light only, size × size pixels, 4 spp. A glossy
+// surface shows one highlight at the image centre (image x is world −x).
+Scene make_bulb_lit_uv_floor(const Material& material);
+RenderSettings direct_light_rgb_settings(int size);
 
 // The mean red of an 8×8 RGB render with direct light only (max depth 1), 2 spp, one
 // thread. Under delta lights a Lambertian surface's pixels are then exact: no random

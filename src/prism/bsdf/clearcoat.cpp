@@ -60,14 +60,25 @@ float coat_directional_albedo(float cos_theta, float perceptual_roughness) {
 }
 
 float Clearcoat::albedo(const Vec3f& wo) const {
+  const float cos_o = abs_cos_theta(frame ? frame->to_local(wo) : wo);
   // A smooth coat reflects exactly F; the table would interpolate it.
-  const float e = is_smooth() ? fresnel_dielectric(abs_cos_theta(wo), kIor)
-                              : coat_directional_albedo(abs_cos_theta(wo), perceptual_roughness);
+  const float e = is_smooth() ? fresnel_dielectric(cos_o, kIor) : coat_directional_albedo(cos_o, perceptual_roughness);
   return weight * e;
 }
 
 float Clearcoat::eval(const Vec3f& wo, const Vec3f& wi) const {
   if (is_smooth()) return 0.0f;
+  if (frame) {
+    // In the coat's frame, with its cosine for the base's (see the header); on the base's
+    // side of wo only.
+    if (!same_hemisphere(wo, wi) || wi.z == 0.0f) return 0.0f;
+    const Vec3f o = frame->to_local(wo), i = frame->to_local(wi);
+    return untilted_eval(o, i) * (std::abs(i.z) / std::abs(wi.z));
+  }
+  return untilted_eval(wo, wi);
+}
+
+float Clearcoat::untilted_eval(const Vec3f& wo, const Vec3f& wi) const {
   const auto r = upper_reflection(wo, wi);
   if (!r) return 0.0f;
   return weight * fresnel_dielectric(dot(r->o, r->h), kIor) * distribution.D(r->h) * distribution.G2(r->o, r->i) /
@@ -76,17 +87,30 @@ float Clearcoat::eval(const Vec3f& wo, const Vec3f& wi) const {
 
 float Clearcoat::pdf(const Vec3f& wo, const Vec3f& wi) const {
   if (is_smooth()) return 0.0f;
-  const auto r = upper_reflection(wo, wi);
+  if (frame && !same_hemisphere(wo, wi)) return 0.0f;  // sample_direction drops those
+  // Solid-angle densities do not depend on the frame they are written in.
+  const auto r = frame ? upper_reflection(frame->to_local(wo), frame->to_local(wi)) : upper_reflection(wo, wi);
   return r ? distribution.pdf_microfacet_normal(r->o, r->h) * reflection_jacobian(r->o, r->h) : 0.0f;
 }
 
 std::optional<Vec3f> Clearcoat::sample_direction(const Vec3f& wo, Vec2f u) const {
   if (wo.z == 0.0f) return std::nullopt;
-  if (is_smooth()) return Vec3f(-wo.x, -wo.y, wo.z);
-  const Vec3f o = wo.z < 0.0f ? flip_z(wo) : wo;
-  const Vec3f i = reflect(o, distribution.sample_microfacet_normal(o, u));
-  if (i.z <= 0.0f) return std::nullopt;
-  return wo.z < 0.0f ? flip_z(i) : i;
+  const Vec3f local_o = frame ? frame->to_local(wo) : wo;
+  if (local_o.z == 0.0f) return std::nullopt;
+  Vec3f i;
+  if (is_smooth()) {
+    i = Vec3f(-local_o.x, -local_o.y, local_o.z);
+  } else {
+    const Vec3f o = local_o.z < 0.0f ? flip_z(local_o) : local_o;
+    i = reflect(o, distribution.sample_microfacet_normal(o, u));
+    if (i.z <= 0.0f) return std::nullopt;
+    if (local_o.z < 0.0f) i = flip_z(i);
+  }
+  if (!frame) return i;
+  const Vec3f wi = frame->to_world(i);
+  // Reflected about a tilted normal, a direction can leave below the base's surface.
+  if (!same_hemisphere(wo, wi) || wi.z == 0.0f) return std::nullopt;
+  return wi;
 }
 
 }  // namespace prism::bsdf

@@ -18,10 +18,17 @@
 // Like the extension, the layering is not reciprocal (the base is weighted by wo only) and
 // ignores refraction into the coat and reflections inside it; camera paths (the only ones
 // Prism traces) evaluate it with wo towards the camera, consistently for NEE and sampling.
+//
+// The coat may have a shading normal of its own (the extension's clearcoatNormalTexture):
+// `frame`, the coat's frame in the base's local frame. The coat then reflects about it as
+// classic normal mapping does: f_coat, its albedo and its sampling in the coat's frame, its
+// cosine the coat's (eval returns c f_coat |cos θi′| / |cos θi|, so that the caller's
+// base cosine leaves the coat's), and nothing that leaves below the base's surface.
 #include <optional>
 
 #include "prism/bsdf/bsdf_sample.h"
 #include "prism/bsdf/microfacet.h"
+#include "prism/core/frame.h"
 
 namespace prism::bsdf {
 
@@ -38,10 +45,13 @@ struct Clearcoat {
   float weight = 0.0f;  // c ∈ [0, 1]; 0: no coat
   float perceptual_roughness = 0.0f;
   MicrofacetDistribution distribution = MicrofacetDistribution::isotropic(MicrofacetType::ggx, 0.0f);
+  // The coat's own shading frame in the base's local frame; nothing: the base's.
+  std::optional<Frame> frame;
 
   static Clearcoat make(float weight, float perceptual_roughness) {
     return {weight, perceptual_roughness,
-            MicrofacetDistribution::isotropic(MicrofacetType::ggx, perceptual_roughness * perceptual_roughness)};
+            MicrofacetDistribution::isotropic(MicrofacetType::ggx, perceptual_roughness * perceptual_roughness),
+            std::nullopt};
   }
 
   bool present() const { return weight > 0.0f; }
@@ -58,6 +68,10 @@ struct Clearcoat {
   // A reflected direction on wo's side: the mirror direction for a smooth coat, else from
   // the GGX visible normals. Nothing when the reflection leaves below the surface.
   std::optional<Vec3f> sample_direction(const Vec3f& wo, Vec2f u) const;
+
+ private:
+  // c f_coat in the coat's own frame.
+  float untilted_eval(const Vec3f& wo, const Vec3f& wi) const;
 };
 
 }  // namespace prism::bsdf

@@ -116,6 +116,11 @@ void hash_scene_details(Fnv1a& h, const Scene& scene) {
       h.value(m.clearcoat_roughness);
       h.value(m.clearcoat_texture);
       h.value(m.clearcoat_roughness_texture);
+      // Only where there is one, so coats without keep their earlier fingerprints.
+      if (m.clearcoat_normal_texture != plain.clearcoat_normal_texture) {
+        h.value(m.clearcoat_normal_texture);
+        h.value(m.clearcoat_normal_scale);
+      }
     }
     if (m.has_iridescence()) {
       h.value(m.iridescence);

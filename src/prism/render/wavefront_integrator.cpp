@@ -128,22 +128,41 @@ std::optional<Vec3f> WavefrontIntegrator<Mode>::textured_base_color(const Materi
 }
 
 template <class Mode>
-void WavefrontIntegrator<Mode>::apply_normal_map(const Material& m, SurfaceInteraction& si, float cone_width,
-                                                 const Ray& ray) const {
-  const auto texel = texel_at_hit(m.normal_texture, si, cone_width, ray);
-  if (!texel) return;
-  Frame frame = si.shading;
+std::optional<Frame> WavefrontIntegrator<Mode>::tangent_space_mapped_frame(int texture, float scale,
+                                                                         const SurfaceInteraction& si,
+                                                                         const Frame& unmapped, float cone_width,
+                                                                         const Ray& ray) const {
+  const auto texel = texel_at_hit(texture, si, cone_width, ray);
+  if (!texel) return std::nullopt;
+  Frame frame = unmapped;
   float sign = si.bitangent_sign;
   if (!si.tangent_from_mesh) {
     // No per-vertex tangents: the triangle's dP/du, made perpendicular to the normal.
     Vec3f dpdu;
-    if (!triangle_tangent(scene_.meshes[si.mesh], si.triangle, dpdu, sign)) return;
+    if (!triangle_tangent(scene_.meshes[si.mesh], si.triangle, dpdu, sign)) return std::nullopt;
     const auto with_tangent = Frame::from_normal_and_tangent(frame.n, dpdu);
-    if (!with_tangent) return;
+    if (!with_tangent) return std::nullopt;
     frame = *with_tangent;
   }
-  si.shading = normal_mapped_frame(frame, sign, Vec3f((*texel)[0], (*texel)[1], (*texel)[2]), m.normal_scale,
-                                   si.geometric_normal);
+  return normal_mapped_frame(frame, sign, Vec3f((*texel)[0], (*texel)[1], (*texel)[2]), scale, si.geometric_normal);
+}
+
+template <class Mode>
+void WavefrontIntegrator<Mode>::apply_normal_map(const Material& m, SurfaceInteraction& si, float cone_width,
+                                                 const Ray& ray) const {
+  if (const auto frame = tangent_space_mapped_frame(m.normal_texture, m.normal_scale, si, si.shading, cone_width, ray))
+    si.shading = *frame;
+}
+
+template <class Mode>
+std::optional<Frame> WavefrontIntegrator<Mode>::coat_frame(const Material& m, const SurfaceInteraction& si,
+                                                           const Frame& unmapped, float cone_width,
+                                                           const Ray& ray) const {
+  const auto coat = tangent_space_mapped_frame(m.clearcoat_normal_texture, m.clearcoat_normal_scale, si, unmapped,
+                                               cone_width, ray);
+  if (!coat) return std::nullopt;
+  const Frame& base = si.shading;
+  return Frame{base.to_local(coat->s), base.to_local(coat->t), base.to_local(coat->n)};
 }
 
 template <class Mode>
@@ -338,6 +357,7 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   const Material& material = scene_.materials[si.material];
   p.cone_width[slot] += p.cone_spread[slot] * p.hit[slot].t;  // the ray cone's width at this hit
   std::optional<bsdf::NormalMapMicrosurface> microsurface;
+  const Frame unmapped = si.shading;
   std::optional<AnisotropyAtHit> anisotropy;
   if (__builtin_expect(material.has_anisotropy(), 0)) anisotropy = anisotropy_at_hit(material, si, p.cone_width[slot], ray);
   if (material.normal_texture >= 0 || material.bump_texture >= 0)
@@ -383,8 +403,12 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   if (__builtin_expect(point.has_sheen(), 0)) layer_colors.sheen = colors_.reflectance(point.sheen_color, wl);
   if (__builtin_expect(point.has_tinted_specular(), 0) && material.type == MaterialType::metallic_roughness)
     layer_colors.specular_f0 = colors_.reflectance(tables_.dielectric_f0(si.material, point.specular_color), wl);
-  const auto bsdf = make_bsdf<Mode>(material, si.material, base_color(material, si, p.cone_width[slot], ray, wl), point,
-                                    wl, tables_, layer_colors);
+  auto bsdf = make_bsdf<Mode>(material, si.material, base_color(material, si, p.cone_width[slot], ray, wl), point, wl,
+                              tables_, layer_colors);
+  // The coat's own normal map (KHR_materials_clearcoat's clearcoatNormalTexture), in the
+  // base's frame; not on a microsurface (microfacet normal mapping shades the base alone).
+  if (__builtin_expect(material.clearcoat_normal_texture >= 0, 0) && bsdf.coat.present() && !on_microsurface)
+    bsdf.coat.frame = coat_frame(material, si, unmapped, p.cone_width[slot], ray);
   if constexpr (Mode::kSpectral) {
     // Hero wavelength after a dispersive event (Wilkie et al. 2014): from here on only
     // channel 0 carries an estimate; terminate once (pdf[1] = 0 marks it done).

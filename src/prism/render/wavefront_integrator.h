@@ -136,6 +136,14 @@ class WavefrontIntegrator {
                                                                     const Ray& ray) const;
   // Replaces si.shading by the material's normal-mapped frame, where it has a normal map.
   void apply_normal_map(const Material& material, SurfaceInteraction& si, float cone_width, const Ray& ray) const;
+  // `unmapped` perturbed by tangent-space normal map `texture` (scaled by `scale`) at the
+  // hit, in world space; nothing without the texel or a tangent.
+  std::optional<Frame> tangent_space_mapped_frame(int texture, float scale, const SurfaceInteraction& si,
+                                                  const Frame& unmapped, float cone_width, const Ray& ray) const;
+  // The coat's frame from the material's clearcoat normal map, around the unmapped normal,
+  // in si.shading's local coordinates (bsdf::Clearcoat::frame).
+  [[gnu::noinline]] std::optional<Frame> coat_frame(const Material& material, const SurfaceInteraction& si,
+                                                    const Frame& unmapped, float cone_width, const Ray& ray) const;
   // Microfacet normal mapping's two numbers for the slot's current bounce (pixel_sampler.h).
   Vec2f facet_numbers(const Paths& paths, std::uint32_t slot) const;
   // Replaces si.shading by the material's bump-mapped frame, where it has a bump map.

@@ -119,6 +119,11 @@ struct Material {
   float clearcoat_roughness = 0.0f;
   int clearcoat_texture = -1;
   int clearcoat_roughness_texture = -1;
+  // The coat's own tangent-space normal map (glTF clearcoatNormalTexture, linear, like
+  // normal_texture but for the coat alone, around the unmapped vertex normal; its x and y
+  // scaled by clearcoat_normal_scale): bsdf/clearcoat.h. Not with microfacet normal mapping.
+  int clearcoat_normal_texture = -1;
+  float clearcoat_normal_scale = 1.0f;
 
   // Sheen (glTF KHR_materials_sheen): a velvet-like layer of fibres of colour `sheen_color`
   // (linear Rec.709, components in [0, 1]; black: none) and roughness `sheen_roughness`

@@ -15,6 +15,7 @@ std::vector<bool> textures_used_by_materials(const Scene& scene) {
     mark(m.emission.texture);
     mark(m.clearcoat_texture);
     mark(m.clearcoat_roughness_texture);
+    mark(m.clearcoat_normal_texture);
     mark(m.sheen_color_texture);
     mark(m.sheen_roughness_texture);
     mark(m.specular_texture);

@@ -14,6 +14,7 @@
 #include "loader_test_files.h"
 #include "support/one_triangle_gltf.h"
 #include "support/scratch_folder.h"
+#include "support/test_scenes.h"
 #include "support/write_and_reload.h"
 
 namespace prism::loaders {
@@ -87,12 +88,7 @@ Scene anisotropic_scene(MaterialType type, float rotation_rad) {
   m.anisotropy = 0.7f;
   m.anisotropy_rotation_rad = rotation_rad;
   scene.materials = {m};
-  TriangleMesh mesh;
-  mesh.name = "triangle";
-  mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-  mesh.uvs = {{0, 0}, {1, 0}, {0, 1}};
-  mesh.indices = {0, 1, 2};
-  scene.meshes = {mesh};
+  scene.meshes = {test::make_uv_triangle()};
   return scene;
 }
 

@@ -339,7 +339,8 @@ TEST(GltfLoader, ClearcoatFactorsAndTextures) {
     {"extensions": {"KHR_materials_clearcoat": {"clearcoatRoughnessFactor": 0.5}}},
     {"extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 1, "clearcoatNormalTexture": {"index": 0}},
                     "KHR_materials_transmission": {"transmissionFactor": 1}}},
-    {"extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 0.5, "clearcoatNormalTexture": {"index": 0}}}}])";
+    {"extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 0.5,
+                                                "clearcoatNormalTexture": {"index": 0, "scale": 0.5}}}}])";
   const std::string top = R"("extensionsUsed": ["KHR_materials_clearcoat", "KHR_texture_transform"],
     "extensionsRequired": ["KHR_materials_clearcoat"],
     "textures": [{"source": 0}], "images": [{"uri": "coat.png"}],)";
@@ -363,15 +364,19 @@ TEST(GltfLoader, ClearcoatFactorsAndTextures) {
   EXPECT_EQ(s.materials[3].type, MaterialType::dielectric);
   EXPECT_FALSE(s.materials[3].has_clearcoat());
   EXPECT_TRUE(s.materials[4].has_clearcoat());
+  // The coat's own normal map (a normalTextureInfo: its scale multiplies x and y), linear.
+  ASSERT_GE(s.materials[4].clearcoat_normal_texture, 0);
+  EXPECT_FLOAT_EQ(s.materials[4].clearcoat_normal_scale, 0.5f);
+  EXPECT_EQ(s.textures[s.materials[4].clearcoat_normal_texture].encoding, TextureEncoding::linear);
+  EXPECT_EQ(s.materials[0].clearcoat_normal_texture, -1);
   int glass_warnings = 0, normal_warnings = 0;
   for (const std::string& w : s.warnings) {
     glass_warnings += w.find("materials[3].extensions.KHR_materials_clearcoat: ignored on a transmitting material") !=
                       std::string::npos;
-    normal_warnings += w.find("materials[4].extensions.KHR_materials_clearcoat: clearcoatNormalTexture ignored") !=
-                       std::string::npos;
+    normal_warnings += w.find("clearcoatNormalTexture") != std::string::npos;
   }
   EXPECT_EQ(glass_warnings, 1);
-  EXPECT_EQ(normal_warnings, 1);
+  EXPECT_EQ(normal_warnings, 0);
   for (const auto& [coat, expected] : std::initializer_list<std::pair<std::string, std::string>>{
            {R"({"clearcoatFactor": 1.5})", "clearcoatFactor must be in [0, 1]"},
            {R"({"clearcoatFactor": 1, "clearcoatRoughnessFactor": -0.1})", "clearcoatRoughnessFactor must be in [0, 1]"},

@@ -425,7 +425,8 @@ int GltfBuilder::extension_texture(const tinygltf::Value& object, const char* ke
 // KHR_materials_clearcoat: a coat of weight clearcoatFactor × clearcoatTexture.r and
 // roughness clearcoatRoughnessFactor × clearcoatRoughnessTexture.g (both default 0, the
 // textures linear), η = 1.5, over the metallic-roughness base (bsdf/clearcoat.h).
-// clearcoatNormalTexture would bend the coat alone; Prism's coat shares the base's normal.
+// clearcoatNormalTexture (a normalTextureInfo: its `scale` multiplies x and y) bends the
+// coat alone, around the unmapped vertex normal.
 void GltfBuilder::read_clearcoat(Material& m, const tinygltf::Value& clearcoat, const std::string& where) {
   const std::string coat_where = where + ".extensions.KHR_materials_clearcoat";
   const double weight = number(clearcoat, "clearcoatFactor", 0.0);
@@ -443,9 +444,19 @@ void GltfBuilder::read_clearcoat(Material& m, const tinygltf::Value& clearcoat, 
   m.clearcoat_texture = extension_texture(clearcoat, "clearcoatTexture", TextureEncoding::linear, coat_where);
   m.clearcoat_roughness_texture =
       extension_texture(clearcoat, "clearcoatRoughnessTexture", TextureEncoding::linear, coat_where);
-  if (clearcoat.Has("clearcoatNormalTexture"))
-    warnings_.push_back(fmt::format("glTF: {}: clearcoatNormalTexture ignored (the coat uses the base's normal)",
-                                    coat_where));
+  m.clearcoat_normal_texture =
+      extension_texture(clearcoat, "clearcoatNormalTexture", TextureEncoding::linear, coat_where);
+  if (m.clearcoat_normal_texture >= 0) {
+    const tinygltf::Value& info = clearcoat.Get("clearcoatNormalTexture");
+    const double scale = number(info, "scale", 1.0);
+    if (!std::isfinite(scale)) fail(fmt::format("{}.clearcoatNormalTexture: scale is not finite", coat_where));
+    m.clearcoat_normal_scale = static_cast<float>(scale);
+    if (scene_.textures[static_cast<std::size_t>(m.clearcoat_normal_texture)].channels < 3) {
+      warnings_.push_back(fmt::format(
+          "glTF: {}.clearcoatNormalTexture: a normal map needs RGB (the image has fewer channels); ignored", coat_where));
+      m.clearcoat_normal_texture = -1;
+    }
+  }
 }
 
 // KHR_materials_sheen: sheenColorFactor (default black: no sheen) and sheenRoughnessFactor

@@ -141,6 +141,10 @@ json material_json(const Scene& scene, const Material& m) {
     if (m.clearcoat_texture >= 0) coat["clearcoatTexture"] = texture_info(scene, m.clearcoat_texture);
     if (m.clearcoat_roughness_texture >= 0)
       coat["clearcoatRoughnessTexture"] = texture_info(scene, m.clearcoat_roughness_texture);
+    if (m.clearcoat_normal_texture >= 0) {
+      coat["clearcoatNormalTexture"] = texture_info(scene, m.clearcoat_normal_texture);
+      coat["clearcoatNormalTexture"]["scale"] = m.clearcoat_normal_scale;
+    }
   }
   if (m.has_iridescence()) {
     auto& film = j["extensions"]["KHR_materials_iridescence"];

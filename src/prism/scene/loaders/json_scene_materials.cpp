@@ -149,7 +149,8 @@ void JsonSceneReader::read_attenuation(Material& m, const JsonValue& value) cons
 void JsonSceneReader::read_clearcoat(Material& m, const JsonValue& value) {
   const auto weight = value.find("clearcoat");
   if (!weight) {
-    for (const char* key : {"clearcoat_roughness", "clearcoat_texture", "clearcoat_roughness_texture"})
+    for (const char* key : {"clearcoat_roughness", "clearcoat_texture", "clearcoat_roughness_texture",
+                            "clearcoat_normal_texture", "clearcoat_normal_scale"})
       if (value.has(key)) value[key].fail("give 'clearcoat' (the coat's weight in [0, 1]) with it");
     return;
   }
@@ -161,6 +162,13 @@ void JsonSceneReader::read_clearcoat(Material& m, const JsonValue& value) {
   if (auto t = value.find("clearcoat_texture")) m.clearcoat_texture = read_texture(*t, TextureEncoding::linear);
   if (auto t = value.find("clearcoat_roughness_texture"))
     m.clearcoat_roughness_texture = read_texture(*t, TextureEncoding::linear);
+  // The coat's own normal map, as normal_texture is the base's.
+  if (auto t = value.find("clearcoat_normal_texture")) {
+    m.clearcoat_normal_texture = read_texture(*t, TextureEncoding::linear, [where = *t](const TextureImage& image) {
+      if (image.channels < 3) where.fail("a normal map needs an RGB image (tangent-space x, y, z)");
+    });
+  }
+  m.clearcoat_normal_scale = value.get_float("clearcoat_normal_scale", m.clearcoat_normal_scale, -100.0f, 100.0f);
 }
 
 // A sheen (glTF KHR_materials_sheen; bsdf/sheen.h) over any material but glass.
@@ -213,7 +221,8 @@ void JsonSceneReader::read_material(const JsonValue& value) {
                      "bump_texture", "bump_scale", "microfacet", "conductor", "ior", "dispersion", "thin_walled",
                      "transmission", "attenuation_color", "attenuation_distance", "specular", "specular_color",
                      "specular_texture", "specular_color_texture", "clearcoat", "clearcoat_roughness",
-                     "clearcoat_texture", "clearcoat_roughness_texture", "sheen_color", "sheen_roughness",
+                     "clearcoat_texture", "clearcoat_roughness_texture", "clearcoat_normal_texture",
+                     "clearcoat_normal_scale", "sheen_color", "sheen_roughness",
                      "sheen_color_texture", "sheen_roughness_texture", "iridescence", "iridescence_ior",
                      "iridescence_thickness_min_nm", "iridescence_thickness_max_nm", "iridescence_texture",
                      "iridescence_thickness_texture", "alpha_mode", "alpha_cutoff", "opacity",

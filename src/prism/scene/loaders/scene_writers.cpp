@@ -156,6 +156,9 @@ void write_scene_json(const Scene& scene, const std::filesystem::path& path) {
       if (m.clearcoat_texture >= 0) w(", \"clearcoat_texture\": {}", json_texture(scene, files, m.clearcoat_texture));
       if (m.clearcoat_roughness_texture >= 0)
         w(", \"clearcoat_roughness_texture\": {}", json_texture(scene, files, m.clearcoat_roughness_texture));
+      if (m.clearcoat_normal_texture >= 0)
+        w(", \"clearcoat_normal_texture\": {}, \"clearcoat_normal_scale\": {}",
+          json_texture(scene, files, m.clearcoat_normal_texture), m.clearcoat_normal_scale);
     }
     if (m.has_iridescence()) {
       w(", \"iridescence\": {}, \"iridescence_ior\": {}, \"iridescence_thickness_min_nm\": {}, "
@@ -335,8 +338,8 @@ PbrtMaterialTextures write_pbrt_textures(Writer& w, const Scene& scene, std::siz
 
 void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
   check_writable(scene);
-  // pbrt-v4 has no sheen, no thin film and no anisotropy off the uv axes: refused before
-  // any file is written, not dropped in silence.
+  // pbrt-v4 has no sheen, no thin film, no anisotropy off the uv axes and no coat normal
+  // map: refused before any file is written, not dropped in silence.
   for (const Material& m : scene.materials) {
     if (m.has_sheen())
       throw UsageError(fmt::format("pbrt writer: material '{}' has a sheen, which pbrt-v4 cannot hold", m.name));
@@ -344,6 +347,9 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
       throw UsageError(fmt::format("pbrt writer: material '{}' has a thin film (iridescence), which pbrt-v4 cannot hold",
                                    m.name));
     pbrt_roughness(m, "");  // refuses an anisotropy direction pbrt-v4 cannot say
+    if (m.has_clearcoat() && m.clearcoat_normal_texture >= 0)
+      throw UsageError(fmt::format(
+          "pbrt writer: material '{}' has a coat with its own normal map, which pbrt-v4 cannot hold", m.name));
   }
   const std::vector<std::string> files = write_scene_textures(scene, path);
   Writer w(path);

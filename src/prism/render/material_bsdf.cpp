@@ -51,12 +51,14 @@ bsdf::Bsdf<Mode::kChannels> base_bsdf(const Material& m, std::uint32_t material_
   // glTF and pbrt give perceptual roughness r; the microfacet α is r² (Burley 2012).
   const float alpha = point.roughness * point.roughness;
   auto distribution = bsdf::MicrofacetDistribution::isotropic(microfacet_type(m.microfacet), alpha);
-  // Anisotropy stretches the lobe along the frame's s axis (Blinn-Phong stays isotropic).
+  // Anisotropy stretches the lobe along the frame's s axis (Blinn-Phong stays isotropic);
+  // one rule for every lobe, metallic_roughness' own distribution included.
   const bool anisotropic = point.anisotropy > 0.0f && distribution.type != bsdf::MicrofacetType::blinn_phong;
-  if (anisotropic) {
-    distribution.alpha_y = std::max(alpha, bsdf::kMinAnisotropicAlpha);
-    distribution.alpha_x = bsdf::anisotropic_alpha_along(distribution.alpha_y, point.anisotropy);
-  }
+  const auto stretch = [&](bsdf::MicrofacetDistribution& d) {
+    d.alpha_y = std::max(d.alpha_y, bsdf::kMinAnisotropicAlpha);
+    d.alpha_x = bsdf::anisotropic_alpha_along(d.alpha_y, point.anisotropy);
+  };
+  if (anisotropic) stretch(distribution);
   switch (m.type) {
     case MaterialType::mirror: return {bsdf::SpecularReflection<N>{base}};
     case MaterialType::conductor: {
@@ -94,8 +96,7 @@ bsdf::Bsdf<Mode::kChannels> base_bsdf(const Material& m, std::uint32_t material_
                       ? bsdf::MetallicRoughness<N>::from_roughness(base, metallic, point.roughness,
                                                                   layer_colors.specular_f0, max_component(f0), weight)
                       : bsdf::MetallicRoughness<N>::from_roughness(base, metallic, point.roughness, f0.x, weight);
-      if (anisotropic)  // from its own α, which from_roughness keeps above kMinAlpha
-        lobe.distribution.alpha_x = bsdf::anisotropic_alpha_along(lobe.distribution.alpha_y, point.anisotropy);
+      if (anisotropic) stretch(lobe.distribution);  // its own α, which from_roughness keeps above kMinAlpha
       if (__builtin_expect(point.iridescence > 0.0f, 0)) {
         bsdf::ThinFilm<N>& film = lobe.film;
         film.weight = std::min(point.iridescence, 1.0f);

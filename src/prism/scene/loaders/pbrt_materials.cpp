@@ -148,12 +148,14 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
     if (ur != vr && anisotropic) {
       // α = r² per direction; the narrower lobe sets α across, and at least
       // kMinAnisotropicAlpha as the renderer holds it.
-      const float alpha_u = prism_roughness(ur, remap) * prism_roughness(ur, remap);
-      const float alpha_v = prism_roughness(vr, remap) * prism_roughness(vr, remap);
+      const auto alpha = [&](double pbrt) {
+        const float r = prism_roughness(pbrt, remap);
+        return r * r;
+      };
+      const float alpha_u = alpha(ur), alpha_v = alpha(vr);
       const float across = std::max(std::min(alpha_u, alpha_v), bsdf::kMinAnisotropicAlpha);
-      LayerRoughness out{std::sqrt(across), -1, bsdf::anisotropy_strength_for(across, std::max(alpha_u, alpha_v)),
-                         alpha_u >= alpha_v ? 0.0f : static_cast<float>(std::numbers::pi / 2)};
-      return out;
+      return {std::sqrt(across), -1, bsdf::anisotropy_strength_for(across, std::max(alpha_u, alpha_v)),
+              alpha_u >= alpha_v ? 0.0f : static_cast<float>(std::numbers::pi / 2)};
     }
     if (ur != vr) approximations_.push_back(fmt::format("Material line {}: anisotropic roughness as its mean", p.line));
     return {prism_roughness(0.5 * (ur + vr), remap), -1};

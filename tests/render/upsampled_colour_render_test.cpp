@@ -21,22 +21,11 @@ namespace {
 
 constexpr float kIlluminanceLux = 50.0f;
 
-// The floor of test_scenes.h seen from 5 units above (every camera ray within 15° of the
-// normal), Lambertian with `albedo`, lit straight down by a white directional light: every
-// pixel's radiance is albedo · E/π, with no noise in RGB transport and only the
-// wavelengths' in spectral transport.
 Scene lit_floor(const Vec3f& albedo) {
-  Scene scene = test::make_grey_floor_seen_from_above(5.0f, 30.0f);
   Material m;
   m.type = MaterialType::diffuse;
   m.base_color = albedo;
-  scene.materials = {m};
-  Light sun;
-  sun.type = LightType::directional;
-  sun.direction = Vec3f(0, -1, 0);
-  sun.intensity = kIlluminanceLux;
-  scene.lights.push_back(sun);
-  return scene;
+  return test::make_floor_under_overhead_sun(m, kIlluminanceLux);  // albedo · E/π everywhere
 }
 
 RenderSettings small_render(TransportKind kind, Upsampling upsampling) {

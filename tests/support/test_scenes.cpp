@@ -50,6 +50,18 @@ Scene make_grey_floor_seen_from_above(float eye_height, float fov_degrees) {
   return scene;
 }
 
+Scene make_floor_under_overhead_sun(const Material& material, float illuminance_lux) {
+  Scene scene = make_grey_floor_seen_from_above(5.0f, 30.0f);
+  scene.meshes[0].uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+  scene.materials = {material};
+  Light sun;
+  sun.type = LightType::directional;
+  sun.direction = Vec3f(0, -1, 0);
+  sun.intensity = illuminance_lux;
+  scene.lights.push_back(sun);
+  return scene;
+}
+
 Scene make_sunlit_uv_floor(const Vec3f& toward_light, bool mirrored_u) {
   Scene scene = make_grey_floor_seen_from_above(90.0f, 10.0f);
   scene.materials[0].type = MaterialType::diffuse;

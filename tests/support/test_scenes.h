@@ -15,6 +15,13 @@ Scene make_emitting_enclosure(float albedo, float emitted);
 // +z) with the given field of view. No lights: tests add theirs.
 Scene make_grey_floor_seen_from_above(float eye_height, float fov_degrees);
 
+// That floor seen from 5 units above with a 30° field of view (every camera ray within 15°
+// of the normal), with uvs (u along +x, v along +z), wearing `material` and lit straight
+// down by a white directional light of `illuminance_lux`: a Lambertian albedo ρ films as
+// ρ · E/π in every pixel, with no noise in RGB transport and only the wavelengths' in
+// spectral transport.
+Scene make_floor_under_overhead_sun(const Material& material, float illuminance_lux);
+
 // The same floor with per-vertex normals (+y) and uvs (u along +x, or along −x when
 // `mirrored_u`; v along +z, i.e. down the image), lit by a delta directional light from
 // `toward_light` (illuminance 1 lux), the camera 90 above with a 10° field of view (view

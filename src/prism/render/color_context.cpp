@@ -63,6 +63,14 @@ Vec3d emission_spectrum_rgb(const color::PiecewiseLinearSpectrum& spd, const col
   return working.xyz_to_rgb * (xyz * (value / xyz.y));
 }
 
+// conversion_matrix from each ColorPickerSpace (indexed by its value) to `target`.
+std::array<Mat3, 3> conversions_to(const color::ColorSpace& target) {
+  std::array<Mat3, 3> out;
+  for (const ColorPickerSpace s : {ColorPickerSpace::srgb, ColorPickerSpace::acescg, ColorPickerSpace::rec2020})
+    out[static_cast<std::size_t>(s)] = color::conversion_matrix(picker_color_space(s), target);
+  return out;
+}
+
 }  // namespace
 
 color::ColorSpace film_color_space(const TransportSettings& settings) {
@@ -80,11 +88,20 @@ color::ColorSpace film_color_space(const TransportSettings& settings) {
 template <int N>
 ColorContext<SpectralMode<N>>::ColorContext(const Scene& scene, const TransportSettings& settings)
     : settings_(settings),
-      srgb_to_film_(color::conversion_matrix(color::color_space("srgb"), film_color_space(settings))),
-      srgb_table_(&color::JakobHanikaTable::get("srgb")) {
+      to_film_(conversions_to(film_color_space(settings))),
+      srgb_table_(&color::JakobHanikaTable::get("srgb")),
+      to_srgb_(conversions_to(color::color_space("srgb"))) {
+  // A wide-gamut colour is upsampled with its own space's table: the sRGB one would clip it
+  // to Rec.709. Mallett–Yuksel's basis is sRGB's: the colour converted, clipped there.
+  // The wide-gamut tables are found only where a material needs them (each is megabytes).
+  tables_ = {srgb_table_, nullptr, nullptr};
   for (const Material& m : scene.materials) {
-    base_color_jh_.push_back(srgb_table_->lookup(Vec3d(m.base_color)));
-    base_color_my_weights_.push_back(color::mallett_yuksel_weights_under_e(Vec3d(m.base_color)));
+    const std::size_t space = static_cast<std::size_t>(m.base_color_space);
+    if (!tables_[space]) tables_[space] = &color::JakobHanikaTable::get(picker_space_name(m.base_color_space));
+    base_color_jh_.push_back(tables_[space]->lookup(Vec3d(m.base_color)));
+    const Vec3d srgb = m.base_color_space == ColorPickerSpace::srgb ? Vec3d(m.base_color)
+                                                                    : max(to_srgb_[space] * Vec3d(m.base_color), Vec3d(0.0));
+    base_color_my_weights_.push_back(color::mallett_yuksel_weights_under_e(srgb));
     base_color_table_.push_back(-1);
     if (m.base_color_spectrum) {
       base_color_table_.back() = static_cast<std::int32_t>(spectrum_tables_.size());
@@ -112,13 +129,16 @@ Wavelengths<SpectralMode<N>> ColorContext<SpectralMode<N>>::sample_wavelengths(s
 }
 
 template <int N>
-Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::reflectance(const Vec3f& srgb, const Wavelengths<Mode>& w) const {
+Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::reflectance(const Vec3f& rgb, const Wavelengths<Mode>& w,
+                                                                      ColorPickerSpace space) const {
   Spectrum<Mode> s;
+  const auto index = static_cast<std::size_t>(space);
   if (settings_.upsampling == Upsampling::mallett_yuksel) {
-    const color::MallettYukselSpectrum my{color::mallett_yuksel_weights_under_e(Vec3d(srgb))};
+    const Vec3d srgb = space == ColorPickerSpace::srgb ? Vec3d(rgb) : max(to_srgb_[index] * Vec3d(rgb), Vec3d(0.0));
+    const color::MallettYukselSpectrum my{color::mallett_yuksel_weights_under_e(srgb)};
     for (int i = 0; i < N; ++i) s[i] = static_cast<float>(my(w.wavelength_nm[i]));
   } else {
-    s = Spectrum<Mode>(color::evaluate_sigmoid_polynomial(srgb_table_->lookup(Vec3d(srgb)), w.wavelength_nm));
+    s = Spectrum<Mode>(color::evaluate_sigmoid_polynomial(tables_[index]->lookup(Vec3d(rgb)), w.wavelength_nm));
   }
   return s;
 }
@@ -157,10 +177,12 @@ template class ColorContext<SpectralMode<8>>;
 
 ColorContext<RgbMode>::ColorContext(const Scene& scene, const TransportSettings& settings) {
   const color::ColorSpace& working = color::color_space(settings.working_space);
-  srgb_to_working_ = color::conversion_matrix(color::color_space("srgb"), working);
+  to_working_ = conversions_to(working);
   const Mat3 film_to_working = color::spectral_xyz_to_rgb_matrix(working);
   for (const Material& m : scene.materials) {
-    base_colors_.push_back(reflectance(m.base_color, {}));
+    const Vec3d base = reflectance_to_film(m.base_color, m.base_color_space);
+    base_colors_.emplace_back();
+    for (int i = 0; i < 3; ++i) base_colors_.back()[i] = static_cast<float>(base[i]);
     if (!m.base_color_spectrum) continue;
     // What spectral transport films under a white (flat) light, in working RGB.
     const Vec3d rgb = film_to_working * color::reflectance_to_xyz(*m.base_color_spectrum,
@@ -177,8 +199,9 @@ ColorContext<RgbMode>::ColorContext(const Scene& scene, const TransportSettings&
   }
 }
 
-Spectrum<RgbMode> ColorContext<RgbMode>::reflectance(const Vec3f& srgb, const Wavelengths<Mode>&) const {
-  const Vec3d rgb = srgb_to_working_ * Vec3d(srgb);
+Spectrum<RgbMode> ColorContext<RgbMode>::reflectance(const Vec3f& color, const Wavelengths<Mode>&,
+                                                     ColorPickerSpace space) const {
+  const Vec3d rgb = reflectance_to_film(color, space);
   Spectrum<Mode> s;
   for (int i = 0; i < 3; ++i) s[i] = static_cast<float>(rgb[i]);
   return s;

@@ -3,12 +3,14 @@
 // colours (sRGB reflectances, emitters in a colour-picker space with a luminance) become
 // per-path spectra, and how a path's radiance becomes film values.
 //   spectral: channels are N sampled wavelengths; reflectances are upsampled (Jakob–Hanika
-//             2019 table of sRGB, fitted relative to E so that a flat white light films the
-//             colour itself; or Mallett–Yuksel 2019); emitters follow the emission rule of
+//             2019 table of the material's base-colour space, sRGB for textures and other
+//             colours, fitted relative to E so that a flat white light films the colour
+//             itself; or Mallett–Yuksel 2019, whose sRGB basis takes wide-gamut colours
+//             clipped to Rec.709); emitters follow the emission rule of
 //             color/emission_spectrum.h (E-relative); the film holds 683·XYZ (Y in nits),
 //             relative to illuminant E.
 //   rgb:      channels are the working space's R, G, B; reflectances are converted from
-//             sRGB primaries; emitters from their picker space (Bradford); the film holds
+//             their primaries (Bradford between whites); emitters from their picker space (Bradford); the film holds
 //             working RGB with Y in nits.
 // Spectra a scene gives as data (scene/spectral_inputs.h) are white-balanced to the working
 // white W, the same convention the emission rule follows for colours:
@@ -22,6 +24,7 @@
 // Reflectances agree exactly under a white light; emitters up to the difference between a
 // von Kries (Bradford) adaptation and the spectral division
 // (tests/render/spectral_inputs_render_test.cpp measures both).
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -55,7 +58,10 @@ class ColorContext<SpectralMode<N>> {
 
   // `u` is the sample's primary number of wavelength sampling, uniform in [0, 1).
   Wavelengths<Mode> sample_wavelengths(std::uint64_t sample_index, double u) const;
-  Spectrum<Mode> reflectance(const Vec3f& linear_srgb, const Wavelengths<Mode>& w) const;
+  // A reflectance given in `space` (sRGB: textures, tints, sheens) upsampled with that
+  // space's table.
+  Spectrum<Mode> reflectance(const Vec3f& rgb, const Wavelengths<Mode>& w,
+                             ColorPickerSpace space = ColorPickerSpace::srgb) const;
   // base_color, emission and to_film run at every vertex or sample of every path: inline
   // below, so the spectra stay in registers instead of passing through memory at each call.
   Spectrum<Mode> base_color(std::uint32_t material, const Wavelengths<Mode>& w) const;
@@ -67,9 +73,11 @@ class ColorContext<SpectralMode<N>> {
   // luminance; a colour films as itself to the table's accuracy.
   Spectrum<Mode> rgb_radiance(const Vec3f& linear_rec709_nits, const Wavelengths<Mode>& w) const;
   Vec3d to_film(const Spectrum<Mode>& value, const Wavelengths<Mode>& w) const;
-  // A linear Rec.709 reflectance (the albedo AOV) as film values: CIE XYZ relative to E,
-  // with Bradford adaptation from D65, so a white reflector is (1, 1, 1).
-  Vec3d reflectance_to_film(const Vec3f& linear_srgb) const { return srgb_to_film_ * Vec3d(linear_srgb); }
+  // A linear reflectance in `space` (the albedo AOV) as film values: CIE XYZ relative to E,
+  // with Bradford adaptation from the space's white, so a white reflector is (1, 1, 1).
+  Vec3d reflectance_to_film(const Vec3f& rgb, ColorPickerSpace space = ColorPickerSpace::srgb) const {
+    return to_film_[static_cast<std::size_t>(space)] * Vec3d(rgb);
+  }
   // Keeps only channel 0's wavelength after a dispersive event (hero wavelength, Wilkie
   // et al. 2014): the other channels' pdfs become 0 and channel 0's estimate must become
   // the one-sample estimator f(λ0)/p0(λ0), with p0 the density λ0 was actually drawn with
@@ -88,11 +96,14 @@ class ColorContext<SpectralMode<N>> {
   }
 
   TransportSettings settings_;
-  Mat3 srgb_to_film_;
+  std::array<Mat3, 3> to_film_;  // per ColorPickerSpace
   // The sRGB upsampling table, found once: JakobHanikaTable::get looks the space up by
   // name and takes a lock, which every textured shading point and environment lookup
   // paid (and every thread contended for) when it was called per lookup.
   const color::JakobHanikaTable* srgb_table_;
+  // Per ColorPickerSpace; null for a space no material's base colour is in.
+  std::array<const color::JakobHanikaTable*, 3> tables_;
+  std::array<Mat3, 3> to_srgb_;                           // per ColorPickerSpace (Mallett–Yuksel)
   std::vector<color::SigmoidPolynomial> base_color_jh_;
   std::vector<Vec3d> base_color_my_weights_;  // mallett_yuksel_weights_under_e
   std::vector<color::EmissionSpectrum> emitters_;
@@ -135,19 +146,22 @@ class ColorContext<RgbMode> {
   ColorContext(const Scene& scene, const TransportSettings& settings);
 
   Wavelengths<Mode> sample_wavelengths(std::uint64_t, double) const { return {}; }
-  Spectrum<Mode> reflectance(const Vec3f& linear_srgb, const Wavelengths<Mode>& w) const;
+  Spectrum<Mode> reflectance(const Vec3f& rgb, const Wavelengths<Mode>& w,
+                             ColorPickerSpace space = ColorPickerSpace::srgb) const;
   Spectrum<Mode> base_color(std::uint32_t material, const Wavelengths<Mode>&) const { return base_colors_[material]; }
   Spectrum<Mode> emission(std::uint32_t emitter, const Wavelengths<Mode>&) const { return emitters_[emitter]; }
   Spectrum<Mode> rgb_radiance(const Vec3f& linear_rec709_nits, const Wavelengths<Mode>& w) const {
     return reflectance(linear_rec709_nits, w);  // the same sRGB → working conversion
   }
   Vec3d to_film(const Spectrum<Mode>& value, const Wavelengths<Mode>&) const { return {value[0], value[1], value[2]}; }
-  // A linear Rec.709 reflectance (the albedo AOV) in the working space.
-  Vec3d reflectance_to_film(const Vec3f& linear_srgb) const { return srgb_to_working_ * Vec3d(linear_srgb); }
+  // A linear reflectance in `space` (the albedo AOV) in the working space.
+  Vec3d reflectance_to_film(const Vec3f& rgb, ColorPickerSpace space = ColorPickerSpace::srgb) const {
+    return to_working_[static_cast<std::size_t>(space)] * Vec3d(rgb);
+  }
   void terminate_secondary(Wavelengths<Mode>&) const {}
 
  private:
-  Mat3 srgb_to_working_;
+  std::array<Mat3, 3> to_working_;  // per ColorPickerSpace; [srgb] converts textures and tints
   std::vector<Spectrum<Mode>> base_colors_;
   std::vector<Spectrum<Mode>> emitters_;
 };

@@ -196,6 +196,8 @@ std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settin
     // Spectra given as data, only where there are some (so other scenes keep their fingerprints).
     for (const auto* spectrum : {&m.base_color_spectrum, &m.emission.spectrum})
       if (*spectrum) hash_spectrum(h, **spectrum);
+    // Only for wide-gamut base colours, so other scenes keep their fingerprints.
+    if (m.base_color_space != ColorPickerSpace::srgb) h.value(m.base_color_space);
     // Only with a normal or bump map, so other scenes keep their fingerprints; checkpoints
     // of such scenes from before these maps were applied no longer match.
     if (m.normal_texture >= 0) {

@@ -89,7 +89,8 @@ Spectrum<Mode> WavefrontIntegrator<Mode>::base_color(const Material& m, const Su
                                                      const Ray& ray, const Wavelengths<Mode>& wl) const {
   // Untextured materials (most vertices) skip the texture lookup's call chain.
   if (m.base_color_texture >= 0)
-    if (const auto rgb = textured_base_color(m, si, cone_width, ray)) return colors_.reflectance(*rgb, wl);
+    if (const auto rgb = textured_base_color(m, si, cone_width, ray))
+      return colors_.reflectance(*rgb, wl, m.base_color_space);
   return colors_.base_color(si.material, wl);
 }
 
@@ -124,7 +125,12 @@ std::optional<Vec3f> WavefrontIntegrator<Mode>::textured_base_color(const Materi
   const auto texel = texel_at_hit(m.base_color_texture, si, cone_width, ray);
   if (!texel) return std::nullopt;
   // Grey and two-channel textures come expanded to (g, g, g) (texture_sampling.h).
-  return Vec3f((*texel)[0], (*texel)[1], (*texel)[2]) * m.base_color;
+  Vec3f rgb((*texel)[0], (*texel)[1], (*texel)[2]);
+  // Texels are Rec.709: in a wide-gamut material's space before its factor multiplies them
+  // (Material::base_color_space; Rec.709 lies inside both, so only round-off is clipped).
+  if (m.base_color_space != ColorPickerSpace::srgb)
+    rgb = max(Vec3f(rec709_to_picker_space(m.base_color_space) * Vec3d(rgb)), Vec3f(0.0f));
+  return rgb * m.base_color;
 }
 
 template <class Mode>

@@ -105,7 +105,8 @@ class WavefrontIntegrator {
   void shade(Paths& paths, std::uint32_t slot) const;
   Spectrum<Mode> base_color(const Material& material, const SurfaceInteraction& si, float cone_width,
                             const Ray& ray, const Wavelengths<Mode>& wl) const;
-  // Base colour × texel (linear Rec.709) of a textured material; nothing when untextured.
+  // Base colour × texel of a textured material, in the material's base_color_space;
+  // nothing when untextured.
   std::optional<Vec3f> textured_base_color(const Material& material, const SurfaceInteraction& si, float cone_width,
                                            const Ray& ray) const;
   // Texture `texture` at the hit, filtered at the ray cone's level of detail; nothing when

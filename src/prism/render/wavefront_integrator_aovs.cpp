@@ -23,13 +23,15 @@ void WavefrontIntegrator<Mode>::record_first_hit_aovs(AovSample& a, const Ray& r
   // the path to its next non-delta hit would tie the AOV to the transport's random numbers.
   // Mirrors and Schlick conductors are tinted by base colour; glass and metals given by a
   // measured complex IOR have no base colour, so they are white.
-  Vec3f albedo_srgb(1.0f);
+  Vec3f albedo(1.0f);
+  ColorPickerSpace space = ColorPickerSpace::srgb;
   const bool untinted =
       m.type == MaterialType::dielectric || (m.type == MaterialType::conductor && tables_.conductor(si.material));
   if (!untinted) {
-    albedo_srgb = textured_base_color(m, si, cone_width, ray).value_or(m.base_color);
+    albedo = textured_base_color(m, si, cone_width, ray).value_or(m.base_color);
+    space = m.base_color_space;
   }
-  a.albedo = Vec3f(colors_.reflectance_to_film(albedo_srgb));
+  a.albedo = Vec3f(colors_.reflectance_to_film(albedo, space));
   // Facing the camera: the frame keeps the mesh's orientation, which is arbitrary for
   // two-sided surfaces seen from behind.
   const Vec3f n = si.shading.n;

@@ -1,5 +1,7 @@
 #include "prism/scene/emission.h"
 
+#include <array>
+
 #include "prism/color/chromatic_adaptation.h"
 
 namespace prism {
@@ -11,6 +13,36 @@ const color::ColorSpace& picker_color_space(ColorPickerSpace space) {
     case ColorPickerSpace::srgb: break;
   }
   return color::color_space("srgb");
+}
+
+const char* picker_space_name(ColorPickerSpace space) {
+  switch (space) {
+    case ColorPickerSpace::acescg: return "acescg";
+    case ColorPickerSpace::rec2020: return "rec2020";
+    case ColorPickerSpace::srgb: break;
+  }
+  return "srgb";
+}
+
+Vec3d picker_color_in_rec709(const Vec3f& color, ColorPickerSpace space) {
+  if (space == ColorPickerSpace::srgb) return Vec3d(color);
+  return color::conversion_matrix(picker_color_space(space), color::color_space("srgb")) * Vec3d(color);
+}
+
+const Mat3& rec709_to_picker_space(ColorPickerSpace space) {
+  static const std::array<Mat3, 3> matrices = [] {
+    std::array<Mat3, 3> m;
+    for (const ColorPickerSpace s : {ColorPickerSpace::srgb, ColorPickerSpace::acescg, ColorPickerSpace::rec2020})
+      m[static_cast<std::size_t>(s)] = color::conversion_matrix(color::color_space("srgb"), picker_color_space(s));
+    return m;
+  }();
+  return matrices[static_cast<std::size_t>(space)];
+}
+
+std::optional<Vec3f> picker_color_within_rec709(const Vec3f& color, ColorPickerSpace space) {
+  const Vec3d srgb = picker_color_in_rec709(color, space);
+  if (min_component(srgb) < -1e-5 * max_component(srgb)) return std::nullopt;
+  return Vec3f(max(srgb, Vec3d(0.0)));
 }
 
 double relative_luminance(const Vec3f& color, ColorPickerSpace space) {

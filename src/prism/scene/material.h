@@ -28,7 +28,8 @@ enum class ConductorFresnel : std::uint8_t { schlick, complex_ior };
 enum class DispersionModel : std::uint8_t { none, cauchy, sellmeier };
 enum class AlphaMode : std::uint8_t { opaque, mask, blend };
 
-// Colour-picker space a light colour is given in (so a pure ACEScg blue is expressible).
+// Colour-picker space a light colour or a base colour is given in (so a pure ACEScg blue,
+// or a Rec.2020 green no Rec.709 reflectance reaches, is expressible).
 enum class ColorPickerSpace : std::uint8_t { srgb, acescg, rec2020 };
 
 // Diffuse emission from the front face: `color` gives the chromaticity (in
@@ -51,8 +52,14 @@ struct Emission {
 struct Material {
   std::string name;
   MaterialType type = MaterialType::diffuse;
-  Vec3f base_color{0.8f};        // albedo / specular tint / F0 / glass tint (1: clear), linear Rec.709
+  Vec3f base_color{0.8f};        // albedo / specular tint / F0 / glass tint (1: clear), linear, in base_color_space
   int base_color_texture = -1;   // index into Scene::textures; multiplies base_color
+  // The primaries base_color is given with (white (1, 1, 1) is the perfect reflector in
+  // each): wide-gamut albedos reach colours outside Rec.709 (render/color_context.h upsamples
+  // them with their own space's table). A texture's texels, Rec.709, are converted to this
+  // space and multiply base_color there (exact for grey factors; glTF's product otherwise
+  // has no meaning across spaces). srgb where base_color_spectrum is given.
+  ColorPickerSpace base_color_space = ColorPickerSpace::srgb;
   // Measured reflectance in [0, 1] instead of an RGB base colour (no texture then);
   // base_color holds its colour under a white light (scene/spectral_inputs.h).
   std::optional<color::PiecewiseLinearSpectrum> base_color_spectrum;

@@ -47,6 +47,8 @@ void validate_material(const Material& m) {
       m.emission.luminance_nits < 0.0f)
     throw SceneError(fmt::format("material '{}' has non-finite values", m.name));
   if (m.base_color_spectrum) validate_spectrum(*m.base_color_spectrum, fmt::format("material '{}'", m.name), 1.0);
+  if (m.base_color_space != ColorPickerSpace::srgb && m.base_color_spectrum)
+    throw SceneError(fmt::format("material '{}': a measured base colour has no colour space", m.name));
   if (m.emission.spectrum)
     validate_spectrum(*m.emission.spectrum, fmt::format("material '{}'", m.name), kNoSpectrumMaximum);
 }

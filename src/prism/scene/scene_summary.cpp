@@ -52,6 +52,7 @@ SceneSummary summarize_scene(const Scene& scene) {
     if (m.has_sheen()) ++s.sheened_materials;
     if (m.has_iridescence()) ++s.iridescent_materials;
     if (m.has_anisotropy()) ++s.anisotropic_materials;
+    if (m.base_color_space != ColorPickerSpace::srgb) ++s.wide_gamut_materials;
     if (m.base_color_spectrum || m.emission.spectrum) ++s.spectral_materials;
   }
   for (const auto& l : scene.lights) {
@@ -88,6 +89,7 @@ std::string format_scene_summary(const Scene& scene) {
   if (s.sheened_materials) extras += fmt::format(", {} with sheen", s.sheened_materials);
   if (s.iridescent_materials) extras += fmt::format(", {} iridescent", s.iridescent_materials);
   if (s.anisotropic_materials) extras += fmt::format(", {} anisotropic", s.anisotropic_materials);
+  if (s.wide_gamut_materials) extras += fmt::format(", {} wide-gamut", s.wide_gamut_materials);
   if (s.spectral_materials) extras += fmt::format(", {} with spectra", s.spectral_materials);
   out += fmt::format("materials {} ({}; {} emissive{})\n", scene.materials.size(), counts(s.materials_by_type),
                      s.emissive_materials, extras);

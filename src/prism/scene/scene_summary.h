@@ -21,6 +21,7 @@ struct SceneSummary {
   std::size_t sheened_materials = 0;    // with a sheen (Material::has_sheen)
   std::size_t iridescent_materials = 0; // with a thin film (Material::has_iridescence)
   std::size_t anisotropic_materials = 0; // with anisotropic roughness (Material::has_anisotropy)
+  std::size_t wide_gamut_materials = 0;  // base colour in ACEScg or Rec.2020 primaries
   std::size_t spectral_materials = 0;  // with a reflectance or emission spectrum given as data
   std::size_t spectral_lights = 0;
   std::map<std::string, std::size_t> materials_by_type;  // "diffuse" → count

@@ -43,6 +43,7 @@ void set_emission_spectrum(Emitter& emitter, color::PiecewiseLinearSpectrum spd)
 template <class Surface>
 void set_base_color_spectrum(Surface& material, color::PiecewiseLinearSpectrum reflectance) {
   material.base_color = reflectance_spectrum_srgb(reflectance);
+  material.base_color_space = {};  // srgb: a spectrum has no primaries
   material.base_color_spectrum = std::move(reflectance);
 }
 

@@ -73,9 +73,19 @@ json texture_info(const Scene& scene, int index) {
   return info;
 }
 
+// glTF 2.0's colours are linear Rec.709: one given in another space is converted, and
+// refused where it lies outside Rec.709 (clipped, it would be another colour).
+Vec3f rec709_color(const Vec3f& color, ColorPickerSpace space, const Material& m, std::string_view what) {
+  if (auto c = picker_color_within_rec709(color, space)) return *c;
+  throw UsageError(fmt::format("GLB writer: material '{}': its {} ({}) lies outside Rec.709, which glTF 2.0's colours "
+                               "are limited to",
+                               m.name, what, picker_space_name(space)));
+}
+
 json material_json(const Scene& scene, const Material& m) {
   json j = {{"name", m.name}};
-  json pbr = {{"baseColorFactor", {m.base_color.x, m.base_color.y, m.base_color.z, m.opacity}},
+  const Vec3f base = rec709_color(m.base_color, m.base_color_space, m, "base colour");
+  json pbr = {{"baseColorFactor", {base.x, base.y, base.z, m.opacity}},
               {"metallicFactor", 0.0}, {"roughnessFactor", m.roughness}};
   switch (m.type) {
     case MaterialType::diffuse:
@@ -179,8 +189,12 @@ json material_json(const Scene& scene, const Material& m) {
   if (m.alpha_mode != AlphaMode::opaque) j["doubleSided"] = true;  // cards are seen from both sides
   if (m.is_emissive()) {
     // Prism reads emissive (1, 1, 1) × strength 1 as 1 nit: scale the colour to Y = 1.
-    const double y = relative_luminance(m.emission.color, ColorPickerSpace::srgb);
-    const Vec3f c = m.emission.color / static_cast<float>(std::max(y, 1e-12));
+    if (m.emission.texture >= 0 && m.emission.color_space != ColorPickerSpace::srgb)
+      throw UsageError(fmt::format("GLB writer: material '{}': an emission texture tinted in {}, which glTF 2.0 cannot say",
+                                   m.name, picker_space_name(m.emission.color_space)));
+    const Vec3f emissive = rec709_color(m.emission.color, m.emission.color_space, m, "emission colour");
+    const double y = relative_luminance(emissive, ColorPickerSpace::srgb);
+    const Vec3f c = emissive / static_cast<float>(std::max(y, 1e-12));
     const float peak = std::max(max_component(c), 1.0f);  // emissiveFactor is limited to [0, 1]
     j["emissiveFactor"] = {c.x / peak, c.y / peak, c.z / peak};
     j["extensions"]["KHR_materials_emissive_strength"] = {{"emissiveStrength", m.emission.luminance_nits * peak}};

@@ -13,11 +13,6 @@ namespace {
 
 constexpr float kPi = std::numbers::pi_v<float>;
 
-ColorPickerSpace read_color_space(const JsonValue& value) {
-  return value.as_enum<ColorPickerSpace>(
-      {{"srgb", ColorPickerSpace::srgb}, {"acescg", ColorPickerSpace::acescg}, {"rec2020", ColorPickerSpace::rec2020}});
-}
-
 Vec3f read_direction(const JsonValue& value) {
   const Vec3f d = value.as_vec3();
   const float len = length(d);
@@ -52,7 +47,7 @@ double transformed_area(const TriangleMesh& mesh, const Transform& t) {
 void JsonSceneReader::read_light_color(const JsonValue& value, Light& light) const {
   light.color = value.get_vec3("color", Vec3f(1.0f));
   if (min(light.color, Vec3f(0.0f)) != Vec3f(0.0f)) value["color"].fail("colour components must not be negative");
-  if (auto s = value.find("color_space")) light.color_space = read_color_space(*s);
+  if (auto s = value.find("color_space")) light.color_space = read_color_picker_space(*s);
   if (auto s = value.find("spectrum")) {
     if (value.has("color") || value.has("color_space")) value.fail("give either 'color' or 'spectrum', not both");
     set_emission_spectrum(light, read_spectrum(*s, SpectrumUse::emission));

@@ -75,9 +75,7 @@ void read_emission(JsonSceneReader& reader, Material& m, std::uint32_t index, co
   Emission& e = m.emission;
   e.color = value.get_vec3("color", Vec3f(1.0f));
   if (min(e.color, Vec3f(0.0f)) != Vec3f(0.0f)) value["color"].fail("colour components must not be negative");
-  if (auto s = value.find("color_space"))
-    e.color_space = s->as_enum<ColorPickerSpace>(
-        {{"srgb", ColorPickerSpace::srgb}, {"acescg", ColorPickerSpace::acescg}, {"rec2020", ColorPickerSpace::rec2020}});
+  if (auto s = value.find("color_space")) e.color_space = read_color_picker_space(*s);
   if (auto s = value.find("spectrum")) {
     if (value.has("color") || value.has("color_space")) value.fail("give either 'color' or 'spectrum', not both");
     if (value.has("texture")) value.fail("an emission texture multiplies a colour: it cannot go with 'spectrum'");
@@ -92,6 +90,11 @@ void read_emission(JsonSceneReader& reader, Material& m, std::uint32_t index, co
 }
 
 }  // namespace
+
+ColorPickerSpace read_color_picker_space(const JsonValue& value) {
+  return value.as_enum<ColorPickerSpace>(
+      {{"srgb", ColorPickerSpace::srgb}, {"acescg", ColorPickerSpace::acescg}, {"rec2020", ColorPickerSpace::rec2020}});
+}
 
 std::filesystem::path JsonSceneReader::resolve(const JsonValue& file_name) const {
   return resolve_scene_reference(scene_dir, file_name.as_string(), options.allow_external_paths,
@@ -216,7 +219,7 @@ void JsonSceneReader::read_iridescence(Material& m, const JsonValue& value) {
 }
 
 void JsonSceneReader::read_material(const JsonValue& value) {
-  value.expect_keys({"name", "type", "base_color", "base_color_spectrum", "base_color_texture", "roughness",
+  value.expect_keys({"name", "type", "base_color", "base_color_space", "base_color_spectrum", "base_color_texture", "roughness",
                      "anisotropy", "anisotropy_rotation_degrees", "anisotropy_texture", "metallic", "metallic_roughness_texture", "normal_texture", "normal_scale",
                      "bump_texture", "bump_scale", "microfacet", "conductor", "ior", "dispersion", "thin_walled",
                      "transmission", "attenuation_color", "attenuation_distance", "specular", "specular_color",
@@ -239,7 +242,9 @@ void JsonSceneReader::read_material(const JsonValue& value) {
   m.base_color = value.get_vec3("base_color", m.type == MaterialType::dielectric ? Vec3f(1.0f) : m.base_color);
   if (min(m.base_color, Vec3f(0.0f)) != Vec3f(0.0f)) value["base_color"].fail("colour components must not be negative");
   if (auto t = value.find("base_color_texture")) m.base_color_texture = read_texture(*t, TextureEncoding::srgb);
+  if (auto s = value.find("base_color_space")) m.base_color_space = read_color_picker_space(*s);
   if (auto s = value.find("base_color_spectrum")) {
+    if (value.has("base_color_space")) value.fail("give either 'base_color_space' or 'base_color_spectrum', not both");
     if (value.has("base_color")) value.fail("give either 'base_color' or 'base_color_spectrum', not both");
     if (value.has("base_color_texture"))
       value.fail("a base colour texture multiplies a colour: it cannot go with 'base_color_spectrum'");

@@ -55,6 +55,9 @@ struct JsonSceneReader {
   void finish_emission_power();  // needs the geometry and instances
 };
 
+// "srgb", "acescg" or "rec2020": the primaries a colour is given with.
+ColorPickerSpace read_color_picker_space(const JsonValue& value);
+
 // {"translate", "rotate": {"axis", "angle_degrees"}, "rotate_degrees": [x, y, z],
 //  "scale": s | [x, y, z], "matrix": 12 or 16 numbers, row-major}: M then S, R, T.
 Transform read_transform(const JsonValue& value);

@@ -20,6 +20,7 @@ namespace prism::loaders {
 
 struct PbrtAreaLight {
   Vec3f color{0.0f};
+  ColorPickerSpace color_space = ColorPickerSpace::srgb;
   float luminance_nits = 0.0f;
   std::optional<color::PiecewiseLinearSpectrum> spectrum;
   bool two_sided = false;
@@ -32,6 +33,7 @@ struct PbrtGraphicsState {
   std::optional<PbrtAreaLight> area_light;
   bool reverse_orientation = false;
   std::string interior_medium;  // MediumInterface's first name ("": none)
+  std::string color_space = "srgb";  // ColorSpace: the pbrt colour space of rgb parameters
 };
 
 // A MakeNamedMedium: what Prism renders of it, absorption inside glass (σ_a per scene unit,
@@ -45,6 +47,7 @@ struct PbrtMedium {
 struct PbrtTexture {
   int image = -1;
   Vec3f value{1.0f};  // constant, or the image's tint (pbrt's "scale")
+  ColorPickerSpace space = ColorPickerSpace::srgb;  // of a constant's value
 };
 
 class PbrtBuilder {
@@ -76,7 +79,8 @@ class PbrtBuilder {
   std::uint32_t shape_material(const PbrtParams& params, double area);
   std::uint32_t alpha_material(std::uint32_t material, const PbrtParams& params);
   int texture_with_alpha(int base, int alpha);
-  std::optional<Vec3f> reflectance(const PbrtParams& params, std::string_view name, int& texture);
+  // A reflectance parameter: a colour (in the ColorSpace in effect) or a texture's.
+  std::optional<PbrtColor> reflectance(const PbrtParams& params, std::string_view name, int& texture);
   std::filesystem::path resolve(const PbrtParams& params, std::string_view param, const std::string& file) const;
   void ignore(std::string_view what, const PbrtParams& params);
   void note_unused(std::string_view directive, const PbrtParams& params);

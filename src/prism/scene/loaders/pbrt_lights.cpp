@@ -19,6 +19,7 @@ namespace {
 
 struct LightColor {
   Vec3f color{1.0f};
+  ColorPickerSpace space = ColorPickerSpace::srgb;
   float luminance = 1.0f;
   std::optional<color::PiecewiseLinearSpectrum> spectrum;  // rendered as data (PbrtParams::get_spectrum)
 };
@@ -30,7 +31,9 @@ double light_scale(const PbrtParams& p) {
   return scale;
 }
 
-LightColor light_color(const PbrtParams& p, std::string_view name, std::vector<std::string>& approximations) {
+// `color_space`: the pbrt colour space in effect, which an "rgb" colour is in.
+LightColor light_color(const PbrtParams& p, std::string_view name, std::string_view color_space,
+                       std::vector<std::string>& approximations) {
   LightColor c;
   if (auto spectrum = p.get_spectrum(name, PbrtSpectrumUse::illuminant)) {
     // Normalised to unit luminance, as pbrt-v4 normalises light spectra: `scale` is the luminance.
@@ -38,10 +41,17 @@ LightColor light_color(const PbrtParams& p, std::string_view name, std::vector<s
     c.luminance = static_cast<float>(light_scale(p));
     return c;
   }
-  const Vec3f rgb = p.get_color(name, PbrtSpectrumUse::illuminant, approximations).value_or(Vec3f(1.0f));
+  const PbrtColor rgb = p.get_color(name, PbrtSpectrumUse::illuminant, color_space, approximations).value_or(PbrtColor{});
   const double scale = light_scale(p);
-  c.color = rgb;
-  c.luminance = static_cast<float>(relative_luminance(rgb, ColorPickerSpace::srgb) * scale);
+  c.color = rgb.rgb;
+  c.space = rgb.space;
+  c.luminance = static_cast<float>(relative_luminance(rgb.rgb, rgb.space) * scale);
+  // pbrt-v4 multiplies an rgb light by its space's illuminant, ACES' D60 for aces2065-1, and
+  // films that warmer white unadapted; Prism's colour-picker rule keeps (1, 1, 1) neutral.
+  if (p.has(name) && p.find(name)->type == "rgb" && color_space == "aces2065-1")
+    approximations.push_back(fmt::format("'{}' (line {}) in aces2065-1 as an ACEScg colour whose white is neutral "
+                                         "(pbrt-v4 emits the ACES white, D60)",
+                                         name, p.find(name)->line));
   return c;
 }
 
@@ -66,9 +76,10 @@ void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
   Light light;
   light.name = fmt::format("{}-{}", type, p.line);
   if (type == "point" || type == "spot") {
-    const LightColor c = light_color(p, "I", approximations_);
+    const LightColor c = light_color(p, "I", state_.color_space, approximations_);
     light.type = type == "point" ? LightType::point : LightType::spot;
     light.color = c.color;
+    light.color_space = c.space;
     light.intensity = c.luminance;
     light.spectrum = c.spectrum;
     light.position = t.apply_point(p.get_point3("from").value_or(Vec3f(0.0f)));
@@ -94,9 +105,10 @@ void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
     const double power = optional_power(p);
     if (power > 0.0) light.intensity = static_cast<float>(light_scale(p) * power / std::max(solid_angle, 1e-12));
   } else if (type == "distant") {
-    const LightColor c = light_color(p, "L", approximations_);
+    const LightColor c = light_color(p, "L", state_.color_space, approximations_);
     light.type = LightType::directional;
     light.color = c.color;
+    light.color_space = c.space;
     light.intensity = c.luminance;
     light.spectrum = c.spectrum;
     const Vec3f from = p.get_point3("from").value_or(Vec3f(0.0f));
@@ -144,8 +156,9 @@ void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
         light.intensity = static_cast<float>(light.intensity * (lux / map_lux));
       }
     } else {
-      const LightColor c = light_color(p, "L", approximations_);
+      const LightColor c = light_color(p, "L", state_.color_space, approximations_);
       light.color = c.color;
+      light.color_space = c.space;
       light.intensity = c.luminance;
       light.spectrum = c.spectrum;
       // A uniform sky of luminance L gives π L lux on any surface.
@@ -174,9 +187,10 @@ void PbrtBuilder::area_light_source(const std::string& type, const PbrtParams& p
     for (const auto& param : p.params) param.used = true;
     return;
   }
-  const LightColor c = light_color(p, "L", approximations_);
+  const LightColor c = light_color(p, "L", state_.color_space, approximations_);
   PbrtAreaLight light;
   light.color = c.color;
+  light.color_space = c.space;
   light.luminance_nits = c.luminance;
   light.spectrum = c.spectrum;
   light.two_sided = p.get_bool("twosided", false);

@@ -103,7 +103,7 @@ std::optional<std::string> read_sampled_eta(Material& m, const PbrtParams& p, co
 
 }  // namespace
 
-std::optional<Vec3f> PbrtBuilder::reflectance(const PbrtParams& p, std::string_view name, int& texture) {
+std::optional<PbrtColor> PbrtBuilder::reflectance(const PbrtParams& p, std::string_view name, int& texture) {
   const PbrtParam* param = p.find(name);
   if (!param) return std::nullopt;
   if (param->type == "texture") {
@@ -111,9 +111,9 @@ std::optional<Vec3f> PbrtBuilder::reflectance(const PbrtParams& p, std::string_v
     const auto it = named_textures_.find(tex);
     if (it == named_textures_.end()) p.fail(*param, fmt::format("unknown texture '{}'", tex));
     texture = it->second.image;
-    return it->second.value;
+    return PbrtColor{it->second.value, it->second.space};
   }
-  return p.get_color(name, PbrtSpectrumUse::reflectance, approximations_);
+  return p.get_color(name, PbrtSpectrumUse::reflectance, state_.color_space, approximations_);
 }
 
 void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, const std::string& name) {
@@ -195,10 +195,13 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
   }
   if (effective == "diffuse") {
     m.type = MaterialType::diffuse;
-    if (auto measured = p.get_spectrum("reflectance", PbrtSpectrumUse::reflectance))
+    if (auto measured = p.get_spectrum("reflectance", PbrtSpectrumUse::reflectance)) {
       set_base_color_spectrum(m, std::move(*measured));  // rendered as data
-    else
-      m.base_color = reflectance(p, "reflectance", m.base_color_texture).value_or(Vec3f(0.5f));
+    } else {
+      const PbrtColor c = reflectance(p, "reflectance", m.base_color_texture).value_or(PbrtColor{Vec3f(0.5f)});
+      m.base_color = c.rgb;
+      m.base_color_space = c.space;
+    }
     if (type != "diffuse")
       for (const char* n : {"roughness", "thickness", "albedo", "g"}) p.find(n);
   } else if (effective == "conductor") {
@@ -210,7 +213,8 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
     m.anisotropy_rotation_rad = r.anisotropy_rotation_rad;
     if (auto r = reflectance(p, "reflectance", m.base_color_texture)) {
       m.conductor_fresnel = ConductorFresnel::schlick;
-      m.base_color = *r;
+      m.base_color = r->rgb;
+      m.base_color_space = r->space;
     } else {
       const std::string eta_name = conductor_prefix + "eta", k_name = conductor_prefix + "k";
       const std::string* eta = named_spectrum(p, eta_name);
@@ -346,7 +350,10 @@ void PbrtBuilder::texture(const std::string& name, const std::string& value_type
   const bool is_float = value_type == "float";
   if (klass == "constant") {
     if (is_float) t.value = Vec3f(static_cast<float>(p.get_float("value", 1.0)));
-    else t.value = p.get_color("value", PbrtSpectrumUse::reflectance, approximations_).value_or(Vec3f(1.0f));
+    else if (auto c = p.get_color("value", PbrtSpectrumUse::reflectance, state_.color_space, approximations_)) {
+      t.value = c->rgb;
+      t.space = c->space;
+    }
   } else if (klass == "imagemap") {
     t = imagemap(name, p);
   } else {

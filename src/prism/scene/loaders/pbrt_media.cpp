@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "prism/core/error.h"
+#include "prism/scene/emission.h"
 #include "prism/scene/loaders/pbrt_builder.h"
 
 namespace prism::loaders {
@@ -28,7 +29,15 @@ void PbrtBuilder::make_medium(const std::string& name, const PbrtParams& params)
     // pbrt-v4's HomogeneousMedium::Create: σ_a and σ_s default to 1 per unit, both times
     // "scale" (default 1); "Le" × "Lescale" is emission.
     const double scale = params.get_float("scale", 1.0);
-    const Vec3f sigma_a = params.get_color("sigma_a", PbrtSpectrumUse::reflectance, approximations_).value_or(Vec3f(1.0f));
+    // Prism holds σ_a per Rec.709 channel: one given in another ColorSpace is taken as its
+    // Rec.709 colour (a colour, not a spectrum of coefficients: an approximation).
+    const PbrtColor sigma_a_color = params.get_color("sigma_a", PbrtSpectrumUse::reflectance, state_.color_space,
+                                                     approximations_)
+                                        .value_or(PbrtColor{});
+    const Vec3f sigma_a = Vec3f(max(picker_color_in_rec709(sigma_a_color.rgb, sigma_a_color.space), Vec3d(0.0)));
+    if (sigma_a_color.space != ColorPickerSpace::srgb)
+      approximations_.push_back(fmt::format("medium \"{}\" (line {}): sigma_a in {} as its Rec.709 colour", name,
+                                            params.line, state_.color_space));
     const Vec3f sigma_s = params.get_color("sigma_s", PbrtSpectrumUse::reflectance, approximations_).value_or(Vec3f(1.0f));
     const Vec3f le = params.get_color("Le", PbrtSpectrumUse::illuminant, approximations_).value_or(Vec3f(0.0f));
     params.get_float("Lescale", 1.0);

@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "prism/color/chromatic_adaptation.h"
 #include "prism/color/color_space.h"
 #include "prism/color/spectrum.h"
 #include "prism/core/error.h"
@@ -35,6 +36,23 @@ Vec3f spectrum_color(const F& f, PbrtSpectrumUse use) {
 }
 
 }  // namespace
+
+bool is_pbrt_color_space(std::string_view name) {
+  return name == "srgb" || name == "rec2020" || name == "aces2065-1" || name == "dci-p3";
+}
+
+PbrtColor pbrt_color_in(const Vec3f& rgb, std::string_view space, bool& clipped) {
+  if (space == "srgb") return {rgb, ColorPickerSpace::srgb};
+  if (space == "rec2020") return {rgb, ColorPickerSpace::rec2020};
+  // pbrt-v4's DCI-P3 has D65 white: Prism's display-p3, which Rec.2020 contains.
+  const bool aces = space == "aces2065-1";
+  const Mat3 to = aces ? color::conversion_matrix(color::color_space("aces2065-1"), color::color_space("acescg"))
+                       : color::conversion_matrix(color::color_space("display-p3"), color::color_space("rec2020"));
+  const Vec3d v = to * Vec3d(rgb);
+  // Round-off of the conversion (1e-5 of the largest component) is not a clip.
+  if (min_component(v) < -1e-5 * max_component(v)) clipped = true;
+  return {Vec3f(max(v, Vec3d(0.0))), aces ? ColorPickerSpace::acescg : ColorPickerSpace::rec2020};
+}
 
 double parse_pbrt_number(const PbrtTokenizer& tokens, const PbrtToken& token) {
   double value = 0.0;
@@ -175,6 +193,18 @@ std::optional<Vec3f> PbrtParams::get_color(std::string_view name, PbrtSpectrumUs
     return spectrum_color(sampled, use);
   }
   fail(*p, fmt::format("type '{}' is not a colour (rgb, spectrum, blackbody)", p->type));
+}
+
+std::optional<PbrtColor> PbrtParams::get_color(std::string_view name, PbrtSpectrumUse use, std::string_view color_space,
+                                               std::vector<std::string>& approximations) const {
+  const auto rgb = get_color(name, use, approximations);
+  if (!rgb) return std::nullopt;
+  if (find(name)->type != "rgb") return PbrtColor{*rgb, ColorPickerSpace::srgb};
+  bool clipped = false;
+  const PbrtColor c = pbrt_color_in(*rgb, color_space, clipped);
+  if (clipped)
+    approximations.push_back(fmt::format("'{}' (line {}) lies outside ACEScg: clipped to it", name, find(name)->line));
+  return c;
 }
 
 void PbrtParams::check_blackbody(const PbrtParam& p) const {

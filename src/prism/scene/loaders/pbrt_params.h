@@ -7,6 +7,7 @@
 
 #include "prism/color/spectrum.h"
 #include "prism/core/vec.h"
+#include "prism/scene/material.h"
 #include "prism/scene/loaders/pbrt_tokenizer.h"
 
 namespace prism::loaders {
@@ -18,6 +19,21 @@ struct PbrtParam {
   int line = 0;
   mutable bool used = false;
 };
+
+// A colour and the primaries it is given with.
+struct PbrtColor {
+  Vec3f rgb{1.0f};
+  ColorPickerSpace space = ColorPickerSpace::srgb;
+};
+
+// pbrt-v4's colour spaces, which its ColorSpace directive names: srgb, rec2020, aces2065-1
+// and dci-p3 (whose white is D65 in pbrt-v4, as in Display P3).
+bool is_pbrt_color_space(std::string_view name);
+// An rgb given in the pbrt colour space `space` as Prism holds it: srgb and rec2020 as they
+// are; aces2065-1 in ACEScg and dci-p3 in Rec.2020, exactly (conversions between spaces of
+// one white). Components that fall below 0 (AP0 colours outside AP1) are clipped and
+// `clipped` set.
+PbrtColor pbrt_color_in(const Vec3f& rgb, std::string_view space, bool& clipped);
 
 // How a spectrum is approximated by an RGB colour: reflectances under equal energy
 // (white = 1), illuminants normalised to luminance 1 as pbrt-v4 normalises light spectra.
@@ -41,6 +57,10 @@ class PbrtParams {
   // approximated; each approximation is described in `approximations`.
   std::optional<Vec3f> get_color(std::string_view name, PbrtSpectrumUse use,
                                  std::vector<std::string>& approximations) const;
+  // The same with its primaries: an "rgb" parameter is in `color_space` (the pbrt colour
+  // space in effect, pbrt_color_in); spectra and floats approximated in Rec.709.
+  std::optional<PbrtColor> get_color(std::string_view name, PbrtSpectrumUse use, std::string_view color_space,
+                                     std::vector<std::string>& approximations) const;
   // The parameter as a spectrum Prism renders as data (scene/spectral_inputs.h), where it is
   // one: for lights a `blackbody`, a CIE illuminant by pbrt-v4's name ("stdillum-D65", -D50,
   // -A, -F1 … -F12) or sampled (λ, value) pairs; for reflectances sampled pairs within

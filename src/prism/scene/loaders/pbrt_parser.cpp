@@ -225,7 +225,14 @@ void PbrtBuilder::directive(PbrtTokenizer& tokens, const PbrtToken& name, int in
   } else if (d == "MakeNamedMedium") {
     const std::string n = expect_string(tokens, d);
     make_medium(n, params());
-  } else if (d == "Attribute" || d == "ColorSpace") {
+  } else if (d == "ColorSpace") {
+    const std::string space = expect_string(tokens, d);
+    if (!is_pbrt_color_space(space))
+      tokens.fail(name.line, fmt::format("ColorSpace: unknown colour space '{}' (pbrt-v4 has srgb, rec2020, "
+                                         "aces2065-1 and dci-p3)",
+                                         space));
+    state_.color_space = space;
+  } else if (d == "Attribute") {
     expect_string(tokens, d);
     ignore(d, params());
   } else if (d == "MediumInterface") {

@@ -183,6 +183,7 @@ std::uint32_t PbrtBuilder::shape_material(const PbrtParams& p, double area) {
   Material m = scene_.materials[material];
   m.name += "+light";
   m.emission.color = light.color;
+  m.emission.color_space = light.color_space;
   m.emission.spectrum = light.spectrum;
   m.emission.luminance_nits = light.luminance_nits;
   m.emission.two_sided = light.two_sided;

@@ -10,6 +10,7 @@
 #include <fmt/ranges.h>
 
 #include "prism/bsdf/ior.h"
+#include "prism/color/chromatic_adaptation.h"
 #include "prism/bsdf/microfacet.h"
 #include "prism/core/error.h"
 #include "prism/io/atomic_file.h"
@@ -104,11 +105,46 @@ const char* type_name(MaterialType t) {
   return "diffuse";
 }
 
-// An RGB radiance whose luminance is `nits`, for pbrt's "rgb L".
-Vec3f radiance_rgb(const Vec3f& color, float nits) {
-  const double y = relative_luminance(color, ColorPickerSpace::srgb);
-  return y > 0.0 ? color * static_cast<float>(nits / y) : Vec3f(0.0f);
+// A colour as pbrt-v4 says it: the name of its space (pbrt's ColorSpace directive) and its
+// components there. pbrt-v4 has no ACEScg: an ACEScg colour is written in ACES2065-1 (AP0,
+// the same white), which the pbrt loader takes back to ACEScg.
+struct PbrtRgb {
+  const char* space;
+  Vec3f rgb;
+};
+
+PbrtRgb pbrt_rgb(const Vec3f& color, ColorPickerSpace space) {
+  switch (space) {
+    case ColorPickerSpace::acescg: {
+      const Mat3 to_ap0 = color::conversion_matrix(color::color_space("acescg"), color::color_space("aces2065-1"));
+      return {"aces2065-1", Vec3f(to_ap0 * Vec3d(color))};
+    }
+    case ColorPickerSpace::rec2020: return {"rec2020", color};
+    case ColorPickerSpace::srgb: break;
+  }
+  return {"srgb", color};
 }
+
+// An RGB radiance whose luminance is `nits`, for pbrt's "rgb L" (in the colour's space).
+PbrtRgb radiance_rgb(const Vec3f& color, ColorPickerSpace space, float nits) {
+  const double y = relative_luminance(color, space);
+  return pbrt_rgb(y > 0.0 ? color * static_cast<float>(nits / y) : Vec3f(0.0f), space);
+}
+
+// pbrt-v4's ColorSpace is graphics state: written only where the next colour's space
+// differs from the one in effect.
+class PbrtColorSpaceState {
+ public:
+  void use(Writer& w, const char* space, std::string_view indent = "") {
+    if (current_ == space) return;
+    w("{}ColorSpace \"{}\"\n", indent, space);
+    current_ = space;
+  }
+  std::string_view current() const { return current_; }
+
+ private:
+  std::string_view current_ = "srgb";
+};
 
 }  // namespace
 
@@ -127,6 +163,8 @@ void write_scene_json(const Scene& scene, const std::filesystem::path& path) {
     const Material& m = scene.materials[i];
     w("  {{\"name\": \"{}\", \"type\": \"{}\", \"base_color\": {}, \"roughness\": {}", m.name, type_name(m.type),
       vec(m.base_color), m.roughness);
+    if (m.base_color_space != ColorPickerSpace::srgb)
+      w(", \"base_color_space\": \"{}\"", picker_space_name(m.base_color_space));
     if (m.type == MaterialType::conductor && m.conductor_fresnel == ConductorFresnel::complex_ior)
       w(", \"conductor\": \"{}\"", m.conductor_name);
     if (m.type == MaterialType::dielectric) {
@@ -192,6 +230,8 @@ void write_scene_json(const Scene& scene, const std::filesystem::path& path) {
     if (m.is_emissive()) {
       w(", \"emission\": {{\"color\": {}, \"luminance_nits\": {}, \"two_sided\": {}", vec(m.emission.color),
         m.emission.luminance_nits, m.emission.two_sided);
+      if (m.emission.color_space != ColorPickerSpace::srgb)
+        w(", \"color_space\": \"{}\"", picker_space_name(m.emission.color_space));
       if (m.emission.texture >= 0) w(", \"texture\": {}", json_texture(scene, files, m.emission.texture));
       w("}}");
     }
@@ -217,8 +257,11 @@ void write_scene_json(const Scene& scene, const std::filesystem::path& path) {
     w("]}}{}\n", i + 1 < scene.meshes.size() ? "," : "");
   }
   w(" ]");
-  for (const Light& l : scene.lights)
-    w(",\n \"environment\": {{\"name\": \"{}\", \"color\": {}, \"luminance_nits\": {}}}", l.name, vec(l.color), l.intensity);
+  for (const Light& l : scene.lights) {
+    w(",\n \"environment\": {{\"name\": \"{}\", \"color\": {}, \"luminance_nits\": {}", l.name, vec(l.color), l.intensity);
+    if (l.color_space != ColorPickerSpace::srgb) w(", \"color_space\": \"{}\"", picker_space_name(l.color_space));
+    w("}}");
+  }
   w("\n}}\n");
   w.finish(path);
 }
@@ -365,9 +408,11 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
   if (scene.default_max_depth)
     w("Integrator \"volpath\" \"integer maxdepth\" [ {} ]\n", *scene.default_max_depth);
   w("\nWorldBegin\n\n");
+  PbrtColorSpaceState world_space;
   for (const Light& l : scene.lights) {
-    const Vec3f L = radiance_rgb(l.color, l.intensity);
-    w("LightSource \"infinite\" \"rgb L\" [ {} {} {} ]\n\n", L.x, L.y, L.z);
+    const PbrtRgb L = radiance_rgb(l.color, l.color_space, l.intensity);
+    world_space.use(w, L.space);
+    w("LightSource \"infinite\" \"rgb L\" [ {} {} {} ]\n\n", L.rgb.x, L.rgb.y, L.rgb.z);
   }
   std::vector<PbrtMaterialTextures> textures;
   for (std::size_t i = 0; i < scene.materials.size(); ++i) {
@@ -383,6 +428,8 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
         "\"rgb sigma_s\" [ 0 0 0 ]\n",
         m.name, sigma(c.x), sigma(c.y), sigma(c.z));
     }
+    const PbrtRgb base_rgb = pbrt_rgb(m.base_color, m.base_color_space);
+    world_space.use(w, base_rgb.space);  // pbrt-v4 reads a named material's colours in the space in effect
     w("MakeNamedMaterial \"{}\"", m.name);
     if (m.normal_texture >= 0) {
       // pbrt-v4's normalmap is a plain repeated image: no scale, no uv transform.
@@ -408,7 +455,7 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
         if (m.type == MaterialType::conductor && m.conductor_fresnel == ConductorFresnel::complex_ior)
           w(" \"spectrum {0}eta\" \"metal-{1}-eta\" \"spectrum {0}k\" \"metal-{1}-k\"", base, m.conductor_name);
         else
-          w(" \"rgb reflectance\" [ {} {} {} ]", m.base_color.x, m.base_color.y, m.base_color.z);
+          w(" \"rgb reflectance\" [ {} {} {} ]", base_rgb.rgb.x, base_rgb.rgb.y, base_rgb.rgb.z);
         if (m.type == MaterialType::mirror)
           w(" \"float {}roughness\" [ 0 ]", base);
         else
@@ -429,7 +476,7 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
         if (!textures.back().reflectance.empty())
           w(" \"texture reflectance\" \"{}\"", textures.back().reflectance);
         else
-          w(" \"rgb reflectance\" [ {} {} {} ]", m.base_color.x, m.base_color.y, m.base_color.z);
+          w(" \"rgb reflectance\" [ {} {} {} ]", base_rgb.rgb.x, base_rgb.rgb.y, base_rgb.rgb.z);
         if (coated) w(" \"float roughness\" [ {} ] \"bool remaproughness\" false", coat_alpha);
         w("\n");
     }
@@ -439,8 +486,10 @@ void write_scene_pbrt(const Scene& scene, const std::filesystem::path& path) {
     w("\n# {}\nAttributeBegin\n  NamedMaterial \"{}\"\n", mesh.name, m.name);
     if (m.absorbs_inside()) w("  MediumInterface \"{}-interior\" \"\"\n", m.name);
     if (m.is_emissive()) {
-      const Vec3f L = radiance_rgb(m.emission.color, m.emission.luminance_nits);
-      w("  AreaLightSource \"diffuse\" \"rgb L\" [ {} {} {} ]{}\n", L.x, L.y, L.z,
+      const PbrtRgb L = radiance_rgb(m.emission.color, m.emission.color_space, m.emission.luminance_nits);
+      PbrtColorSpaceState block = world_space;  // AttributeEnd restores the world's
+      block.use(w, L.space, "  ");
+      w("  AreaLightSource \"diffuse\" \"rgb L\" [ {} {} {} ]{}\n", L.rgb.x, L.rgb.y, L.rgb.z,
         m.emission.two_sided ? " \"bool twosided\" true" : "");
     }
     w("  Shape \"trianglemesh\"\n    \"point3 P\" [");

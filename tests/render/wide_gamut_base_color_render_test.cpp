@@ -1,0 +1,163 @@
+// Wide-gamut base colours (Material::base_color_space): an ACEScg or Rec.2020 albedo under a
+// white light films as itself in RGB transport, and in spectral transport as its own space's
+// Jakob–Hanika table upsamples it, which reaches colours outside Rec.709 (render/
+// color_context.h). Before base colours had a space, every albedo was read as sRGB: the
+// Rec.2020 green below filmed as the sRGB (0.05, 0.6, 0.05), and the sRGB table cannot
+// upsample a colour whose Rec.709 red is negative at all.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "prism/color/chromatic_adaptation.h"
+#include "prism/color/color_space.h"
+#include "prism/color/emission_spectrum.h"
+#include "prism/color/illuminants.h"
+#include "prism/color/jakob_hanika_table.h"
+#include "prism/color/spectrum.h"
+#include "prism/render/aov_images.h"
+#include "prism/render/renderer.h"
+#include "prism/scene/emission.h"
+#include "support/film_statistics.h"
+#include "support/test_scenes.h"
+
+namespace prism {
+namespace {
+
+constexpr float kIlluminanceLux = 50.0f;
+
+struct Case {
+  Vec3f albedo;
+  ColorPickerSpace space;
+  bool outside_rec709;
+};
+
+// Rec.2020 green and blue and an ACEScg red, all outside Rec.709 (a Rec.709 channel below
+// −0.02), and an ACEScg olive inside.
+const Case kCases[] = {{{0.05f, 0.6f, 0.05f}, ColorPickerSpace::rec2020, true},
+                       {{0.05f, 0.1f, 0.7f}, ColorPickerSpace::rec2020, true},
+                       {{0.45f, 0.03f, 0.02f}, ColorPickerSpace::acescg, true},
+                       {{0.2f, 0.5f, 0.1f}, ColorPickerSpace::acescg, false}};
+
+std::string describe(const Case& c) {
+  return std::string(picker_space_name(c.space)) + " (" + std::to_string(c.albedo.x) + ", " +
+         std::to_string(c.albedo.y) + ", " + std::to_string(c.albedo.z) + ")";
+}
+
+TEST(WideGamutBaseColour, TheCasesLieWhereTheySay) {
+  for (const Case& c : kCases) {
+    const double lowest = min_component(picker_color_in_rec709(c.albedo, c.space));
+    if (c.outside_rec709) EXPECT_LT(lowest, -0.02) << describe(c);
+    else EXPECT_GT(lowest, 0.0) << describe(c);
+  }
+}
+
+Scene lit_floor(const Material& material) {
+  return test::make_floor_under_overhead_sun(material, kIlluminanceLux);  // albedo · E/π everywhere
+}
+
+Material diffuse(const Case& c) {
+  Material m;
+  m.type = MaterialType::diffuse;
+  m.base_color = c.albedo;
+  m.base_color_space = c.space;
+  return m;
+}
+
+RenderSettings small_render(TransportKind kind, const std::string& working_space = "srgb") {
+  RenderSettings s;
+  s.width = s.height = 16;
+  s.samples_per_pixel = 64;
+  s.path.max_depth = 1;
+  s.transport.kind = kind;
+  s.transport.working_space = working_space;
+  return s;
+}
+
+Vec3d mean_of(const Scene& scene, const RenderSettings& settings) {
+  return test::block_estimate(render(scene, settings).film, 0, 0, 16, 16).mean;
+}
+
+TEST(WideGamutBaseColour, FilmsAsItselfInRgbTransport) {
+  const double white_nits = kIlluminanceLux / std::numbers::pi;
+  for (const Case& c : kCases) {
+    const Scene scene = lit_floor(diffuse(c));
+    // In its own space: the albedo times the light, up to float accumulation.
+    const Vec3d own = mean_of(scene, small_render(TransportKind::rgb, picker_space_name(c.space)));
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(own[k], c.albedo[k] * white_nits, 1e-5 * white_nits) << describe(c);
+    // In the other wide space: the same colour converted (Bradford between D65 and ACES' white).
+    const char* other = c.space == ColorPickerSpace::rec2020 ? "acescg" : "rec2020";
+    const Vec3d expected =
+        color::conversion_matrix(picker_color_space(c.space), color::color_space(other)) * Vec3d(c.albedo) * white_nits;
+    const Vec3d converted = mean_of(scene, small_render(TransportKind::rgb, other));
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(converted[k], expected[k], 1e-5 * white_nits) << describe(c) << " in " << other;
+  }
+}
+
+TEST(WideGamutBaseColour, FilmsAsItsOwnTableUpsamplesItInSpectralTransport) {
+  const double white_nits = kIlluminanceLux / std::numbers::pi;
+  const color::DenseSpectrum& e = color::standard_illuminant(color::StandardIlluminant::e);
+  for (const Case& c : kCases) {
+    const color::ColorSpace& space = picker_color_space(c.space);
+    const Mat3 film_to_space = color::spectral_xyz_to_rgb_matrix(space);
+    // What the space's table makes of the albedo, filmed under E as the render films it.
+    const Vec3d table = film_to_space * color::reflectance_to_xyz(
+                                            color::JakobHanikaTable::get(space.name).lookup(Vec3d(c.albedo)), e);
+    // The table reproduces these colours to 0.004 per channel (measured: 0.0017 at most, the
+    // ACEScg red's red; tests/color/jakob_hanika_test.cpp bounds the tables in ΔE). Colours
+    // past the optimal-colour solid are no reflectance and are missed: ACEScg
+    // (0.6, 0.02, 0.02) films with red 0.487.
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(table[k], c.albedo[k], 0.004) << describe(c);
+    const auto estimate = test::block_estimate(render(lit_floor(diffuse(c)), small_render(TransportKind::spectral)).film,
+                                               0, 0, 16, 16);
+    const Vec3d filmed = film_to_space * estimate.mean;
+    // Noise: the film's standard errors carried through the 3×3 matrix by the triangle
+    // inequality, at 5σ; the render's wavelength quadrature against the CIE tables'
+    // 1 nm sums adds under 1e-4 of the white (UpsampledColourRender's bound is 0.002 with
+    // the table's own error in it).
+    for (int k = 0; k < 3; ++k) {
+      double sigma = 0.0;
+      for (int j = 0; j < 3; ++j) sigma += std::abs(film_to_space(k, j)) * std::sqrt(estimate.variance[j]);
+      EXPECT_NEAR(filmed[k], table[k] * white_nits, 5.0 * sigma + 1e-3 * white_nits) << describe(c) << " channel " << k;
+    }
+  }
+}
+
+// A texture's texels are Rec.709 and multiply the factor in the material's space: a grey
+// texel g gives g × the factor exactly, in both transports, and the albedo AOV says so.
+TEST(WideGamutBaseColour, GreyTextureScalesAWideGamutFactor) {
+  constexpr float kGrey = 0.5f;
+  const Case c = kCases[0];
+  Material untextured = diffuse(c);
+  untextured.base_color = c.albedo * kGrey;
+  Material textured = diffuse(c);
+  Scene a = lit_floor(untextured);
+  Scene b = lit_floor(textured);
+  TextureImage grey;
+  grey.name = "grey";
+  grey.width = grey.height = 2;
+  grey.channels = 3;
+  grey.texels.assign(12, kGrey);
+  b.textures.push_back(grey);
+  b.materials[0].base_color_texture = 0;
+  for (const TransportKind kind : {TransportKind::rgb, TransportKind::spectral}) {
+    RenderSettings s = small_render(kind, "rec2020");
+    s.aovs = AovSet{true, false, false};  // the albedo
+    const RenderResult ra = render(a, s), rb = render(b, s);
+    const Vec3d ma = test::block_estimate(ra.film, 0, 0, 16, 16).mean, mb = test::block_estimate(rb.film, 0, 0, 16, 16).mean;
+    // The same colour up to the float round-off of Rec.709 → Rec.2020 on the texel (1e-6)
+    // and the table's trilinear lookup at it: the same random numbers, so no noise.
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(mb[k], ma[k], 1e-4 * ma[k] + 1e-6) << static_cast<int>(kind) << " " << k;
+    // The albedo AOV, in Rec.2020, is g × the factor for both: single-precision film
+    // storage and the conversions there and back (as in aov_test.cpp's 4e-7), 1e-6.
+    for (const RenderResult* r : {&ra, &rb}) {
+      const Mat3 to_rec2020 = color::conversion_matrix(r->film_space, color::color_space("rec2020"));
+      const AovImages aov = film_aov_images(r->film, to_rec2020);
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(aov.albedo.rgb[k], c.albedo[k] * kGrey, 1e-6) << static_cast<int>(kind);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace prism

@@ -54,6 +54,10 @@ constexpr bool is_alpha_channel(int channel, int channels) {
   return (channels == 2 || channels == 4) && channel == channels - 1;
 }
 
+// What a texture's channels hold: colours (base, emission, sheen, specular colour,
+// environment), which have primaries, or data (normals, roughness, heights, masks).
+enum class TextureContent : std::uint8_t { color, data };
+
 struct TextureImage {
   std::string name;  // file name or generated name, for messages and `prism info`
   int width = 0, height = 0;
@@ -70,6 +74,11 @@ struct TextureImage {
   TextureWrap wrap_u = TextureWrap::repeat, wrap_v = TextureWrap::repeat;
   // KHR_texture_transform / pbrt uv mapping: uv' = offset + scale ⊙ rotate(uv)
   float offset_u = 0.0f, offset_v = 0.0f, scale_u = 1.0f, scale_v = 1.0f, rotation_radians = 0.0f;
+
+  // Set when the texels were converted to Rec.709 from other primaries at load (an
+  // OpenEXR colour texture's chromaticities attribute): what was done, for the loader's
+  // warnings. Empty otherwise.
+  std::string primaries_note{};
 
   bool has_codes() const { return !codes.empty(); }
   bool has_rgbe() const { return !rgbe.empty(); }

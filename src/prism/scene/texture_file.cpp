@@ -2,6 +2,8 @@
 
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
+#include <ImfStandardAttributes.h>
+#include <half.h>
 #include <fmt/format.h>
 #include <stb_image.h>
 
@@ -17,7 +19,10 @@
 #include <memory>
 #include <vector>
 
+#include "prism/color/chromatic_adaptation.h"
+#include "prism/color/color_space.h"
 #include "prism/color/transfer_functions.h"
+#include "prism/core/half_float.h"
 #include "prism/core/error.h"
 #include "prism/io/exr.h"
 #include "prism/io/read_to_end.h"
@@ -471,15 +476,77 @@ OpenExrFirstPart check_openexr_header(std::span<const unsigned char> bytes, int 
   }
 }
 
+// The texels of an OpenEXR whose header check_openexr_header passed, as they are stored.
+TextureImage read_openexr_texels(const std::filesystem::path& path, const OpenExrFirstPart& layout, long width,
+                                 long height);
+
+// The matrix taking an OpenEXR colour texture's RGB to linear Rec.709 (Bradford between
+// whites), where its `chromaticities` attribute names other primaries or another white than
+// Rec.709's D65 (OpenEXR's default, which a file without the attribute has). 1e-4 in x or y
+// is rounding in how a writer printed Rec.709.
+std::optional<Mat3> openexr_to_rec709(const Imf::Header& header, const std::string& name) {
+  if (!Imf::hasChromaticities(header)) return std::nullopt;
+  const Imf::Chromaticities& c = Imf::chromaticities(header);
+  const Imf::Chromaticities rec709;
+  const float given[] = {c.red.x, c.red.y, c.green.x, c.green.y, c.blue.x, c.blue.y, c.white.x, c.white.y};
+  const float standard[] = {rec709.red.x,  rec709.red.y,  rec709.green.x, rec709.green.y,
+                            rec709.blue.x, rec709.blue.y, rec709.white.x, rec709.white.y};
+  bool same = true;
+  for (int i = 0; i < 8; ++i) same = same && std::abs(given[i] - standard[i]) <= 1e-4f;
+  if (same) return std::nullopt;
+  try {
+    const color::ColorSpace space = color::make_color_space(name, {c.red.x, c.red.y}, {c.green.x, c.green.y},
+                                                            {c.blue.x, c.blue.y}, {c.white.x, c.white.y});
+    return color::conversion_matrix(space, color::color_space("srgb"));
+  } catch (const Error& e) {
+    throw IoError(fmt::format("cannot read image '{}': its chromaticities are no colour space ({})", name, e.what()));
+  }
+}
+
+// Converts an RGB OpenEXR texture's texels (halves or floats) by `to_rec709`, clipping what
+// falls below 0 (colours outside Rec.709, which a texel cannot hold), and says so in the
+// image's primaries_note.
+void convert_to_rec709(TextureImage& image, const Mat3& to_rec709, const Imf::Header& header) {
+  const std::size_t texels = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
+  std::size_t clipped = 0;
+  const auto convert = [&](Vec3d rgb) {
+    const Vec3d v = to_rec709 * rgb;
+    // Below float round-off of the conversion (1e-5 of the largest component) is not a clip.
+    if (min_component(v) < -1e-5 * max_component(v)) ++clipped;
+    return max(v, Vec3d(0.0));
+  };
+  for (std::size_t t = 0; t < texels; ++t) {
+    if (image.has_halves()) {
+      std::uint16_t* h = image.halves.data() + 3 * t;
+      const Vec3d v = convert(Vec3d(half_bits_to_float(h[0]), half_bits_to_float(h[1]), half_bits_to_float(h[2])));
+      for (int k = 0; k < 3; ++k) h[k] = Imath::half(static_cast<float>(v[k])).bits();
+    } else {
+      float* f = image.texels.data() + 3 * t;
+      const Vec3d v = convert(Vec3d(f[0], f[1], f[2]));
+      for (int k = 0; k < 3; ++k) f[k] = static_cast<float>(v[k]);
+    }
+  }
+  const Imf::Chromaticities& c = Imf::chromaticities(header);
+  image.primaries_note = fmt::format(
+      "texture '{}': RGB in the primaries of its chromaticities (red {:.4f},{:.4f} green {:.4f},{:.4f} blue "
+      "{:.4f},{:.4f} white {:.4f},{:.4f}) converted to Rec.709{}",
+      image.name, c.red.x, c.red.y, c.green.x, c.green.y, c.blue.x, c.blue.y, c.white.x, c.white.y,
+      clipped ? fmt::format("; {} of {} texels lie outside Rec.709 and were clipped to it", clipped, texels) : "");
+}
+
+// `colour`: a colour texture, whose texels follow its chromaticities; data (normal maps,
+// roughness) does not.
 TextureImage read_openexr(const std::filesystem::path& path, std::span<const unsigned char> bytes,
-                          const TextureLimits& limits) {
+                          const TextureLimits& limits, bool colour) {
   const std::string name = path.string();
   const int max_dimension = limits.max_dimension;
   const OpenExrFirstPart layout = check_openexr_header(bytes, max_dimension, name);
   long width = 0, height = 0;
+  std::optional<Imf::Header> header;
   try {
     // Size check from the header alone; the pixels are read below.
     Imf::InputFile in(path.c_str());
+    header = in.header();
     const Imath::Box2i dw = in.header().dataWindow();
     width = static_cast<long>(dw.max.x) - dw.min.x + 1, height = static_cast<long>(dw.max.y) - dw.min.y + 1;
     check_dimensions(width, height, max_dimension, name);
@@ -496,6 +563,15 @@ TextureImage read_openexr(const std::filesystem::path& path, std::span<const uns
   } catch (const std::exception& e) {
     throw IoError(fmt::format("cannot read image '{}': {}", name, e.what()));
   }
+  TextureImage image = read_openexr_texels(path, layout, width, height);
+  if (colour && image.channels == 3)
+    if (const auto to_rec709 = openexr_to_rec709(*header, name)) convert_to_rec709(image, *to_rec709, *header);
+  return image;
+}
+
+TextureImage read_openexr_texels(const std::filesystem::path& path, const OpenExrFirstPart& layout, long width,
+                                 long height) {
+  const std::string name = path.string();
   TextureImage image;
   image.name = name;
   image.channels = layout.channels;
@@ -591,7 +667,7 @@ std::optional<TextureMemoryNeed> texture_file_memory_need(const std::filesystem:
 }
 
 TextureImage read_texture_file(const std::filesystem::path& path, TextureEncoding encoding,
-                               const TextureLimits& limits) {
+                               const TextureLimits& limits, TextureContent content) {
   std::array<unsigned char, 16> head{};
   {
     std::error_code ec;
@@ -604,7 +680,8 @@ TextureImage read_texture_file(const std::filesystem::path& path, TextureEncodin
     if (in.gcount() == 0) throw IoError(fmt::format("cannot read image '{}': the file is empty", path.string()));
   }
   const std::vector<unsigned char> bytes = read_file_bytes(path, "image");
-  if (detect_image_format(head) == ImageFileFormat::openexr) return read_openexr(path, bytes, limits);
+  if (detect_image_format(head) == ImageFileFormat::openexr)
+    return read_openexr(path, bytes, limits, content == TextureContent::color);
   return decode_texture_memory(bytes, path.string(), encoding, limits);
 }
 

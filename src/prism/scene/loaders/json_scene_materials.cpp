@@ -103,9 +103,12 @@ std::filesystem::path JsonSceneReader::resolve(const JsonValue& file_name) const
 
 int JsonSceneReader::read_texture(const JsonValue& value, TextureEncoding default_encoding,
                                   TextureCache::ImageCheck check) {
+  // What the key reads is colour or data whatever encoding the file is given in.
+  const TextureContent content =
+      default_encoding == TextureEncoding::srgb ? TextureContent::color : TextureContent::data;
   if (value.is_string())
     return textures.load(resolve(value), default_encoding, TextureWrap::repeat, TextureWrap::repeat, {},
-                         std::move(check));
+                         std::move(check), content);
   value.expect_keys({"file", "encoding", "wrap", "wrap_u", "wrap_v"});
   const auto wrap_mode = [](const JsonValue& w) {
     return w.as_enum<TextureWrap>(
@@ -118,7 +121,7 @@ int JsonSceneReader::read_texture(const JsonValue& value, TextureEncoding defaul
   TextureEncoding encoding = default_encoding;
   if (auto e = value.find("encoding"))
     encoding = e->as_enum<TextureEncoding>({{"srgb", TextureEncoding::srgb}, {"linear", TextureEncoding::linear}});
-  return textures.load(resolve(value["file"]), encoding, wrap_u, wrap_v, {}, std::move(check));
+  return textures.load(resolve(value["file"]), encoding, wrap_u, wrap_v, {}, std::move(check), content);
 }
 
 std::uint32_t JsonSceneReader::material_index(const JsonValue& name) const {

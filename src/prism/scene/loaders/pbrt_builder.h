@@ -67,7 +67,9 @@ class PbrtBuilder {
   void make_material(const std::string& type, const PbrtParams& params, const std::string& name);
   void texture(const std::string& name, const std::string& value_type, const std::string& klass,
                const PbrtParams& params);
-  PbrtTexture imagemap(const std::string& name, const PbrtParams& params);
+  // `is_float`: a "float" texture (data), else a "spectrum" one (colour: an OpenEXR's
+  // chromaticities apply, TextureContent).
+  PbrtTexture imagemap(const std::string& name, const PbrtParams& params, bool is_float);
   void shape(const std::string& type, const PbrtParams& params);
   void light_source(const std::string& type, const PbrtParams& params);
   void area_light_source(const std::string& type, const PbrtParams& params);

@@ -303,7 +303,7 @@ void PbrtBuilder::make_material(const std::string& type, const PbrtParams& p, co
   }
 }
 
-PbrtTexture PbrtBuilder::imagemap(const std::string& name, const PbrtParams& p) {
+PbrtTexture PbrtBuilder::imagemap(const std::string& name, const PbrtParams& p, bool is_float) {
   PbrtTexture t;
   const std::string file = p.get_string("filename", "");
   if (file.empty()) throw SceneError(fmt::format("{}:{}: Texture '{}': imagemap needs a filename", p.source, p.line, name));
@@ -319,7 +319,8 @@ PbrtTexture PbrtBuilder::imagemap(const std::string& name, const PbrtParams& p) 
     approximations_.push_back(fmt::format("Texture '{}' encoding \"{}\" as sRGB", name, encoding));
   const std::string context = fmt::format("{}:{}: Texture", p.source, p.line);
   try {
-    t.image = textures_->load(resolve(p, "filename", file), enc, w, w, context);
+    t.image = textures_->load(resolve(p, "filename", file), enc, w, w, context, {},
+                              is_float ? TextureContent::data : TextureContent::color);
   } catch (const IoError& e) {
     throw IoError(fmt::format("{}: {}", context, e.what()));
   }
@@ -355,7 +356,7 @@ void PbrtBuilder::texture(const std::string& name, const std::string& value_type
       t.space = c->space;
     }
   } else if (klass == "imagemap") {
-    t = imagemap(name, p);
+    t = imagemap(name, p, is_float);
   } else {
     ignore(fmt::format("Texture \"{}\" '{}' (treated as constant 1)", klass, name), p);
     for (const auto& param : p.params) param.used = true;

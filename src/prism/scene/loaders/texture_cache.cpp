@@ -8,11 +8,14 @@
 namespace prism::loaders {
 
 int TextureCache::load(const std::filesystem::path& file, TextureEncoding encoding, TextureWrap wrap_u,
-                       TextureWrap wrap_v, std::string context, ImageCheck check) {
+                       TextureWrap wrap_v, std::string context, ImageCheck check,
+                       std::optional<TextureContent> content) {
   std::error_code ec;
   std::filesystem::path canonical = std::filesystem::weakly_canonical(file, ec);
   if (ec) canonical = file;
-  const Key key{canonical.string(), encoding, wrap_u, wrap_v};
+  const TextureContent what =
+      content.value_or(encoding == TextureEncoding::srgb ? TextureContent::color : TextureContent::data);
+  const Key key{canonical.string(), encoding, wrap_u, wrap_v, what};
   if (const auto it = indices_.find(key); it != indices_.end()) return it->second;
   // The entry's place and addressing now, its texels at the next sync.
   TextureImage placeholder;
@@ -26,6 +29,7 @@ int TextureCache::load(const std::filesystem::path& file, TextureEncoding encodi
   request.index = index;
   request.path = std::move(canonical);
   request.encoding = encoding;
+  request.content = what;
   request.context = std::move(context);
   request.check = std::move(check);
   pending_.push_back(std::move(request));
@@ -35,7 +39,7 @@ int TextureCache::load(const std::filesystem::path& file, TextureEncoding encodi
 void TextureCache::decode(Request& request) const {
   try {
     request.image = read_texture_file(request.path, request.encoding,
-                                      {options_.max_texture_dimension, options_.memory_budget});
+                                      {options_.max_texture_dimension, options_.memory_budget}, request.content);
   } catch (...) {
     request.error = std::current_exception();
   }
@@ -90,6 +94,7 @@ void TextureCache::finish() {
     r.image->wrap_u = entry.wrap_u;
     r.image->wrap_v = entry.wrap_v;
     entry = std::move(*r.image);
+    if (!entry.primaries_note.empty()) scene_.warnings.push_back(entry.primaries_note);
     if (r.check) r.check(entry);
   }
 }

@@ -40,8 +40,11 @@ class TextureCache {
   // only its name and addressing. `context` is put before an IoError of this file's decode
   // ("<context>: <error>"); `check` runs on the decoded image, the first time the file is
   // asked for with this key.
+  // `content` (read_texture_file): by default colour when asked sRGB-encoded, data when
+  // linear; a loader that knows better says (an OpenEXR is linear whatever is asked).
   int load(const std::filesystem::path& file, TextureEncoding encoding, TextureWrap wrap_u = TextureWrap::repeat,
-           TextureWrap wrap_v = TextureWrap::repeat, std::string context = {}, ImageCheck check = {});
+           TextureWrap wrap_v = TextureWrap::repeat, std::string context = {}, ImageCheck check = {},
+           std::optional<TextureContent> content = std::nullopt);
 
   // Decodes every image asked for and not decoded yet, and throws the first failure in
   // request order (IoError and the budget's Error from decoding, whatever a check throws).
@@ -66,6 +69,7 @@ class TextureCache {
     int index = -1;
     std::filesystem::path path;
     TextureEncoding encoding = TextureEncoding::srgb;
+    TextureContent content = TextureContent::color;
     std::string context;
     ImageCheck check;
     std::optional<TextureImage> image;
@@ -77,7 +81,7 @@ class TextureCache {
   bool fits_together(const std::vector<Request>& batch) const;
   [[noreturn]] static void rethrow(const Request& request);
 
-  using Key = std::tuple<std::string, TextureEncoding, TextureWrap, TextureWrap>;
+  using Key = std::tuple<std::string, TextureEncoding, TextureWrap, TextureWrap, TextureContent>;
   Scene& scene_;
   LoadOptions options_;
   std::map<Key, int> indices_;

@@ -1,0 +1,121 @@
+// OpenEXR colour textures in other primaries than Rec.709: the `chromaticities` attribute
+// says which (ACEScg textures are common in ACES pipelines), and Prism's textures are
+// Rec.709, so a colour texture's texels are converted at load (Bradford between whites)
+// and data textures (normal, roughness maps) are read as stored. Before, every EXR texel
+// was read as Rec.709 whatever its file said.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "prism/color/chromatic_adaptation.h"
+#include "prism/color/color_space.h"
+#include "prism/io/exr.h"
+#include "prism/scene/loaders/json_scene.h"
+#include "prism/scene/loaders/pbrt_scene.h"
+#include "prism/scene/texture_file.h"
+#include "scene/loaders/loader_test_files.h"
+#include "support/scratch_folder.h"
+
+namespace prism {
+namespace {
+
+ExrChromaticities chromaticities_of(const char* name) {
+  const color::ColorSpace& s = color::color_space(name);
+  const auto f = [](double v) { return static_cast<float>(v); };
+  return {f(s.red.x), f(s.red.y), f(s.green.x), f(s.green.y), f(s.blue.x), f(s.blue.y), f(s.white.x), f(s.white.y)};
+}
+
+// Two texels in gamut for Rec.709 and ACEScg's pure green, which is not.
+const std::vector<float> kAcescgTexels = {0.5f, 0.25f, 0.125f, 0.2f, 0.4f, 0.3f, 0.0f, 1.0f, 0.0f};
+
+Vec3d acescg_in_rec709(std::size_t texel) {
+  const Mat3 m = color::conversion_matrix(color::color_space("acescg"), color::color_space("srgb"));
+  return m * Vec3d(kAcescgTexels[3 * texel], kAcescgTexels[3 * texel + 1], kAcescgTexels[3 * texel + 2]);
+}
+
+void write_acescg_exr(const std::filesystem::path& path, ExrPixelType type = ExrPixelType::float32) {
+  ExrWriteOptions options;
+  options.pixel_type = type;
+  write_exr(path, ImageRgbF{3, 1, kAcescgTexels}, chromaticities_of("acescg"), {}, options);
+}
+
+TEST(ExrTexturePrimaries, ColourTexelsAreConvertedToRec709AndOutOfGamutOnesClipped) {
+  test::ScratchFolder dir;
+  write_acescg_exr(dir / "acescg.exr");
+  const TextureImage colour =
+      read_texture_file(dir / "acescg.exr", TextureEncoding::srgb, TextureLimits(4096), TextureContent::color);
+  const std::vector<float> texels = colour.linear_values();
+  for (std::size_t t = 0; t < 2; ++t)
+    for (int k = 0; k < 3; ++k)  // a 3×3 product in double, stored as float
+      EXPECT_NEAR(texels[3 * t + k], acescg_in_rec709(t)[k], 1e-6) << t << " " << k;
+  // ACEScg green has negative Rec.709 red and blue: clipped to 0, its green kept.
+  const Vec3d green = acescg_in_rec709(2);
+  ASSERT_LT(green.x, 0.0);
+  EXPECT_EQ(texels[6], 0.0f);
+  EXPECT_NEAR(texels[7], green.y, 1e-6);
+  EXPECT_NE(colour.primaries_note.find("converted to Rec.709"), std::string::npos) << colour.primaries_note;
+  EXPECT_NE(colour.primaries_note.find("1 of 3 texels lie outside Rec.709"), std::string::npos)
+      << colour.primaries_note;
+  // Data is read as stored.
+  const TextureImage data =
+      read_texture_file(dir / "acescg.exr", TextureEncoding::linear, TextureLimits(4096), TextureContent::data);
+  EXPECT_EQ(data.linear_values(), kAcescgTexels);
+  EXPECT_TRUE(data.primaries_note.empty());
+}
+
+TEST(ExrTexturePrimaries, HalfTexturesStayHalves) {
+  test::ScratchFolder dir;
+  write_acescg_exr(dir / "half.exr", ExrPixelType::half);
+  const TextureImage colour =
+      read_texture_file(dir / "half.exr", TextureEncoding::srgb, TextureLimits(4096), TextureContent::color);
+  ASSERT_TRUE(colour.has_halves());
+  const std::vector<float> texels = colour.linear_values();
+  // Halves hold 11 significant bits: 2⁻¹¹ relative, once on reading and once on storing.
+  for (std::size_t t = 0; t < 2; ++t)
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(texels[3 * t + k], acescg_in_rec709(t)[k], 1e-3 * acescg_in_rec709(t)[k]);
+}
+
+TEST(ExrTexturePrimaries, Rec709AndUnlabelledFilesAreReadAsStored) {
+  test::ScratchFolder dir;
+  write_exr(dir / "rec709.exr", ImageRgbF{3, 1, kAcescgTexels}, chromaticities_of("srgb"));
+  const TextureImage t =
+      read_texture_file(dir / "rec709.exr", TextureEncoding::srgb, TextureLimits(4096), TextureContent::color);
+  EXPECT_EQ(t.linear_values(), kAcescgTexels);
+  EXPECT_TRUE(t.primaries_note.empty());
+}
+
+TEST(ExrTexturePrimaries, LoadersConvertColourTexturesAndSaySo) {
+  test::ScratchFolder dir;
+  write_acescg_exr(dir / "albedo.exr");
+  // JSON: the base colour texture is colour even when given as linear; the bump map, the
+  // same file, is data.
+  const std::string json = R"({"format": "prism-scene/1", "name": "q",
+    "materials": [{"name": "m", "type": "diffuse", "base_color_texture": {"file": "albedo.exr", "encoding": "linear"},
+                   "bump_texture": "albedo.exr"}],
+    "meshes": [{"name": "q", "material": "m", "positions": [[0,0,0], [1,0,0], [0,1,0]], "uvs": [[0,0], [1,0], [0,1]],
+                "indices": [0,1,2]}]})";
+  const Scene scene = loaders::parse_json_scene(json, "scene.json", dir.path(), "q");
+  const Material& m = scene.materials[0];
+  EXPECT_NEAR(scene.textures[static_cast<std::size_t>(m.base_color_texture)].linear_values()[0], acescg_in_rec709(0).x,
+              1e-6);
+  EXPECT_EQ(scene.textures[static_cast<std::size_t>(m.bump_texture)].linear_values(), kAcescgTexels);
+  bool warned = false;
+  for (const std::string& w : scene.warnings) warned |= w.find("converted to Rec.709") != std::string::npos;
+  EXPECT_TRUE(warned);
+  // pbrt-v4: a "spectrum" imagemap is colour whatever its encoding, a "float" one data.
+  const std::string pbrt = "WorldBegin\n"
+                           "Texture \"c\" \"spectrum\" \"imagemap\" \"string filename\" \"albedo.exr\" "
+                           "\"string encoding\" \"linear\"\n"
+                           "Material \"diffuse\" \"texture reflectance\" \"c\"\n"
+                           "Shape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 2] "
+                           "\"point2 uv\" [0 0 1 0 0 1]\n";
+  const Scene p = loaders::parse_pbrt_scene(pbrt, "scene.pbrt", dir.path());
+  const Material& pm = p.materials[p.meshes[0].material];
+  ASSERT_GE(pm.base_color_texture, 0);
+  EXPECT_NEAR(p.textures[static_cast<std::size_t>(pm.base_color_texture)].linear_values()[0], acescg_in_rec709(0).x,
+              1e-6);
+}
+
+}  // namespace
+}  // namespace prism

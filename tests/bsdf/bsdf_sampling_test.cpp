@@ -300,7 +300,9 @@ TEST(BsdfSampling, CoatedLobesMatchPdf) {
       Bsdf<3> b{MetallicRoughness<3>::from_roughness(rgb(0.2f, 0.5f, 0.9f), 0.3f, 0.7f)};
       b.coat = Clearcoat::make(1.0f, 0.3f);
       const float t = static_cast<float>(tilt * std::numbers::pi / 180.0);
-      b.coat.frame = *Frame::from_normal_and_tangent(Vec3f(std::sin(t), 0.0f, std::cos(t)), Vec3f(1, 0, 0));
+      const Frame coat_frame =
+          *Frame::from_normal_and_tangent(Vec3f(std::sin(t), 0.0f, std::cos(t)), Vec3f(1, 0, 0));
+      b.coat.frame = &coat_frame;
       const Vec3f wo = direction_at(theta, 60.0);
       bsdf_p_value(b, wo, Vec3f(0, 0, 1), 1.0f, 0, ++seed, 32);
     }

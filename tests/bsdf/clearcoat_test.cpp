@@ -226,7 +226,8 @@ TEST(Clearcoat, OwnNormalReflectsAboutIt) {
   Pcg32 rng(11, 12);
   Clearcoat plain = Clearcoat::make(0.9f, 0.4f);
   Clearcoat identity = plain;
-  identity.frame = Frame{Vec3f(1, 0, 0), Vec3f(0, 1, 0), Vec3f(0, 0, 1)};
+  const Frame identity_frame{Vec3f(1, 0, 0), Vec3f(0, 1, 0), Vec3f(0, 0, 1)};
+  identity.frame = &identity_frame;
   for (int i = 0; i < 200; ++i) {
     const Vec3f wo = sample_cosine_hemisphere(Vec2f(rng.next_float(), rng.next_float()));
     const Vec3f wi = sample_cosine_hemisphere(Vec2f(rng.next_float(), rng.next_float()));
@@ -236,7 +237,8 @@ TEST(Clearcoat, OwnNormalReflectsAboutIt) {
   }
   // Smooth, tilted 10°: seen from straight above, the mirror direction is 20° off.
   Clearcoat mirror = Clearcoat::make(1.0f, 0.0f);
-  mirror.frame = tilted_frame(10.0);
+  const Frame ten_degrees = tilted_frame(10.0);
+  mirror.frame = &ten_degrees;
   const auto wi = mirror.sample_direction(Vec3f(0, 0, 1), Vec2f(0.5f, 0.5f));
   ASSERT_TRUE(wi);
   const float twenty = static_cast<float>(20.0 * std::numbers::pi / 180.0);
@@ -246,7 +248,8 @@ TEST(Clearcoat, OwnNormalReflectsAboutIt) {
   EXPECT_NEAR(mirror.albedo(Vec3f(0, 0, 1)), fresnel_dielectric(std::cos(twenty / 2), Clearcoat::kIor), 1e-6f);
   // Rough and tilted 25°: eval in the coat's frame with its cosine.
   Clearcoat rough = Clearcoat::make(0.9f, 0.4f);
-  rough.frame = tilted_frame(25.0);
+  const Frame twenty_five_degrees = tilted_frame(25.0);
+  rough.frame = &twenty_five_degrees;
   long below = 0, drawn = 0;
   for (int i = 0; i < 4000; ++i) {
     const Vec3f wo = sample_cosine_hemisphere(Vec2f(rng.next_float(), rng.next_float()));

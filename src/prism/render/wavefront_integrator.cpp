@@ -413,8 +413,12 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
                               tables_, layer_colors);
   // The coat's own normal map (KHR_materials_clearcoat's clearcoatNormalTexture), in the
   // base's frame; not on a microsurface (microfacet normal mapping shades the base alone).
-  if (__builtin_expect(material.clearcoat_normal_texture >= 0, 0) && bsdf.coat.present() && !on_microsurface)
-    bsdf.coat.frame = coat_frame(material, si, unmapped, p.cone_width[slot], ray);
+  // The coat points at the frame, which lives as long as the BSDF here.
+  std::optional<Frame> own_coat_frame;
+  if (__builtin_expect(material.clearcoat_normal_texture >= 0, 0) && bsdf.coat.present() && !on_microsurface) {
+    own_coat_frame = coat_frame(material, si, unmapped, p.cone_width[slot], ray);
+    if (own_coat_frame) bsdf.coat.frame = &*own_coat_frame;
+  }
   if constexpr (Mode::kSpectral) {
     // Hero wavelength after a dispersive event (Wilkie et al. 2014): from here on only
     // channel 0 carries an estimate; terminate once (pdf[1] = 0 marks it done).

@@ -157,6 +157,18 @@ TEST(WideGamutFormats, GlbWriterConvertsWhatRec709HoldsAndRefusesTheRest) {
   const std::string message = test::error_of<UsageError>([&] { write_scene_glb(scene, dir / "outside.glb"); });
   EXPECT_NE(message.find("'green'"), std::string::npos) << message;
   EXPECT_NE(message.find("outside Rec.709"), std::string::npos) << message;
+  // A texture tinted in a wide space: glTF multiplies in Rec.709, Prism in the material's
+  // space, which agree only for a grey tint.
+  TextureImage grey;
+  grey.name = "grey";
+  grey.width = grey.height = 1;
+  grey.channels = 3;
+  grey.texels = {0.5f, 0.5f, 0.5f};
+  scene.textures = {grey};
+  scene.materials[0].base_color_space = ColorPickerSpace::srgb;
+  scene.materials[1].base_color_texture = 0;
+  const std::string tinted = test::error_of<UsageError>([&] { write_scene_glb(scene, dir / "tinted.glb"); });
+  EXPECT_NE(tinted.find("'gold': a texture tinted in acescg"), std::string::npos) << tinted;
 }
 
 std::string pbrt_triangle() {

@@ -84,6 +84,12 @@ Vec3f rec709_color(const Vec3f& color, ColorPickerSpace space, const Material& m
 
 json material_json(const Scene& scene, const Material& m) {
   json j = {{"name", m.name}};
+  // A texture multiplies a wide-gamut factor in the material's space and glTF's in Rec.709:
+  // the same colour only for a grey factor (Material::base_color_space).
+  const Vec3f& f = m.base_color;
+  if (m.base_color_texture >= 0 && m.base_color_space != ColorPickerSpace::srgb && (f.x != f.y || f.x != f.z))
+    throw UsageError(fmt::format("GLB writer: material '{}': a texture tinted in {}, which glTF 2.0 cannot say", m.name,
+                                 picker_space_name(m.base_color_space)));
   const Vec3f base = rec709_color(m.base_color, m.base_color_space, m, "base colour");
   json pbr = {{"baseColorFactor", {base.x, base.y, base.z, m.opacity}},
               {"metallicFactor", 0.0}, {"roughnessFactor", m.roughness}};

@@ -92,6 +92,10 @@ TEST(WideGamutBaseColour, FilmsAsItselfInRgbTransport) {
         color::conversion_matrix(picker_color_space(c.space), color::color_space(other)) * Vec3d(c.albedo) * white_nits;
     const Vec3d converted = mean_of(scene, small_render(TransportKind::rgb, other));
     for (int k = 0; k < 3; ++k) EXPECT_NEAR(converted[k], expected[k], 1e-5 * white_nits) << describe(c) << " in " << other;
+    // In sRGB the colours outside Rec.709 are clipped to it: no reflectance is negative.
+    const Vec3d srgb = max(picker_color_in_rec709(c.albedo, c.space), Vec3d(0.0)) * white_nits;
+    const Vec3d clipped = mean_of(scene, small_render(TransportKind::rgb, "srgb"));
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(clipped[k], srgb[k], 1e-5 * white_nits) << describe(c) << " in srgb";
   }
 }
 

@@ -180,9 +180,7 @@ ColorContext<RgbMode>::ColorContext(const Scene& scene, const TransportSettings&
   to_working_ = conversions_to(working);
   const Mat3 film_to_working = color::spectral_xyz_to_rgb_matrix(working);
   for (const Material& m : scene.materials) {
-    const Vec3d base = reflectance_to_film(m.base_color, m.base_color_space);
-    base_colors_.emplace_back();
-    for (int i = 0; i < 3; ++i) base_colors_.back()[i] = static_cast<float>(base[i]);
+    base_colors_.push_back(reflectance(m.base_color, {}, m.base_color_space));
     if (!m.base_color_spectrum) continue;
     // What spectral transport films under a white (flat) light, in working RGB.
     const Vec3d rgb = film_to_working * color::reflectance_to_xyz(*m.base_color_spectrum,
@@ -201,7 +199,12 @@ ColorContext<RgbMode>::ColorContext(const Scene& scene, const TransportSettings&
 
 Spectrum<RgbMode> ColorContext<RgbMode>::reflectance(const Vec3f& color, const Wavelengths<Mode>&,
                                                      ColorPickerSpace space) const {
-  const Vec3d rgb = reflectance_to_film(color, space);
+  Vec3d rgb = reflectance_to_film(color, space);
+  // A wide-gamut colour outside the working gamut has negative channels there, and no
+  // reflectance is negative (a negative albedo squared by two bounces would add light): it
+  // is clipped to the working gamut, as a measured spectrum is below. Rec.709 lies inside
+  // every working space, so sRGB colours are left as converted.
+  if (space != ColorPickerSpace::srgb) rgb = max(rgb, Vec3d(0.0));
   Spectrum<Mode> s;
   for (int i = 0; i < 3; ++i) s[i] = static_cast<float>(rgb[i]);
   return s;

@@ -10,7 +10,8 @@
 //             color/emission_spectrum.h (E-relative); the film holds 683·XYZ (Y in nits),
 //             relative to illuminant E.
 //   rgb:      channels are the working space's R, G, B; reflectances are converted from
-//             their primaries (Bradford between whites); emitters from their picker space (Bradford); the film holds
+//             their primaries (Bradford between whites; a wide-gamut one clipped to the
+//             working gamut, where spectral transport renders it whole); emitters from their picker space (Bradford); the film holds
 //             working RGB with Y in nits.
 // Spectra a scene gives as data (scene/spectral_inputs.h) are white-balanced to the working
 // white W, the same convention the emission rule follows for colours:

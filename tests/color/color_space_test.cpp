@@ -1,5 +1,6 @@
 // Colour spaces: derived matrices against published ones, validation, name lookup.
 #include "prism/color/color_space.h"
+#include "prism/color/chromatic_adaptation.h"
 
 #include <gtest/gtest.h>
 
@@ -187,6 +188,24 @@ TEST(ColorSpace, ParsesUserPrimaries) {
   EXPECT_THROW(parse_color_space("xy:0.64,0.33,0.30,0.60,0.15,0.06,0.3127,"), UsageError);
   EXPECT_THROW(parse_color_space("xy:0.64,0.33,0.64,0.33,0.15,0.06,0.3127,0.3290"), UsageError);
   EXPECT_THROW(parse_color_space("nonsense"), UsageError);
+}
+
+// A colour converted into a space is outside its gamut when a component is negative beyond
+// float data's round-off: Rec.709's primaries and white stored as float ACEScg (a file's
+// numbers) come back to Rec.709 inside, an ACEScg red that Rec.709 cannot hold does not,
+// and a colour 2e-5 of its largest component below 0 is outside while 0.5e-5 is not.
+TEST(ColorSpace, OutsideGamutMeansNegativeBeyondRoundOff) {
+  const Mat3 to_acescg = conversion_matrix(color_space("srgb"), color_space("acescg"));
+  const Mat3 to_srgb = conversion_matrix(color_space("acescg"), color_space("srgb"));
+  for (const Vec3d srgb : {Vec3d(1, 0, 0), Vec3d(0, 1, 0), Vec3d(0, 0, 1), Vec3d(1, 1, 1), Vec3d(0.2, 0, 0.7)}) {
+    const Vec3f stored(to_acescg * srgb);
+    const Vec3d back = to_srgb * Vec3d(stored);
+    EXPECT_FALSE(is_outside_gamut(back)) << srgb.x << " " << srgb.y << " " << srgb.z;
+  }
+  EXPECT_TRUE(is_outside_gamut(to_srgb * Vec3d(0.6, 0.02, 0.02)));
+  EXPECT_TRUE(is_outside_gamut(Vec3d(1.0, 0.5, -2e-5)));
+  EXPECT_FALSE(is_outside_gamut(Vec3d(1.0, 0.5, -0.5e-5)));
+  EXPECT_FALSE(is_outside_gamut(Vec3d(0.0)));  // black is inside every gamut
 }
 
 }  // namespace

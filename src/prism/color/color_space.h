@@ -75,4 +75,9 @@ std::vector<std::string> color_space_names();
 // for example a monitor's measured primaries). Malformed or degenerate: UsageError.
 ColorSpace parse_color_space(std::string_view spec);
 
+// Whether a colour just converted into a space's RGB lies outside its gamut: a component
+// below 0 by more than the conversion's round-off in float data (1e-5 of the largest
+// component; a neutral converted between spaces of one white lands there, not at 0).
+inline bool is_outside_gamut(const Vec3d& rgb) { return min_component(rgb) < -1e-5 * max_component(rgb); }
+
 }  // namespace prism::color

@@ -3,6 +3,7 @@
 #include <array>
 
 #include "prism/color/chromatic_adaptation.h"
+#include "prism/color/color_space.h"
 
 namespace prism {
 
@@ -26,7 +27,13 @@ const char* picker_space_name(ColorPickerSpace space) {
 
 Vec3d picker_color_in_rec709(const Vec3f& color, ColorPickerSpace space) {
   if (space == ColorPickerSpace::srgb) return Vec3d(color);
-  return color::conversion_matrix(picker_color_space(space), color::color_space("srgb")) * Vec3d(color);
+  static const std::array<Mat3, 3> to_rec709 = [] {
+    std::array<Mat3, 3> m;
+    for (const ColorPickerSpace s : {ColorPickerSpace::srgb, ColorPickerSpace::acescg, ColorPickerSpace::rec2020})
+      m[static_cast<std::size_t>(s)] = color::conversion_matrix(picker_color_space(s), color::color_space("srgb"));
+    return m;
+  }();
+  return to_rec709[static_cast<std::size_t>(space)] * Vec3d(color);
 }
 
 const Mat3& rec709_to_picker_space(ColorPickerSpace space) {
@@ -41,7 +48,7 @@ const Mat3& rec709_to_picker_space(ColorPickerSpace space) {
 
 std::optional<Vec3f> picker_color_within_rec709(const Vec3f& color, ColorPickerSpace space) {
   const Vec3d srgb = picker_color_in_rec709(color, space);
-  if (min_component(srgb) < -1e-5 * max_component(srgb)) return std::nullopt;
+  if (color::is_outside_gamut(srgb)) return std::nullopt;
   return Vec3f(max(srgb, Vec3d(0.0)));
 }
 

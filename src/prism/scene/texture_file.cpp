@@ -511,8 +511,7 @@ void convert_to_rec709(TextureImage& image, const Mat3& to_rec709, const Imf::He
   std::size_t clipped = 0;
   const auto convert = [&](Vec3d rgb) {
     const Vec3d v = to_rec709 * rgb;
-    // Below float round-off of the conversion (1e-5 of the largest component) is not a clip.
-    if (min_component(v) < -1e-5 * max_component(v)) ++clipped;
+    if (color::is_outside_gamut(v)) ++clipped;
     return max(v, Vec3d(0.0));
   };
   for (std::size_t t = 0; t < texels; ++t) {

@@ -49,8 +49,7 @@ PbrtColor pbrt_color_in(const Vec3f& rgb, std::string_view space, bool& clipped)
   const Mat3 to = aces ? color::conversion_matrix(color::color_space("aces2065-1"), color::color_space("acescg"))
                        : color::conversion_matrix(color::color_space("display-p3"), color::color_space("rec2020"));
   const Vec3d v = to * Vec3d(rgb);
-  // Round-off of the conversion (1e-5 of the largest component) is not a clip.
-  if (min_component(v) < -1e-5 * max_component(v)) clipped = true;
+  if (color::is_outside_gamut(v)) clipped = true;
   return {Vec3f(max(v, Vec3d(0.0))), aces ? ColorPickerSpace::acescg : ColorPickerSpace::rec2020};
 }
 

@@ -6,9 +6,12 @@
 // upsample a colour whose Rec.709 red is negative at all.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "prism/color/chromatic_adaptation.h"
 #include "prism/color/color_space.h"
@@ -16,10 +19,13 @@
 #include "prism/color/illuminants.h"
 #include "prism/color/jakob_hanika_table.h"
 #include "prism/color/spectrum.h"
+#include "prism/io/exr.h"
 #include "prism/render/aov_images.h"
 #include "prism/render/renderer.h"
 #include "prism/scene/emission.h"
+#include "prism/scene/texture_file.h"
 #include "support/film_statistics.h"
+#include "support/scratch_folder.h"
 #include "support/test_scenes.h"
 
 namespace prism {
@@ -160,6 +166,52 @@ TEST(WideGamutBaseColour, GreyTextureScalesAWideGamutFactor) {
       const AovImages aov = film_aov_images(r->film, to_rec2020);
       for (int k = 0; k < 3; ++k) EXPECT_NEAR(aov.albedo.rgb[k], c.albedo[k] * kGrey, 1e-6) << static_cast<int>(kind);
     }
+  }
+}
+
+// An ACEScg OpenEXR texture on an ACEScg material keeps its colour: read into the material's
+// space (TextureContent::color_acescg, what the JSON loader asks for), a uniform texture of
+// a red outside Rec.709 under a white factor renders as the untextured material of that
+// colour, in both transports. Read into Rec.709 instead (the clipped colour every texture
+// was before), it renders measurably less saturated.
+TEST(WideGamutBaseColour, WideGamutOpenExrTextureKeepsItsColourOnAMaterialInItsSpace) {
+  const Case c = kCases[2];  // the ACEScg red: its Rec.709 green and blue are negative
+  ASSERT_EQ(c.space, ColorPickerSpace::acescg);
+  test::ScratchFolder dir;
+  const color::ColorSpace& aces = color::color_space("acescg");
+  const auto f = [](double v) { return static_cast<float>(v); };
+  const ExrChromaticities ap1{f(aces.red.x),  f(aces.red.y),  f(aces.green.x), f(aces.green.y),
+                              f(aces.blue.x), f(aces.blue.y), f(aces.white.x), f(aces.white.y)};
+  std::vector<float> texels;
+  for (int t = 0; t < 4; ++t) texels.insert(texels.end(), {c.albedo.x, c.albedo.y, c.albedo.z});
+  write_exr(dir / "red.exr", ImageRgbF{2, 2, texels}, ap1);
+  const auto textured_scene = [&](TextureContent content) {
+    Material m = diffuse(c);
+    m.base_color = Vec3f(1.0f);
+    Scene scene = lit_floor(m);
+    scene.textures.push_back(read_texture_file(dir / "red.exr", TextureEncoding::linear, TextureLimits(64), content));
+    scene.materials[0].base_color_texture = 0;
+    return scene;
+  };
+  const Scene kept = textured_scene(TextureContent::color_acescg);
+  const Scene clipped = textured_scene(TextureContent::color);
+  ASSERT_EQ(kept.textures[0].texel_space, ColorPickerSpace::acescg);
+  const Scene untextured = lit_floor(diffuse(c));
+  for (const TransportKind kind : {TransportKind::rgb, TransportKind::spectral}) {
+    const RenderSettings s = small_render(kind, "acescg");
+    const Vec3d expected = mean_of(untextured, s), got = mean_of(kept, s), lost = mean_of(clipped, s);
+    std::printf("[ wide texture ] %s: untextured (%.4f, %.4f, %.4f) kept (%.4f, %.4f, %.4f) clipped (%.4f, %.4f, %.4f)\n",
+                kind == TransportKind::rgb ? "rgb" : "spectral", expected.x, expected.y, expected.z, got.x, got.y, got.z,
+                lost.x, lost.y, lost.z);
+    // The texels are the file's floats, read without conversion: the same albedo, the same
+    // random numbers, so the same image up to the float product texel × factor (1e-6).
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[k], expected[k], 1e-5 * expected[k] + 1e-7) << static_cast<int>(kind);
+    // Clipped to Rec.709 the red is less saturated: its largest channel change is 75 % (RGB,
+    // ACEScg green 0.48 → 0.84) and 16 % (spectral, the film's Z), measured; 10 % is four
+    // orders of magnitude beyond the tolerance above.
+    double largest_change = 0.0;
+    for (int k = 0; k < 3; ++k) largest_change = std::max(largest_change, std::abs(lost[k] - expected[k]) / expected[k]);
+    EXPECT_GT(largest_change, 0.1) << static_cast<int>(kind);
   }
 }
 

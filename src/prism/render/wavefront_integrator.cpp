@@ -126,10 +126,13 @@ std::optional<Vec3f> WavefrontIntegrator<Mode>::textured_base_color(const Materi
   if (!texel) return std::nullopt;
   // Grey and two-channel textures come expanded to (g, g, g) (texture_sampling.h).
   Vec3f rgb((*texel)[0], (*texel)[1], (*texel)[2]);
-  // Texels are Rec.709: in a wide-gamut material's space before its factor multiplies them
-  // (Material::base_color_space; Rec.709 lies inside both, so only round-off is clipped).
-  if (m.base_color_space != ColorPickerSpace::srgb)
-    rgb = max(Vec3f(rec709_to_picker_space(m.base_color_space) * Vec3d(rgb)), Vec3f(0.0f));
+  // Texels are Rec.709, or an OpenEXR's in the wide-gamut material's own space (the loader
+  // asked for it, texture.h's TextureContent): in the material's space before its factor
+  // multiplies them (Material::base_color_space; Rec.709 lies inside both wide spaces, so
+  // only round-off is clipped).
+  const ColorPickerSpace texel_space = scene_.textures[static_cast<std::size_t>(m.base_color_texture)].texel_space;
+  if (texel_space != m.base_color_space)
+    rgb = max(Vec3f(picker_space_conversion(texel_space, m.base_color_space) * Vec3d(rgb)), Vec3f(0.0f));
   return rgb * m.base_color;
 }
 

@@ -16,34 +16,33 @@ const color::ColorSpace& picker_color_space(ColorPickerSpace space) {
   return color::color_space("srgb");
 }
 
-const char* picker_space_name(ColorPickerSpace space) {
+const char* picker_space_name(ColorPickerSpace space) { return picker_color_space(space).name.c_str(); }
+
+const char* picker_space_label(ColorPickerSpace space) {
   switch (space) {
-    case ColorPickerSpace::acescg: return "acescg";
-    case ColorPickerSpace::rec2020: return "rec2020";
+    case ColorPickerSpace::acescg: return "ACEScg";
+    case ColorPickerSpace::rec2020: return "Rec.2020";
     case ColorPickerSpace::srgb: break;
   }
-  return "srgb";
+  return "Rec.709";
 }
 
 Vec3d picker_color_in_rec709(const Vec3f& color, ColorPickerSpace space) {
   if (space == ColorPickerSpace::srgb) return Vec3d(color);
-  static const std::array<Mat3, 3> to_rec709 = [] {
-    std::array<Mat3, 3> m;
-    for (const ColorPickerSpace s : {ColorPickerSpace::srgb, ColorPickerSpace::acescg, ColorPickerSpace::rec2020})
-      m[static_cast<std::size_t>(s)] = color::conversion_matrix(picker_color_space(s), color::color_space("srgb"));
-    return m;
-  }();
-  return to_rec709[static_cast<std::size_t>(space)] * Vec3d(color);
+  return picker_space_conversion(space, ColorPickerSpace::srgb) * Vec3d(color);
 }
 
-const Mat3& rec709_to_picker_space(ColorPickerSpace space) {
-  static const std::array<Mat3, 3> matrices = [] {
-    std::array<Mat3, 3> m;
-    for (const ColorPickerSpace s : {ColorPickerSpace::srgb, ColorPickerSpace::acescg, ColorPickerSpace::rec2020})
-      m[static_cast<std::size_t>(s)] = color::conversion_matrix(color::color_space("srgb"), picker_color_space(s));
+const Mat3& picker_space_conversion(ColorPickerSpace from, ColorPickerSpace to) {
+  constexpr ColorPickerSpace kSpaces[] = {ColorPickerSpace::srgb, ColorPickerSpace::acescg, ColorPickerSpace::rec2020};
+  static const std::array<std::array<Mat3, 3>, 3> matrices = [&] {
+    std::array<std::array<Mat3, 3>, 3> m;
+    for (const ColorPickerSpace f : kSpaces)
+      for (const ColorPickerSpace t : kSpaces)
+        m[static_cast<std::size_t>(f)][static_cast<std::size_t>(t)] =
+            f == t ? Mat3::identity() : color::conversion_matrix(picker_color_space(f), picker_color_space(t));
     return m;
   }();
-  return matrices[static_cast<std::size_t>(space)];
+  return matrices[static_cast<std::size_t>(from)][static_cast<std::size_t>(to)];
 }
 
 std::optional<Vec3f> picker_color_within_rec709(const Vec3f& color, ColorPickerSpace space) {

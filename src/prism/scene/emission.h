@@ -12,13 +12,15 @@ namespace prism {
 const color::ColorSpace& picker_color_space(ColorPickerSpace space);
 // Its name as the scene formats write it: "srgb", "acescg" or "rec2020".
 const char* picker_space_name(ColorPickerSpace space);
+// Its name in messages: "Rec.709", "ACEScg" or "Rec.2020".
+const char* picker_space_label(ColorPickerSpace space);
 
 // A linear colour given in `space` with Rec.709 primaries (Bradford between whites, so
 // white stays white). Components are negative where the colour lies outside Rec.709.
 Vec3d picker_color_in_rec709(const Vec3f& color, ColorPickerSpace space);
-// The matrix taking linear Rec.709 to `space` (Bradford between whites): a texel's colour in
-// a wide-gamut material's space.
-const Mat3& rec709_to_picker_space(ColorPickerSpace space);
+// The matrix taking linear RGB in `from` to `to` (Bradford between whites; the identity
+// where they are the same): a texel's colour in a wide-gamut material's space.
+const Mat3& picker_space_conversion(ColorPickerSpace from, ColorPickerSpace to);
 // The same where it lies within Rec.709 (components below 1e-5 of the largest, float
 // round-off of the conversion, are clipped to 0); nothing where it lies outside.
 std::optional<Vec3f> picker_color_within_rec709(const Vec3f& color, ColorPickerSpace space);

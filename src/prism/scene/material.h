@@ -12,6 +12,7 @@
 
 #include "prism/color/spectrum.h"
 #include "prism/core/vec.h"
+#include "prism/scene/color_picker_space.h"
 
 namespace prism {
 
@@ -27,10 +28,6 @@ enum class MicrofacetModel : std::uint8_t { ggx, beckmann, blinn_phong };
 enum class ConductorFresnel : std::uint8_t { schlick, complex_ior };
 enum class DispersionModel : std::uint8_t { none, cauchy, sellmeier };
 enum class AlphaMode : std::uint8_t { opaque, mask, blend };
-
-// Colour-picker space a light colour or a base colour is given in (so a pure ACEScg blue,
-// or a Rec.2020 green no Rec.709 reflectance reaches, is expressible).
-enum class ColorPickerSpace : std::uint8_t { srgb, acescg, rec2020 };
 
 // Diffuse emission from the front face: `color` gives the chromaticity (in
 // `color_space`), `luminance_nits` the luminance of the emitted radiance.

@@ -15,6 +15,7 @@
 
 #include "prism/core/half_float.h"
 #include "prism/core/vec.h"
+#include "prism/scene/color_picker_space.h"
 
 namespace prism {
 
@@ -56,7 +57,34 @@ constexpr bool is_alpha_channel(int channel, int channels) {
 
 // What a texture's channels hold: colours (base, emission, sheen, specular colour,
 // environment), which have primaries, or data (normals, roughness, heights, masks).
-enum class TextureContent : std::uint8_t { color, data };
+// Colour texels are linear Rec.709: an OpenEXR's are converted from the primaries its
+// chromaticities attribute names and what Rec.709 cannot hold is clipped. A wide-gamut
+// material's base colour (Material::base_color_space) asks for its own space instead
+// (color_acescg, color_rec2020): an OpenEXR's texels are then converted into that space,
+// keeping the colours outside Rec.709 that it holds. 8-bit and .hdr images have no
+// primaries attribute here and stay Rec.709 whatever is asked (TextureImage::texel_space).
+enum class TextureContent : std::uint8_t { color, data, color_acescg, color_rec2020 };
+
+// The colour content whose OpenEXR texels are in `space`.
+constexpr TextureContent color_content_in(ColorPickerSpace space) {
+  switch (space) {
+    case ColorPickerSpace::acescg: return TextureContent::color_acescg;
+    case ColorPickerSpace::rec2020: return TextureContent::color_rec2020;
+    case ColorPickerSpace::srgb: break;
+  }
+  return TextureContent::color;
+}
+constexpr bool is_color_content(TextureContent c) { return c != TextureContent::data; }
+// The space a colour content asks for (srgb for color, and for data, which has none).
+constexpr ColorPickerSpace requested_space(TextureContent c) {
+  switch (c) {
+    case TextureContent::color_acescg: return ColorPickerSpace::acescg;
+    case TextureContent::color_rec2020: return ColorPickerSpace::rec2020;
+    case TextureContent::color:
+    case TextureContent::data: break;
+  }
+  return ColorPickerSpace::srgb;
+}
 
 struct TextureImage {
   std::string name;  // file name or generated name, for messages and `prism info`
@@ -75,9 +103,12 @@ struct TextureImage {
   // KHR_texture_transform / pbrt uv mapping: uv' = offset + scale ⊙ rotate(uv)
   float offset_u = 0.0f, offset_v = 0.0f, scale_u = 1.0f, scale_v = 1.0f, rotation_radians = 0.0f;
 
-  // Set when the texels were converted to Rec.709 from other primaries at load (an
-  // OpenEXR colour texture's chromaticities attribute): what was done, for the loader's
-  // warnings. Empty otherwise.
+  // The primaries of a colour texture's RGB texels: Rec.709 (srgb), or the wide-gamut
+  // space an OpenEXR was read into for a material's base colour (TextureContent).
+  ColorPickerSpace texel_space = ColorPickerSpace::srgb;
+  // Set when an OpenEXR colour texture's texels fell outside the gamut they were converted
+  // into at load (from its chromaticities attribute) and were clipped: how many, for the
+  // loader's warnings. Empty otherwise.
   std::string primaries_note{};
 
   bool has_codes() const { return !codes.empty(); }

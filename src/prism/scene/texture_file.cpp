@@ -26,6 +26,7 @@
 #include "prism/core/error.h"
 #include "prism/io/exr.h"
 #include "prism/io/read_to_end.h"
+#include "prism/scene/emission.h"
 #include "prism/scene/radiance_hdr.h"
 
 namespace prism {
@@ -480,37 +481,43 @@ OpenExrFirstPart check_openexr_header(std::span<const unsigned char> bytes, int 
 TextureImage read_openexr_texels(const std::filesystem::path& path, const OpenExrFirstPart& layout, long width,
                                  long height);
 
-// The matrix taking an OpenEXR colour texture's RGB to linear Rec.709 (Bradford between
-// whites), where its `chromaticities` attribute names other primaries or another white than
-// Rec.709's D65 (OpenEXR's default, which a file without the attribute has). 1e-4 in x or y
-// is rounding in how a writer printed Rec.709.
-std::optional<Mat3> openexr_to_rec709(const Imf::Header& header, const std::string& name) {
-  if (!Imf::hasChromaticities(header)) return std::nullopt;
-  const Imf::Chromaticities& c = Imf::chromaticities(header);
-  const Imf::Chromaticities rec709;
+// Chromaticities within 1e-4 in x and y are the same primaries: rounding in how a writer
+// printed a standard's.
+bool same_primaries(const Imf::Chromaticities& c, const color::ColorSpace& space) {
   const float given[] = {c.red.x, c.red.y, c.green.x, c.green.y, c.blue.x, c.blue.y, c.white.x, c.white.y};
-  const float standard[] = {rec709.red.x,  rec709.red.y,  rec709.green.x, rec709.green.y,
-                            rec709.blue.x, rec709.blue.y, rec709.white.x, rec709.white.y};
-  bool same = true;
-  for (int i = 0; i < 8; ++i) same = same && std::abs(given[i] - standard[i]) <= 1e-4f;
-  if (same) return std::nullopt;
+  const double standard[] = {space.red.x,  space.red.y,  space.green.x, space.green.y,
+                             space.blue.x, space.blue.y, space.white.x, space.white.y};
+  for (int i = 0; i < 8; ++i)
+    if (std::abs(given[i] - standard[i]) > 1e-4) return false;
+  return true;
+}
+
+// The matrix taking an OpenEXR colour texture's RGB into `target` (Bradford between
+// whites), where the primaries its `chromaticities` attribute names differ from the
+// target's. A file without the attribute has OpenEXR's default, Rec.709 with D65.
+std::optional<Mat3> openexr_conversion(const Imf::Header& header, const color::ColorSpace& target,
+                                       const std::string& name) {
+  const Imf::Chromaticities c = Imf::hasChromaticities(header) ? Imf::chromaticities(header) : Imf::Chromaticities();
+  if (same_primaries(c, target)) return std::nullopt;
   try {
     const color::ColorSpace space = color::make_color_space(name, {c.red.x, c.red.y}, {c.green.x, c.green.y},
                                                             {c.blue.x, c.blue.y}, {c.white.x, c.white.y});
-    return color::conversion_matrix(space, color::color_space("srgb"));
+    return color::conversion_matrix(space, target);
   } catch (const Error& e) {
     throw IoError(fmt::format("cannot read image '{}': its chromaticities are no colour space ({})", name, e.what()));
   }
 }
 
-// Converts an RGB OpenEXR texture's texels (halves or floats) by `to_rec709`, clipping what
-// falls below 0 (colours outside Rec.709, which a texel cannot hold), and says so in the
-// image's primaries_note.
-void convert_to_rec709(TextureImage& image, const Mat3& to_rec709, const Imf::Header& header) {
+// Converts an RGB OpenEXR texture's texels (halves or floats) by `conversion` into
+// `target`, clipping what falls below 0 (colours outside the target's gamut, which a texel
+// there cannot hold), and says what it did in the image's primaries_note: for a file in
+// other primaries than Rec.709, and where anything was clipped. A Rec.709 file (labelled,
+// or without the attribute) going into a wider space loses nothing and gets no note.
+void convert_texels(TextureImage& image, const Mat3& conversion, ColorPickerSpace target, const Imf::Header& header) {
   const std::size_t texels = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
   std::size_t clipped = 0;
   const auto convert = [&](Vec3d rgb) {
-    const Vec3d v = to_rec709 * rgb;
+    const Vec3d v = conversion * rgb;
     if (color::is_outside_gamut(v)) ++clipped;
     return max(v, Vec3d(0.0));
   };
@@ -525,18 +532,25 @@ void convert_to_rec709(TextureImage& image, const Mat3& to_rec709, const Imf::He
       for (int k = 0; k < 3; ++k) f[k] = static_cast<float>(v[k]);
     }
   }
-  const Imf::Chromaticities& c = Imf::chromaticities(header);
+  image.texel_space = target;
+  const char* label = picker_space_label(target);
+  const std::string clip_note =
+      clipped ? fmt::format("; {} of {} texels lie outside {} and were clipped to it", clipped, texels, label) : "";
+  const Imf::Chromaticities c = Imf::hasChromaticities(header) ? Imf::chromaticities(header) : Imf::Chromaticities();
+  if (same_primaries(c, color::color_space("srgb"))) {
+    if (clipped) image.primaries_note = fmt::format("texture '{}': Rec.709 RGB converted to {}{}", image.name, label, clip_note);
+    return;
+  }
   image.primaries_note = fmt::format(
       "texture '{}': RGB in the primaries of its chromaticities (red {:.4f},{:.4f} green {:.4f},{:.4f} blue "
-      "{:.4f},{:.4f} white {:.4f},{:.4f}) converted to Rec.709{}",
-      image.name, c.red.x, c.red.y, c.green.x, c.green.y, c.blue.x, c.blue.y, c.white.x, c.white.y,
-      clipped ? fmt::format("; {} of {} texels lie outside Rec.709 and were clipped to it", clipped, texels) : "");
+      "{:.4f},{:.4f} white {:.4f},{:.4f}) converted to {}{}",
+      image.name, c.red.x, c.red.y, c.green.x, c.green.y, c.blue.x, c.blue.y, c.white.x, c.white.y, label, clip_note);
 }
 
-// `colour`: a colour texture, whose texels follow its chromaticities; data (normal maps,
-// roughness) does not.
+// A colour texture's texels follow its chromaticities into the space `content` asks for;
+// data (normal maps, roughness) is read as stored.
 TextureImage read_openexr(const std::filesystem::path& path, std::span<const unsigned char> bytes,
-                          const TextureLimits& limits, bool colour) {
+                          const TextureLimits& limits, TextureContent content) {
   const std::string name = path.string();
   const int max_dimension = limits.max_dimension;
   const OpenExrFirstPart layout = check_openexr_header(bytes, max_dimension, name);
@@ -563,8 +577,13 @@ TextureImage read_openexr(const std::filesystem::path& path, std::span<const uns
     throw IoError(fmt::format("cannot read image '{}': {}", name, e.what()));
   }
   TextureImage image = read_openexr_texels(path, layout, width, height);
-  if (colour && image.channels == 3)
-    if (const auto to_rec709 = openexr_to_rec709(*header, name)) convert_to_rec709(image, *to_rec709, *header);
+  if (is_color_content(content) && image.channels == 3) {
+    const ColorPickerSpace target = requested_space(content);
+    if (const auto conversion = openexr_conversion(*header, picker_color_space(target), name))
+      convert_texels(image, *conversion, target, *header);
+    else
+      image.texel_space = target;
+  }
   return image;
 }
 
@@ -680,7 +699,7 @@ TextureImage read_texture_file(const std::filesystem::path& path, TextureEncodin
   }
   const std::vector<unsigned char> bytes = read_file_bytes(path, "image");
   if (detect_image_format(head) == ImageFileFormat::openexr)
-    return read_openexr(path, bytes, limits, content == TextureContent::color);
+    return read_openexr(path, bytes, limits, content);
   return decode_texture_memory(bytes, path.string(), encoding, limits);
 }
 

@@ -28,10 +28,12 @@ ImageFileFormat detect_image_format(std::span<const unsigned char> head);
 // Throws IoError for a missing/unreadable/truncated/unrecognised file and for an image
 // wider or taller than `limits.max_dimension`, and Error when its texels would exceed the
 // memory budget (both checked from the header, before the pixels are allocated).
-// `content`: a colour texture's OpenEXR texels are converted to Rec.709 from the primaries
-// its `chromaticities` attribute names (Bradford between whites; what falls outside Rec.709
-// is clipped, and TextureImage::primaries_note says so); data (normal, roughness, height
-// maps) is read as stored. 8-bit and .hdr images have no such attribute here.
+// `content`: a colour texture's OpenEXR texels are converted from the primaries its
+// `chromaticities` attribute names (Rec.709 without one) into Rec.709, or into the wide
+// space a wide-gamut material's base colour asks for (Bradford between whites; what falls
+// outside the gamut is clipped, and TextureImage::primaries_note says so), and
+// TextureImage::texel_space says which; data (normal, roughness, height maps) is read as
+// stored. 8-bit and .hdr images have no such attribute here and stay Rec.709.
 TextureImage read_texture_file(const std::filesystem::path& path, TextureEncoding encoding,
                                const TextureLimits& limits, TextureContent content = TextureContent::data);
 

@@ -5,14 +5,17 @@
 // was read as Rec.709 whatever its file said.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
 #include "prism/color/chromatic_adaptation.h"
 #include "prism/color/color_space.h"
 #include "prism/io/exr.h"
+#include "prism/io/png.h"
 #include "prism/scene/loaders/json_scene.h"
 #include "prism/scene/loaders/pbrt_scene.h"
+#include "prism/scene/loaders/texture_png.h"
 #include "prism/scene/texture_file.h"
 #include "scene/loaders/loader_test_files.h"
 #include "support/scratch_folder.h"
@@ -115,6 +118,88 @@ TEST(ExrTexturePrimaries, LoadersConvertColourTexturesAndSaySo) {
   ASSERT_GE(pm.base_color_texture, 0);
   EXPECT_NEAR(p.textures[static_cast<std::size_t>(pm.base_color_texture)].linear_values()[0], acescg_in_rec709(0).x,
               1e-6);
+}
+
+// A wide-gamut material's base colour asks for its own space: an ACEScg file read into
+// ACEScg is stored as written (no conversion, no note), into Rec.2020 converted, where
+// ACEScg's pure green, outside Rec.2020 too, is clipped and noted; a Rec.709 file goes into
+// the wide space losing nothing, without a note.
+TEST(ExrTexturePrimaries, WideGamutContentKeepsWhatRec709CannotHold) {
+  test::ScratchFolder dir;
+  write_acescg_exr(dir / "acescg.exr");
+  const TextureImage same =
+      read_texture_file(dir / "acescg.exr", TextureEncoding::srgb, TextureLimits(4096), TextureContent::color_acescg);
+  EXPECT_EQ(same.texel_space, ColorPickerSpace::acescg);
+  EXPECT_EQ(same.linear_values(), kAcescgTexels);
+  EXPECT_TRUE(same.primaries_note.empty()) << same.primaries_note;
+
+  const TextureImage wide =
+      read_texture_file(dir / "acescg.exr", TextureEncoding::srgb, TextureLimits(4096), TextureContent::color_rec2020);
+  EXPECT_EQ(wide.texel_space, ColorPickerSpace::rec2020);
+  const Mat3 to_rec2020 = color::conversion_matrix(color::color_space("acescg"), color::color_space("rec2020"));
+  const std::vector<float> texels = wide.linear_values();
+  for (std::size_t t = 0; t < 2; ++t) {
+    const Vec3d expected =
+        to_rec2020 * Vec3d(kAcescgTexels[3 * t], kAcescgTexels[3 * t + 1], kAcescgTexels[3 * t + 2]);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(texels[3 * t + k], expected[k], 1e-6) << t << " " << k;
+  }
+  ASSERT_LT(min_component(to_rec2020 * Vec3d(0, 1, 0)), 0.0);  // AP1's green lies outside Rec.2020
+  EXPECT_GE(min_component(Vec3f(texels[6], texels[7], texels[8])), 0.0f);
+  EXPECT_NE(wide.primaries_note.find("1 of 3 texels lie outside Rec.2020"), std::string::npos) << wide.primaries_note;
+
+  write_exr(dir / "plain.exr", ImageRgbF{3, 1, kAcescgTexels}, chromaticities_of("srgb"));
+  const TextureImage plain =
+      read_texture_file(dir / "plain.exr", TextureEncoding::srgb, TextureLimits(4096), TextureContent::color_acescg);
+  EXPECT_EQ(plain.texel_space, ColorPickerSpace::acescg);
+  const Mat3 to_acescg = color::conversion_matrix(color::color_space("srgb"), color::color_space("acescg"));
+  EXPECT_NEAR(plain.linear_values()[0], (to_acescg * Vec3d(0.5, 0.25, 0.125)).x, 1e-6);
+  EXPECT_TRUE(plain.primaries_note.empty()) << plain.primaries_note;
+}
+
+// The JSON loader asks for the material's space: the same ACEScg file is the ACEScg texels
+// as written on an ACEScg material and clipped Rec.709 ones on an sRGB material (two
+// entries), while a PNG, which has no primaries here, is one entry for both.
+TEST(ExrTexturePrimaries, JsonWideGamutMaterialReadsItsOpenExrInItsSpace) {
+  test::ScratchFolder dir;
+  write_acescg_exr(dir / "albedo.exr");
+  write_png(dir / "albedo.png", EncodedImage{2, 2, 3, 8, std::vector<std::uint16_t>(12, 128)});
+  const std::string json = R"({"format": "prism-scene/1", "name": "q",
+    "materials": [{"name": "wide", "type": "diffuse", "base_color_space": "acescg", "base_color_texture": "albedo.exr"},
+                  {"name": "narrow", "type": "diffuse", "base_color_texture": "albedo.exr"},
+                  {"name": "wide-png", "type": "diffuse", "base_color_space": "acescg", "base_color_texture": "albedo.png"},
+                  {"name": "narrow-png", "type": "diffuse", "base_color_texture": "albedo.png"}],
+    "meshes": [{"name": "q", "material": "wide", "positions": [[0,0,0], [1,0,0], [0,1,0]], "uvs": [[0,0], [1,0], [0,1]],
+                "indices": [0,1,2]}]})";
+  const Scene scene = loaders::parse_json_scene(json, "scene.json", dir.path(), "q");
+  const TextureImage& wide = scene.textures[static_cast<std::size_t>(scene.materials[0].base_color_texture)];
+  const TextureImage& narrow = scene.textures[static_cast<std::size_t>(scene.materials[1].base_color_texture)];
+  EXPECT_EQ(wide.texel_space, ColorPickerSpace::acescg);
+  EXPECT_EQ(wide.linear_values(), kAcescgTexels);
+  EXPECT_EQ(narrow.texel_space, ColorPickerSpace::srgb);
+  EXPECT_EQ(narrow.linear_values()[6], 0.0f);  // the green's clipped red
+  EXPECT_EQ(scene.materials[2].base_color_texture, scene.materials[3].base_color_texture);
+  EXPECT_EQ(scene.textures[static_cast<std::size_t>(scene.materials[2].base_color_texture)].texel_space,
+            ColorPickerSpace::srgb);
+}
+
+// The scene writers' PNGs are read back as Rec.709: a texture held in ACEScg goes back to
+// Rec.709 there (what lies outside it clipped, like values above 1), not as its ACEScg
+// numbers.
+TEST(ExrTexturePrimaries, WritersPngsHoldRec709) {
+  test::ScratchFolder dir;
+  write_acescg_exr(dir / "acescg.exr");
+  const TextureImage wide =
+      read_texture_file(dir / "acescg.exr", TextureEncoding::srgb, TextureLimits(4096), TextureContent::color_acescg);
+  const std::vector<unsigned char> png = loaders::encode_texture_png(wide, TextureEncoding::srgb);
+  const TextureImage back = decode_texture_memory(png, "back.png", TextureEncoding::srgb, TextureLimits(4096));
+  EXPECT_EQ(back.texel_space, ColorPickerSpace::srgb);
+  const std::vector<float> texels = back.linear_values();
+  for (std::size_t t = 0; t < 3; ++t) {
+    const Vec3d expected = min(max(acescg_in_rec709(t), Vec3d(0.0)), Vec3d(1.0));
+    // 8-bit sRGB codes: half a code step, at most 0.5/255 × the OETF's slope at the value
+    // (12.92 near 0) in linear terms, within 0.03 here.
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(texels[3 * t + k], expected[k], 0.03 * std::max(expected[k], 0.1)) << t << k;
+  }
 }
 
 }  // namespace

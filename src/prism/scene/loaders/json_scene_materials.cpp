@@ -102,10 +102,10 @@ std::filesystem::path JsonSceneReader::resolve(const JsonValue& file_name) const
 }
 
 int JsonSceneReader::read_texture(const JsonValue& value, TextureEncoding default_encoding,
-                                  TextureCache::ImageCheck check) {
+                                  TextureCache::ImageCheck check, ColorPickerSpace color_space) {
   // What the key reads is colour or data whatever encoding the file is given in.
   const TextureContent content =
-      default_encoding == TextureEncoding::srgb ? TextureContent::color : TextureContent::data;
+      default_encoding == TextureEncoding::srgb ? color_content_in(color_space) : TextureContent::data;
   if (value.is_string())
     return textures.load(resolve(value), default_encoding, TextureWrap::repeat, TextureWrap::repeat, {},
                          std::move(check), content);
@@ -244,8 +244,9 @@ void JsonSceneReader::read_material(const JsonValue& value) {
   // Glass is untinted unless a colour is given (the 0.8 albedo default would darken it).
   m.base_color = value.get_vec3("base_color", m.type == MaterialType::dielectric ? Vec3f(1.0f) : m.base_color);
   if (min(m.base_color, Vec3f(0.0f)) != Vec3f(0.0f)) value["base_color"].fail("colour components must not be negative");
-  if (auto t = value.find("base_color_texture")) m.base_color_texture = read_texture(*t, TextureEncoding::srgb);
   if (auto s = value.find("base_color_space")) m.base_color_space = read_color_picker_space(*s);
+  if (auto t = value.find("base_color_texture"))
+    m.base_color_texture = read_texture(*t, TextureEncoding::srgb, {}, m.base_color_space);
   if (auto s = value.find("base_color_spectrum")) {
     if (value.has("base_color_space")) value.fail("give either 'base_color_space' or 'base_color_spectrum', not both");
     if (value.has("base_color")) value.fail("give either 'base_color' or 'base_color_spectrum', not both");

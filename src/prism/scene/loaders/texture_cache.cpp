@@ -2,10 +2,22 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
+#include <string>
+
 #include "prism/core/error.h"
 #include "prism/core/parallel.h"
 
 namespace prism::loaders {
+namespace {
+
+bool has_openexr_extension(const std::filesystem::path& file) {
+  std::string extension = file.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension == ".exr";
+}
+
+}  // namespace
 
 int TextureCache::load(const std::filesystem::path& file, TextureEncoding encoding, TextureWrap wrap_u,
                        TextureWrap wrap_v, std::string context, ImageCheck check,
@@ -13,8 +25,11 @@ int TextureCache::load(const std::filesystem::path& file, TextureEncoding encodi
   std::error_code ec;
   std::filesystem::path canonical = std::filesystem::weakly_canonical(file, ec);
   if (ec) canonical = file;
-  const TextureContent what =
+  TextureContent what =
       content.value_or(encoding == TextureEncoding::srgb ? TextureContent::color : TextureContent::data);
+  // Only an OpenEXR's texels go into a wide space (texture.h): any other image is decoded
+  // once for every colour use.
+  if (is_color_content(what) && !has_openexr_extension(canonical)) what = TextureContent::color;
   const Key key{canonical.string(), encoding, wrap_u, wrap_v, what};
   if (const auto it = indices_.find(key); it != indices_.end()) return it->second;
   // The entry's place and addressing now, its texels at the next sync.

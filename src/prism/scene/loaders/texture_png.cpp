@@ -10,6 +10,7 @@
 #include "prism/color/transfer_functions.h"
 #include "prism/core/error.h"
 #include "prism/io/atomic_file.h"
+#include "prism/scene/emission.h"
 
 namespace prism::loaders {
 namespace {
@@ -48,9 +49,22 @@ std::vector<unsigned char> encode_texture_png(const TextureImage& image, Texture
   check_image(image);
   const int c = image.channels;
   std::vector<std::uint8_t> codes(image.sample_count());
-  for (std::size_t i = 0; i < codes.size(); ++i) {
+  const auto code = [&](std::size_t i, float v) {
     const bool alpha = is_alpha_channel(static_cast<int>(i % static_cast<std::size_t>(c)), c);
-    codes[i] = alpha || encoding == TextureEncoding::linear ? linear_code(image.value(i)) : srgb_code(image.value(i));
+    return alpha || encoding == TextureEncoding::linear ? linear_code(v) : srgb_code(v);
+  };
+  if (c >= 3 && image.texel_space != ColorPickerSpace::srgb) {
+    // A PNG's texels are read back as Rec.709: an OpenEXR held in a wide-gamut material's
+    // space (texture.h) goes back to Rec.709, what lies outside it clipped like what lies
+    // above 1 (8-bit PNG holds neither).
+    const Mat3& to_rec709 = picker_space_conversion(image.texel_space, ColorPickerSpace::srgb);
+    for (std::size_t first = 0; first < codes.size(); first += static_cast<std::size_t>(c)) {
+      const Vec3d rgb = to_rec709 * Vec3d(image.value(first), image.value(first + 1), image.value(first + 2));
+      for (std::size_t k = 0; k < static_cast<std::size_t>(c); ++k)
+        codes[first + k] = code(first + k, k < 3 ? static_cast<float>(rgb[k]) : image.value(first + k));
+    }
+  } else {
+    for (std::size_t i = 0; i < codes.size(); ++i) codes[i] = code(i, image.value(i));
   }
   return encode_codes(codes, image.width, image.height, c, image.name);
 }

@@ -45,6 +45,17 @@ const Mat3& picker_space_conversion(ColorPickerSpace from, ColorPickerSpace to) 
   return matrices[static_cast<std::size_t>(from)][static_cast<std::size_t>(to)];
 }
 
+ColorPickerSpace smallest_picker_space_holding(const color::ColorSpace& space) {
+  for (const ColorPickerSpace candidate : {ColorPickerSpace::srgb, ColorPickerSpace::rec2020}) {
+    const Mat3 to = color::conversion_matrix(space, picker_color_space(candidate));
+    bool holds = true;
+    for (const Vec3d primary : {Vec3d(1, 0, 0), Vec3d(0, 1, 0), Vec3d(0, 0, 1)})
+      holds = holds && !color::is_outside_gamut(to * primary);
+    if (holds) return candidate;
+  }
+  return ColorPickerSpace::acescg;
+}
+
 std::optional<Vec3f> picker_color_within_rec709(const Vec3f& color, ColorPickerSpace space) {
   const Vec3d srgb = picker_color_in_rec709(color, space);
   if (color::is_outside_gamut(srgb)) return std::nullopt;

@@ -18,6 +18,11 @@ const char* picker_space_label(ColorPickerSpace space);
 // A linear colour given in `space` with Rec.709 primaries (Bradford between whites, so
 // white stays white). Components are negative where the colour lies outside Rec.709.
 Vec3d picker_color_in_rec709(const Vec3f& color, ColorPickerSpace space);
+// The first of Rec.709, Rec.2020 and ACEScg whose gamut holds `space`'s primaries (its pure
+// red, green and blue, converted with Bradford between whites, none outside the gamut by
+// more than round-off, color::is_outside_gamut); ACEScg, the widest, where none does
+// (ACES2065-1's AP0 primaries lie outside every real gamut).
+ColorPickerSpace smallest_picker_space_holding(const color::ColorSpace& space);
 // The matrix taking linear RGB in `from` to `to` (Bradford between whites; the identity
 // where they are the same): a texel's colour in a wide-gamut material's space.
 const Mat3& picker_space_conversion(ColorPickerSpace from, ColorPickerSpace to);

@@ -61,9 +61,12 @@ constexpr bool is_alpha_channel(int channel, int channels) {
 // chromaticities attribute names and what Rec.709 cannot hold is clipped. A wide-gamut
 // material's base colour (Material::base_color_space) asks for its own space instead
 // (color_acescg, color_rec2020): an OpenEXR's texels are then converted into that space,
-// keeping the colours outside Rec.709 that it holds. 8-bit and .hdr images have no
-// primaries attribute here and stay Rec.709 whatever is asked (TextureImage::texel_space).
-enum class TextureContent : std::uint8_t { color, data, color_acescg, color_rec2020 };
+// keeping the colours outside Rec.709 that it holds. color_own_gamut keeps an OpenEXR in
+// the first of Rec.709, Rec.2020 and ACEScg whose gamut holds its primaries (pbrt-v4's
+// image textures keep their file's colour space; the material then takes the texture's,
+// pbrt_parser.cpp). 8-bit and .hdr images have no primaries attribute here and stay
+// Rec.709 whatever is asked (TextureImage::texel_space says where texels are).
+enum class TextureContent : std::uint8_t { color, data, color_acescg, color_rec2020, color_own_gamut };
 
 // The colour content whose OpenEXR texels are in `space`.
 constexpr TextureContent color_content_in(ColorPickerSpace space) {
@@ -75,12 +78,14 @@ constexpr TextureContent color_content_in(ColorPickerSpace space) {
   return TextureContent::color;
 }
 constexpr bool is_color_content(TextureContent c) { return c != TextureContent::data; }
-// The space a colour content asks for (srgb for color, and for data, which has none).
+// The space a colour content asks for (srgb for color, and for data, which has none;
+// color_own_gamut's depends on the file).
 constexpr ColorPickerSpace requested_space(TextureContent c) {
   switch (c) {
     case TextureContent::color_acescg: return ColorPickerSpace::acescg;
     case TextureContent::color_rec2020: return ColorPickerSpace::rec2020;
     case TextureContent::color:
+    case TextureContent::color_own_gamut:
     case TextureContent::data: break;
   }
   return ColorPickerSpace::srgb;

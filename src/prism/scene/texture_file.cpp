@@ -492,20 +492,26 @@ bool same_primaries(const Imf::Chromaticities& c, const color::ColorSpace& space
   return true;
 }
 
+// The colour space of the primaries an OpenEXR's `chromaticities` attribute names. A file
+// without the attribute has OpenEXR's default, Rec.709 with D65.
+color::ColorSpace openexr_primaries(const Imf::Header& header, const std::string& name) {
+  const Imf::Chromaticities c = Imf::hasChromaticities(header) ? Imf::chromaticities(header) : Imf::Chromaticities();
+  try {
+    return color::make_color_space(name, {c.red.x, c.red.y}, {c.green.x, c.green.y}, {c.blue.x, c.blue.y},
+                                   {c.white.x, c.white.y});
+  } catch (const Error& e) {
+    throw IoError(fmt::format("cannot read image '{}': its chromaticities are no colour space ({})", name, e.what()));
+  }
+}
+
 // The matrix taking an OpenEXR colour texture's RGB into `target` (Bradford between
 // whites), where the primaries its `chromaticities` attribute names differ from the
-// target's. A file without the attribute has OpenEXR's default, Rec.709 with D65.
+// target's.
 std::optional<Mat3> openexr_conversion(const Imf::Header& header, const color::ColorSpace& target,
                                        const std::string& name) {
   const Imf::Chromaticities c = Imf::hasChromaticities(header) ? Imf::chromaticities(header) : Imf::Chromaticities();
   if (same_primaries(c, target)) return std::nullopt;
-  try {
-    const color::ColorSpace space = color::make_color_space(name, {c.red.x, c.red.y}, {c.green.x, c.green.y},
-                                                            {c.blue.x, c.blue.y}, {c.white.x, c.white.y});
-    return color::conversion_matrix(space, target);
-  } catch (const Error& e) {
-    throw IoError(fmt::format("cannot read image '{}': its chromaticities are no colour space ({})", name, e.what()));
-  }
+  return color::conversion_matrix(openexr_primaries(header, name), target);
 }
 
 // Converts an RGB OpenEXR texture's texels (halves or floats) by `conversion` into
@@ -578,7 +584,9 @@ TextureImage read_openexr(const std::filesystem::path& path, std::span<const uns
   }
   TextureImage image = read_openexr_texels(path, layout, width, height);
   if (is_color_content(content) && image.channels == 3) {
-    const ColorPickerSpace target = requested_space(content);
+    const ColorPickerSpace target =
+        content == TextureContent::color_own_gamut ? smallest_picker_space_holding(openexr_primaries(*header, name))
+                                                   : requested_space(content);
     if (const auto conversion = openexr_conversion(*header, picker_color_space(target), name))
       convert_texels(image, *conversion, target, *header);
     else

@@ -106,7 +106,9 @@ TEST(ExrTexturePrimaries, LoadersConvertColourTexturesAndSaySo) {
   bool warned = false;
   for (const std::string& w : scene.warnings) warned |= w.find("converted to Rec.709") != std::string::npos;
   EXPECT_TRUE(warned);
-  // pbrt-v4: a "spectrum" imagemap is colour whatever its encoding, a "float" one data.
+  // pbrt-v4: a "spectrum" imagemap is colour whatever its encoding, a "float" one data, and
+  // keeps its file's colour space (pbrt-v4's image textures do): ACEScg texels as written,
+  // on a material whose base colour is ACEScg.
   const std::string pbrt = "WorldBegin\n"
                            "Texture \"c\" \"spectrum\" \"imagemap\" \"string filename\" \"albedo.exr\" "
                            "\"string encoding\" \"linear\"\n"
@@ -116,8 +118,51 @@ TEST(ExrTexturePrimaries, LoadersConvertColourTexturesAndSaySo) {
   const Scene p = loaders::parse_pbrt_scene(pbrt, "scene.pbrt", dir.path());
   const Material& pm = p.materials[p.meshes[0].material];
   ASSERT_GE(pm.base_color_texture, 0);
-  EXPECT_NEAR(p.textures[static_cast<std::size_t>(pm.base_color_texture)].linear_values()[0], acescg_in_rec709(0).x,
-              1e-6);
+  const TextureImage& pt = p.textures[static_cast<std::size_t>(pm.base_color_texture)];
+  EXPECT_EQ(pt.texel_space, ColorPickerSpace::acescg);
+  EXPECT_EQ(pt.linear_values(), kAcescgTexels);
+  EXPECT_EQ(pm.base_color_space, ColorPickerSpace::acescg);
+  EXPECT_EQ(pm.base_color, Vec3f(1.0f));
+}
+
+// pbrt-v4 image textures in other primaries: a Rec.2020 one is kept in Rec.2020 (and its
+// material's base colour is Rec.2020), an ACES2065-1 one goes to ACEScg (AP0 is imaginary),
+// a Rec.709 one stays as it was, on an sRGB material; a uv-transformed copy keeps its
+// texture's space.
+TEST(ExrTexturePrimaries, PbrtImageTexturesKeepTheirFilesColourSpace) {
+  test::ScratchFolder dir;
+  for (const char* space : {"rec2020", "aces2065-1", "srgb"})
+    write_exr(dir / (std::string(space) + ".exr"), ImageRgbF{3, 1, kAcescgTexels}, chromaticities_of(space));
+  const std::string pbrt =
+      "WorldBegin\n"
+      "Texture \"a\" \"spectrum\" \"imagemap\" \"string filename\" \"rec2020.exr\"\n"
+      "Texture \"b\" \"spectrum\" \"imagemap\" \"string filename\" \"aces2065-1.exr\"\n"
+      "Texture \"c\" \"spectrum\" \"imagemap\" \"string filename\" \"srgb.exr\"\n"
+      "Texture \"d\" \"spectrum\" \"imagemap\" \"string filename\" \"rec2020.exr\" \"float uscale\" 2\n";
+  std::string shapes;
+  for (const char* t : {"a", "b", "c", "d"})
+    shapes += std::string("AttributeBegin\nMaterial \"diffuse\" \"texture reflectance\" \"") + t +
+              "\"\nShape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 2] "
+              "\"point2 uv\" [0 0 1 0 0 1]\nAttributeEnd\n";
+  const Scene scene = loaders::parse_pbrt_scene(pbrt + shapes, "scene.pbrt", dir.path());
+  ASSERT_EQ(scene.meshes.size(), 4u);
+  const ColorPickerSpace expected[] = {ColorPickerSpace::rec2020, ColorPickerSpace::acescg, ColorPickerSpace::srgb,
+                                       ColorPickerSpace::rec2020};
+  for (std::size_t i = 0; i < 4; ++i) {
+    const Material& m = scene.materials[scene.meshes[i].material];
+    ASSERT_GE(m.base_color_texture, 0) << i;
+    EXPECT_EQ(scene.textures[static_cast<std::size_t>(m.base_color_texture)].texel_space, expected[i]) << i;
+    EXPECT_EQ(m.base_color_space, expected[i]) << i;
+  }
+  // Rec.2020 texels as written; AP0 ones converted to AP1.
+  const auto texels_of = [&](std::size_t mesh) {
+    return scene.textures[static_cast<std::size_t>(scene.materials[scene.meshes[mesh].material].base_color_texture)]
+        .linear_values();
+  };
+  EXPECT_EQ(texels_of(0), kAcescgTexels);
+  EXPECT_EQ(texels_of(2), kAcescgTexels);
+  const Mat3 ap0_to_ap1 = color::conversion_matrix(color::color_space("aces2065-1"), color::color_space("acescg"));
+  EXPECT_NEAR(texels_of(1)[0], (ap0_to_ap1 * Vec3d(0.5, 0.25, 0.125)).x, 1e-6);
 }
 
 // A wide-gamut material's base colour asks for its own space: an ACEScg file read into

@@ -320,7 +320,7 @@ PbrtTexture PbrtBuilder::imagemap(const std::string& name, const PbrtParams& p, 
   const std::string context = fmt::format("{}:{}: Texture", p.source, p.line);
   try {
     t.image = textures_->load(resolve(p, "filename", file), enc, w, w, context, {},
-                              is_float ? TextureContent::data : TextureContent::color);
+                              is_float ? TextureContent::data : TextureContent::color_own_gamut);
   } catch (const IoError& e) {
     throw IoError(fmt::format("{}: {}", context, e.what()));
   }

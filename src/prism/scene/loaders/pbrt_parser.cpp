@@ -305,6 +305,13 @@ void PbrtBuilder::film(const std::string& type, const PbrtParams& p) {
 
 Scene PbrtBuilder::finish() {
   textures_->finish();  // the images, decoded together, before the checks of the whole file
+  // pbrt-v4's image textures keep their file's colour space: an OpenEXR in wider primaries
+  // than Rec.709 was read into Rec.2020 or ACEScg (TextureContent::color_own_gamut), and
+  // the material's base colour is in that space (its factor, an imagemap's "scale", is grey
+  // in every space).
+  for (Material& m : scene_.materials)
+    if (m.base_color_texture >= 0)
+      m.base_color_space = scene_.textures[static_cast<std::size_t>(m.base_color_texture)].texel_space;
   if (!stack_.empty()) throw SceneError(fmt::format("{} AttributeBegin without AttributeEnd", stack_.size()));
   if (current_object_) throw SceneError(fmt::format("ObjectBegin '{}' without ObjectEnd", *current_object_));
   bool any_object_mesh = false;

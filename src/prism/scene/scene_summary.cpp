@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include "prism/scene/emission.h"
 #include "prism/scene/surface_alpha.h"
 
 namespace prism {
@@ -102,7 +103,11 @@ std::string format_scene_summary(const Scene& scene) {
                           : !t.has_codes()                        ? "float"
                           : t.encoding == TextureEncoding::srgb ? "8-bit sRGB"
                                                                 : "8-bit linear";
-    out += fmt::format("  texture {} {}x{}x{} {} {}\n", t.name, t.width, t.height, t.channels, storage,
+    // Texels outside Rec.709's primaries (an OpenEXR kept in a wide-gamut material's space)
+    // say which.
+    const std::string space =
+        t.texel_space == ColorPickerSpace::srgb ? std::string() : fmt::format(" {}", picker_space_label(t.texel_space));
+    out += fmt::format("  texture {} {}x{}x{} {}{} {}\n", t.name, t.width, t.height, t.channels, storage, space,
                        mebibytes(t.memory_bytes()));
   }
   const auto camera_line = [](const Camera& c) {

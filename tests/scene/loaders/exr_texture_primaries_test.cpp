@@ -16,6 +16,7 @@
 #include "prism/scene/loaders/json_scene.h"
 #include "prism/scene/loaders/pbrt_scene.h"
 #include "prism/scene/loaders/texture_png.h"
+#include "prism/scene/scene_summary.h"
 #include "prism/scene/texture_file.h"
 #include "scene/loaders/loader_test_files.h"
 #include "support/scratch_folder.h"
@@ -225,6 +226,11 @@ TEST(ExrTexturePrimaries, JsonWideGamutMaterialReadsItsOpenExrInItsSpace) {
   EXPECT_EQ(scene.materials[2].base_color_texture, scene.materials[3].base_color_texture);
   EXPECT_EQ(scene.textures[static_cast<std::size_t>(scene.materials[2].base_color_texture)].texel_space,
             ColorPickerSpace::srgb);
+  // `prism info` says which texture is held in ACEScg, and only that one.
+  const std::string summary = format_scene_summary(scene);
+  EXPECT_NE(summary.find("albedo.exr 3x1x3 float ACEScg"), std::string::npos) << summary;
+  EXPECT_NE(summary.find("albedo.exr 3x1x3 float 0"), std::string::npos) << summary;
+  EXPECT_EQ(summary.find("sRGB Rec.709"), std::string::npos) << summary;  // the PNG's line says none
 }
 
 // The scene writers' PNGs are read back as Rec.709: a texture held in ACEScg goes back to

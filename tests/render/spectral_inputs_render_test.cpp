@@ -26,15 +26,6 @@ Scene facing_floor(const Material& material) {
   return scene;
 }
 
-RenderSettings small_render(TransportKind kind) {
-  RenderSettings s;
-  s.width = s.height = 16;
-  s.samples_per_pixel = 64;
-  s.path.max_depth = 1;
-  s.transport.kind = kind;
-  return s;
-}
-
 Material emitter(const color::PiecewiseLinearSpectrum& spd) {
   Material m;
   m.base_color = Vec3f(0.0f);
@@ -61,13 +52,13 @@ TEST(SpectralInputsRender, EmitterSpdIsBalancedToTheWorkingWhiteInSpectralTransp
   for (const char* name : {"D65", "F11", "A"}) {
     const color::PiecewiseLinearSpectrum spd = *named_emission_spectrum(name);
     const Vec3d balanced = color::spectrum_to_xyz([&](double nm) { return spd(nm) / d65(nm); });
-    const Film film = render(facing_floor(emitter(spd)), small_render(TransportKind::spectral)).film;
+    const Film film = render(facing_floor(emitter(spd)), test::floor_from_above_render_settings(TransportKind::spectral)).film;
     expect_within_noise(film, balanced * (kLuminanceNits / balanced.y), name);
   }
   // Without the balance D65 would film as D65's own XYZ, 5 % less x and 9 % more z than
   // white: far outside the bound above (σ is below 0.5 % here).
   const Film d65_film =
-      render(facing_floor(emitter(*named_emission_spectrum("D65"))), small_render(TransportKind::spectral)).film;
+      render(facing_floor(emitter(*named_emission_spectrum("D65"))), test::floor_from_above_render_settings(TransportKind::spectral)).film;
   const auto e = test::block_estimate(d65_film, 0, 0, 16, 16);
   EXPECT_NEAR(e.mean.x / e.mean.y, 1.0, 0.01);
   EXPECT_NEAR(e.mean.z / e.mean.y, 1.0, 0.01);
@@ -81,7 +72,7 @@ TEST(SpectralInputsRender, EmitterSpdIsItsXyzInRgbTransport) {
     const color::PiecewiseLinearSpectrum spd = *named_emission_spectrum(name);
     const Vec3d xyz = color::spectrum_to_xyz(spd);
     const Vec3d expected = srgb.xyz_to_rgb * (xyz * (kLuminanceNits / xyz.y));
-    const Film film = render(facing_floor(emitter(spd)), small_render(TransportKind::rgb)).film;
+    const Film film = render(facing_floor(emitter(spd)), test::floor_from_above_render_settings(TransportKind::rgb)).film;
     const Vec3d mean = test::block_estimate(film, 0, 0, 16, 16).mean;
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], expected[c], 1e-5 * kLuminanceNits) << name << " channel " << c;
   }
@@ -105,12 +96,12 @@ TEST(SpectralInputsRender, MeasuredReflectanceUnderWhiteLight) {
   scene.lights.push_back(sun);
   const double white_nits = 50.0 / std::numbers::pi;
 
-  const Film spectral = render(scene, small_render(TransportKind::spectral)).film;
+  const Film spectral = render(scene, test::floor_from_above_render_settings(TransportKind::spectral)).film;
   const Vec3d xyz_r = color::spectrum_to_xyz(red);
   const double y_bar_integral = color::spectrum_to_xyz([](double) { return 1.0; }).y;
   expect_within_noise(spectral, xyz_r * (white_nits / y_bar_integral), "spectral");
 
-  const Film rgb = render(scene, small_render(TransportKind::rgb)).film;
+  const Film rgb = render(scene, test::floor_from_above_render_settings(TransportKind::rgb)).film;
   const Vec3d expected =
       color::spectral_xyz_to_rgb_matrix(color::color_space("srgb")) * xyz_r * (white_nits / y_bar_integral);
   const Vec3d mean = test::block_estimate(rgb, 0, 0, 16, 16).mean;

@@ -29,11 +29,7 @@ Scene lit_floor(const Vec3f& albedo) {
 }
 
 RenderSettings small_render(TransportKind kind, Upsampling upsampling) {
-  RenderSettings s;
-  s.width = s.height = 16;
-  s.samples_per_pixel = 64;
-  s.path.max_depth = 1;
-  s.transport.kind = kind;
+  RenderSettings s = test::floor_from_above_render_settings(kind);
   s.transport.upsampling = upsampling;
   return s;
 }

@@ -72,11 +72,7 @@ Material diffuse(const Case& c) {
 }
 
 RenderSettings small_render(TransportKind kind, const std::string& working_space = "srgb") {
-  RenderSettings s;
-  s.width = s.height = 16;
-  s.samples_per_pixel = 64;
-  s.path.max_depth = 1;
-  s.transport.kind = kind;
+  RenderSettings s = test::floor_from_above_render_settings(kind);
   s.transport.working_space = working_space;
   return s;
 }

@@ -50,6 +50,15 @@ Scene make_grey_floor_seen_from_above(float eye_height, float fov_degrees) {
   return scene;
 }
 
+RenderSettings floor_from_above_render_settings(TransportKind kind) {
+  RenderSettings s;
+  s.width = s.height = 16;
+  s.samples_per_pixel = 64;
+  s.path.max_depth = 1;
+  s.transport.kind = kind;
+  return s;
+}
+
 Scene make_floor_under_overhead_sun(const Material& material, float illuminance_lux) {
   Scene scene = make_grey_floor_seen_from_above(5.0f, 30.0f);
   scene.meshes[0].uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};

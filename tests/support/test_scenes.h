@@ -15,6 +15,11 @@ Scene make_emitting_enclosure(float albedo, float emitted);
 // +z) with the given field of view. No lights: tests add theirs.
 Scene make_grey_floor_seen_from_above(float eye_height, float fov_degrees);
 
+// Settings for renders of these floors (make_grey_floor_seen_from_above's, the one below):
+// 16² pixels, 64 spp, direct light only (max depth 1), `kind` transport in the default
+// working space and upsampling.
+RenderSettings floor_from_above_render_settings(TransportKind kind);
+
 // That floor seen from 5 units above with a 30° field of view (every camera ray within 15°
 // of the normal), with uvs (u along +x, v along +z), wearing `material` and lit straight
 // down by a white directional light of `illuminance_lux`: a Lambertian albedo ρ films as

@@ -53,9 +53,10 @@ struct Material {
   int base_color_texture = -1;   // index into Scene::textures; multiplies base_color
   // The primaries base_color is given with (white (1, 1, 1) is the perfect reflector in
   // each): wide-gamut albedos reach colours outside Rec.709 (render/color_context.h upsamples
-  // them with their own space's table). A texture's texels, Rec.709, are converted to this
-  // space and multiply base_color there (exact for grey factors; glTF's product otherwise
-  // has no meaning across spaces). srgb where base_color_spectrum is given.
+  // them with their own space's table). A texture's texels (Rec.709, or an OpenEXR's held in
+  // a wide space, TextureImage::texel_space) are converted to this space and multiply
+  // base_color there (exact for grey factors; glTF's product otherwise has no meaning
+  // across spaces). srgb where base_color_spectrum is given.
   ColorPickerSpace base_color_space = ColorPickerSpace::srgb;
   // Measured reflectance in [0, 1] instead of an RGB base colour (no texture then);
   // base_color holds its colour under a white light (scene/spectral_inputs.h).

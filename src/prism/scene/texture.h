@@ -111,9 +111,10 @@ struct TextureImage {
   // The primaries of a colour texture's RGB texels: Rec.709 (srgb), or the wide-gamut
   // space an OpenEXR was read into for a material's base colour (TextureContent).
   ColorPickerSpace texel_space = ColorPickerSpace::srgb;
-  // Set when an OpenEXR colour texture's texels fell outside the gamut they were converted
-  // into at load (from its chromaticities attribute) and were clipped: how many, for the
-  // loader's warnings. Empty otherwise.
+  // Set when an OpenEXR colour texture in other primaries than Rec.709 was converted at
+  // load (from its chromaticities attribute), or when texels fell outside the gamut they
+  // were converted into and were clipped: what was done and how many, for the loader's
+  // warnings. Empty otherwise.
   std::string primaries_note{};
 
   bool has_codes() const { return !codes.empty(); }

@@ -492,10 +492,14 @@ bool same_primaries(const Imf::Chromaticities& c, const color::ColorSpace& space
   return true;
 }
 
-// The colour space of the primaries an OpenEXR's `chromaticities` attribute names. A file
-// without the attribute has OpenEXR's default, Rec.709 with D65.
-color::ColorSpace openexr_primaries(const Imf::Header& header, const std::string& name) {
-  const Imf::Chromaticities c = Imf::hasChromaticities(header) ? Imf::chromaticities(header) : Imf::Chromaticities();
+// The primaries an OpenEXR's `chromaticities` attribute names: a file without the
+// attribute has OpenEXR's default, Rec.709 with D65.
+Imf::Chromaticities file_chromaticities(const Imf::Header& header) {
+  return Imf::hasChromaticities(header) ? Imf::chromaticities(header) : Imf::Chromaticities();
+}
+
+// The colour space of an OpenEXR's chromaticities (file_chromaticities).
+color::ColorSpace openexr_primaries(const Imf::Chromaticities& c, const std::string& name) {
   try {
     return color::make_color_space(name, {c.red.x, c.red.y}, {c.green.x, c.green.y}, {c.blue.x, c.blue.y},
                                    {c.white.x, c.white.y});
@@ -504,22 +508,13 @@ color::ColorSpace openexr_primaries(const Imf::Header& header, const std::string
   }
 }
 
-// The matrix taking an OpenEXR colour texture's RGB into `target` (Bradford between
-// whites), where the primaries its `chromaticities` attribute names differ from the
-// target's.
-std::optional<Mat3> openexr_conversion(const Imf::Header& header, const color::ColorSpace& target,
-                                       const std::string& name) {
-  const Imf::Chromaticities c = Imf::hasChromaticities(header) ? Imf::chromaticities(header) : Imf::Chromaticities();
-  if (same_primaries(c, target)) return std::nullopt;
-  return color::conversion_matrix(openexr_primaries(header, name), target);
-}
-
 // Converts an RGB OpenEXR texture's texels (halves or floats) by `conversion` into
 // `target`, clipping what falls below 0 (colours outside the target's gamut, which a texel
 // there cannot hold), and says what it did in the image's primaries_note: for a file in
 // other primaries than Rec.709, and where anything was clipped. A Rec.709 file (labelled,
 // or without the attribute) going into a wider space loses nothing and gets no note.
-void convert_texels(TextureImage& image, const Mat3& conversion, ColorPickerSpace target, const Imf::Header& header) {
+void convert_texels(TextureImage& image, const Mat3& conversion, ColorPickerSpace target,
+                    const Imf::Chromaticities& c) {
   const std::size_t texels = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
   std::size_t clipped = 0;
   const auto convert = [&](Vec3d rgb) {
@@ -542,7 +537,6 @@ void convert_texels(TextureImage& image, const Mat3& conversion, ColorPickerSpac
   const char* label = picker_space_label(target);
   const std::string clip_note =
       clipped ? fmt::format("; {} of {} texels lie outside {} and were clipped to it", clipped, texels, label) : "";
-  const Imf::Chromaticities c = Imf::hasChromaticities(header) ? Imf::chromaticities(header) : Imf::Chromaticities();
   if (same_primaries(c, color::color_space("srgb"))) {
     if (clipped) image.primaries_note = fmt::format("texture '{}': Rec.709 RGB converted to {}{}", image.name, label, clip_note);
     return;
@@ -584,13 +578,18 @@ TextureImage read_openexr(const std::filesystem::path& path, std::span<const uns
   }
   TextureImage image = read_openexr_texels(path, layout, width, height);
   if (is_color_content(content) && image.channels == 3) {
+    // The file's colour space is built once, both to choose the target and to convert; a
+    // conversion is needed where the primaries differ from the target's (Bradford between
+    // whites).
+    const Imf::Chromaticities c = file_chromaticities(*header);
+    const color::ColorSpace file_space = openexr_primaries(c, name);
     const ColorPickerSpace target =
-        content == TextureContent::color_own_gamut ? smallest_picker_space_holding(openexr_primaries(*header, name))
-                                                   : requested_space(content);
-    if (const auto conversion = openexr_conversion(*header, picker_color_space(target), name))
-      convert_texels(image, *conversion, target, *header);
-    else
+        content == TextureContent::color_own_gamut ? smallest_picker_space_holding(file_space) : requested_space(content);
+    const color::ColorSpace& target_space = picker_color_space(target);
+    if (same_primaries(c, target_space))
       image.texel_space = target;
+    else
+      convert_texels(image, color::conversion_matrix(file_space, target_space), target, c);
   }
   return image;
 }

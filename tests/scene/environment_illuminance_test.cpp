@@ -69,7 +69,7 @@ TEST(EnvironmentIlluminance, OnlyTheHemisphereTheSurfaceFacesCounts) {
   EXPECT_NEAR(lux(Vec3f(1, 0, 0)), kPi / 2.0, 1.5e-3 * kPi);  // edge-on: a quarter of the sphere
 }
 
-TEST(EnvironmentIlluminance, LuminanceWeightsTheChannelsAsRec709) {
+TEST(EnvironmentIlluminance, LuminanceWeightsTheChannelsAsTheTexelsSpace) {
   // A pure green sky: Y = 0.7152 G (Rec.709 / sRGB primaries, D65).
   TextureImage green = constant_map(64, 64, 0.0f);
   for (std::size_t i = 1; i < green.texels.size(); i += 3) green.texels[i] = 1.0f;
@@ -77,6 +77,15 @@ TEST(EnvironmentIlluminance, LuminanceWeightsTheChannelsAsRec709) {
   EXPECT_NEAR(lux / environment_illuminance_lux(constant_map(64, 64, 1.0f), EnvironmentMapping::equal_area_octahedral,
                                                 Vec3f(0, 0, 1)),
               0.7152, 1e-4);
+  // A map whose texels are ACEScg (an OpenEXR kept in its own gamut): AP1's luminance row,
+  // Y = 0.2722287168 R + 0.6740817658 G + 0.0536895174 B (SMPTE ST 2065-1 / ACES
+  // S-2014-004's AP1 → XYZ matrix), so the same green texels shed 0.6741 of a white's.
+  green.texel_space = ColorPickerSpace::acescg;
+  TextureImage white = constant_map(64, 64, 1.0f);
+  white.texel_space = ColorPickerSpace::acescg;
+  EXPECT_NEAR(environment_illuminance_lux(green, EnvironmentMapping::equal_area_octahedral, Vec3f(0, 0, 1)) /
+                  environment_illuminance_lux(white, EnvironmentMapping::equal_area_octahedral, Vec3f(0, 0, 1)),
+              0.6740817658, 1e-4);
   // Grey images carry luminance in their one channel.
   TextureImage grey;
   grey.width = grey.height = 64;

@@ -99,6 +99,33 @@ TEST(EnvironmentLight, OctahedralDensityIsLuminanceOverMeanOver4Pi) {
     }
 }
 
+// The density follows the luminance of the space the texels are in: an ACEScg map (an
+// OpenEXR kept in its own gamut) is weighted by AP1's luminance row (ACES S-2014-004's
+// AP1 → XYZ matrix), not Rec.709's, which would put 2 % more density on this map's bluer
+// texels relative to its redder ones.
+TEST(EnvironmentLight, DensityWeightsTexelsByTheLuminanceOfTheirSpace) {
+  Scene scene = octahedral_sky_scene();
+  scene.textures[0].texel_space = ColorPickerSpace::acescg;
+  const LightSampler lights(scene, scene_bounds(scene));
+  const TextureImage& t = scene.textures[0];
+  const Vec3d ap1_y(0.2722287168, 0.6740817658, 0.0536895174);
+  const auto luminance = [&](int x, int y) {
+    const float* p = &t.texels[(static_cast<std::size_t>(y) * t.width + x) * 3];
+    return dot(ap1_y, Vec3d(p[0], p[1], p[2]));
+  };
+  double mean = 0.0;
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) mean += luminance(x, y) / (kSize * kSize);
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const auto hits = lights.escaped(texel_centre_direction(x, y));
+      ASSERT_EQ(hits.size(), 1u);
+      // As above: float rounding of the CDF, and the 10 digits of the published matrix.
+      const double expected = luminance(x, y) / mean / (4.0 * std::numbers::pi);
+      EXPECT_NEAR(hits[0].pdf, expected, 1e-5 * expected + 1e-9) << x << " " << y;
+    }
+}
+
 TEST(EnvironmentLight, OctahedralSamplesFollowTheirDensity) {
   // Bin the sampled directions by the texel they fall in. Each texel of an equal-area map
   // subtends exactly 4π / (W H) sr and the density is constant on it, so its expected

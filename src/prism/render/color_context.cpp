@@ -71,6 +71,11 @@ std::array<Mat3, 3> conversions_to(const color::ColorSpace& target) {
   return out;
 }
 
+ColorPickerSpace environment_space(const Scene& scene) {
+  const TextureImage* map = environment_map(scene);
+  return map ? map->texel_space : ColorPickerSpace::srgb;
+}
+
 }  // namespace
 
 color::ColorSpace film_color_space(const TransportSettings& settings) {
@@ -88,6 +93,7 @@ color::ColorSpace film_color_space(const TransportSettings& settings) {
 template <int N>
 ColorContext<SpectralMode<N>>::ColorContext(const Scene& scene, const TransportSettings& settings)
     : settings_(settings),
+      environment_space_(environment_space(scene)),
       to_film_(conversions_to(film_color_space(settings))),
       srgb_table_(&color::JakobHanikaTable::get("srgb")),
       to_srgb_(conversions_to(color::color_space("srgb"))) {
@@ -95,6 +101,8 @@ ColorContext<SpectralMode<N>>::ColorContext(const Scene& scene, const TransportS
   // to Rec.709. Mallett–Yuksel's basis is sRGB's: the colour converted, clipped there.
   // The wide-gamut tables are found only where a material needs them (each is megabytes).
   tables_ = {srgb_table_, nullptr, nullptr};
+  if (const std::size_t space = static_cast<std::size_t>(environment_space_); !tables_[space])
+    tables_[space] = &color::JakobHanikaTable::get(picker_space_name(environment_space_));
   for (const Material& m : scene.materials) {
     const std::size_t space = static_cast<std::size_t>(m.base_color_space);
     if (!tables_[space]) tables_[space] = &color::JakobHanikaTable::get(picker_space_name(m.base_color_space));
@@ -153,11 +161,14 @@ Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::mallett_yuksel_base_col
 }
 
 template <int N>
-Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::rgb_radiance(const Vec3f& rgb, const Wavelengths<Mode>& w) const {
+Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::rgb_radiance(const Vec3f& rgb, const Wavelengths<Mode>& w,
+                                                                       ColorPickerSpace space) const {
   Spectrum<Mode> s;
   const float m = std::max({rgb.x, rgb.y, rgb.z});
   if (!(m > 0.0f)) return s;
-  const color::SigmoidPolynomial c = srgb_table_->lookup(Vec3d(rgb / (2.0f * m)));
+  // Every space's table is fitted relative to E from its own white, so a grey is the flat
+  // ½ in each, and the scaling below holds whatever the space.
+  const color::SigmoidPolynomial c = tables_[static_cast<std::size_t>(space)]->lookup(Vec3d(rgb / (2.0f * m)));
   // 683 ∫ L ȳ ≈ Y(rgb): L(λ) = 2m s(λ) / (683 ∫ ȳ), exact for greys (s = ½).
   const double k = 2.0 * m / (color::kMaxLuminousEfficacyLmPerW * color::cie1931_y_integral());
   s = Spectrum<Mode>(color::evaluate_sigmoid_polynomial(c, w.wavelength_nm, static_cast<float>(k)));
@@ -175,7 +186,8 @@ template class ColorContext<SpectralMode<3>>;
 template class ColorContext<SpectralMode<4>>;
 template class ColorContext<SpectralMode<8>>;
 
-ColorContext<RgbMode>::ColorContext(const Scene& scene, const TransportSettings& settings) {
+ColorContext<RgbMode>::ColorContext(const Scene& scene, const TransportSettings& settings)
+    : environment_space_(environment_space(scene)) {
   const color::ColorSpace& working = color::color_space(settings.working_space);
   to_working_ = conversions_to(working);
   const Mat3 film_to_working = color::spectral_xyz_to_rgb_matrix(working);

@@ -3,15 +3,18 @@
 // colours (sRGB reflectances, emitters in a colour-picker space with a luminance) become
 // per-path spectra, and how a path's radiance becomes film values.
 //   spectral: channels are N sampled wavelengths; reflectances are upsampled (Jakob–Hanika
-//             2019 table of the material's base-colour space, sRGB for textures and other
-//             colours, fitted relative to E so that a flat white light films the colour
+//             2019 table of the material's base-colour space, of an environment map's
+//             texel space for its radiance, sRGB for other textures and colours, fitted
+//             relative to E so that a flat white light films the colour
 //             itself; or Mallett–Yuksel 2019, whose sRGB basis takes wide-gamut colours
 //             clipped to Rec.709); emitters follow the emission rule of
 //             color/emission_spectrum.h (E-relative); the film holds 683·XYZ (Y in nits),
 //             relative to illuminant E.
 //   rgb:      channels are the working space's R, G, B; reflectances are converted from
 //             their primaries (Bradford between whites; a wide-gamut one clipped to the
-//             working gamut, where spectral transport renders it whole); emitters from their picker space (Bradford); the film holds
+//             working gamut, where spectral transport renders it whole; an environment
+//             map's radiance likewise from its texel space); emitters from their picker
+//             space (Bradford); the film holds
 //             working RGB with Y in nits.
 // Spectra a scene gives as data (scene/spectral_inputs.h) are white-balanced to the working
 // white W, the same convention the emission rule follows for colours:
@@ -68,11 +71,17 @@ class ColorContext<SpectralMode<N>> {
   Spectrum<Mode> base_color(std::uint32_t material, const Wavelengths<Mode>& w) const;
   // Emitted radiance (or intensity / illuminance for delta lights) of an emitter.
   Spectrum<Mode> emission(std::uint32_t emitter, const Wavelengths<Mode>& w) const;
-  // Radiance given as linear Rec.709 RGB in nits (environment texels): upsampled with the
-  // Jakob–Hanika sRGB table (E-relative, like the emission rule) at half the largest
-  // channel and scaled so that a grey texel becomes the flat spectrum of the same
-  // luminance; a colour films as itself to the table's accuracy.
-  Spectrum<Mode> rgb_radiance(const Vec3f& linear_rec709_nits, const Wavelengths<Mode>& w) const;
+  // Radiance given as linear RGB in nits in `space` (texels of emission textures, Rec.709;
+  // of environment maps, their own): upsampled with that space's Jakob–Hanika table
+  // (E-relative, like the emission rule) at half the largest channel and scaled so that a
+  // grey texel becomes the flat spectrum of the same luminance; a colour films as itself
+  // to the table's accuracy.
+  Spectrum<Mode> rgb_radiance(const Vec3f& linear_nits, const Wavelengths<Mode>& w,
+                              ColorPickerSpace space = ColorPickerSpace::srgb) const;
+  // An environment map's texel radiance (LightSample::rgb), in the map's texel space.
+  Spectrum<Mode> environment_radiance(const Vec3f& linear_nits, const Wavelengths<Mode>& w) const {
+    return rgb_radiance(linear_nits, w, environment_space_);
+  }
   Vec3d to_film(const Spectrum<Mode>& value, const Wavelengths<Mode>& w) const;
   // A linear reflectance in `space` (the albedo AOV) as film values: CIE XYZ relative to E,
   // with Bradford adaptation from the space's white, so a white reflector is (1, 1, 1).
@@ -97,12 +106,14 @@ class ColorContext<SpectralMode<N>> {
   }
 
   TransportSettings settings_;
+  ColorPickerSpace environment_space_;  // environment_map(scene)'s texel space
   std::array<Mat3, 3> to_film_;  // per ColorPickerSpace
   // The sRGB upsampling table, found once: JakobHanikaTable::get looks the space up by
   // name and takes a lock, which every textured shading point and environment lookup
   // paid (and every thread contended for) when it was called per lookup.
   const color::JakobHanikaTable* srgb_table_;
-  // Per ColorPickerSpace; null for a space no material's base colour is in.
+  // Per ColorPickerSpace; null for a space no material's base colour nor the environment
+  // map is in.
   std::array<const color::JakobHanikaTable*, 3> tables_;
   std::array<Mat3, 3> to_srgb_;                           // per ColorPickerSpace (Mallett–Yuksel)
   std::vector<color::SigmoidPolynomial> base_color_jh_;
@@ -151,8 +162,15 @@ class ColorContext<RgbMode> {
                              ColorPickerSpace space = ColorPickerSpace::srgb) const;
   Spectrum<Mode> base_color(std::uint32_t material, const Wavelengths<Mode>&) const { return base_colors_[material]; }
   Spectrum<Mode> emission(std::uint32_t emitter, const Wavelengths<Mode>&) const { return emitters_[emitter]; }
-  Spectrum<Mode> rgb_radiance(const Vec3f& linear_rec709_nits, const Wavelengths<Mode>& w) const {
-    return reflectance(linear_rec709_nits, w);  // the same sRGB → working conversion
+  // The same conversion to the working space as reflectances': negative radiance is no
+  // more physical than a negative albedo, so a wide-gamut colour is clipped to the working
+  // gamut.
+  Spectrum<Mode> rgb_radiance(const Vec3f& linear_nits, const Wavelengths<Mode>& w,
+                              ColorPickerSpace space = ColorPickerSpace::srgb) const {
+    return reflectance(linear_nits, w, space);
+  }
+  Spectrum<Mode> environment_radiance(const Vec3f& linear_nits, const Wavelengths<Mode>& w) const {
+    return rgb_radiance(linear_nits, w, environment_space_);
   }
   Vec3d to_film(const Spectrum<Mode>& value, const Wavelengths<Mode>&) const { return {value[0], value[1], value[2]}; }
   // A linear reflectance in `space` (the albedo AOV) in the working space.
@@ -162,6 +180,7 @@ class ColorContext<RgbMode> {
   void terminate_secondary(Wavelengths<Mode>&) const {}
 
  private:
+  ColorPickerSpace environment_space_;  // environment_map(scene)'s texel space
   std::array<Mat3, 3> to_working_;  // per ColorPickerSpace; [srgb] converts textures and tints
   std::vector<Spectrum<Mode>> base_colors_;
   std::vector<Spectrum<Mode>> emitters_;

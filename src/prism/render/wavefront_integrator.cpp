@@ -355,7 +355,7 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     lights_.visit_escaped(ray.direction, [&](const LightSampler::EscapedHit& e) {
       float w = 1.0f;
       if (!p.prev_specular[slot] && use_nee) w = weight_bsdf_hits ? power_heuristic(p.prev_pdf[slot], e.pdf) : 0.0f;
-      const Spectrum<Mode> Le = e.has_rgb ? colors_.rgb_radiance(e.rgb, wl) : colors_.emission(e.emitter, wl) * e.scale;
+      const Spectrum<Mode> Le = e.has_rgb ? colors_.environment_radiance(e.rgb, wl) : colors_.emission(e.emitter, wl) * e.scale;
       L += beta * Le * w;
     });
     p.finished[slot] = 1;
@@ -468,7 +468,7 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
           }
           p.shadow_ray[slot] = Ray{origin, dir, 0.0f, t_max};
           const Spectrum<Mode> Le =
-              ls->has_rgb ? colors_.rgb_radiance(ls->rgb, wl)
+              ls->has_rgb ? colors_.environment_radiance(ls->rgb, wl)
                           : emitted_radiance(ls->emitter, ls->has_uv, ls->uv, 0.0f, wl) * ls->scale;
           p.shadow_contribution[slot] = beta * f * Le * (std::abs(wi_local.z) * w / ls->pdf);
           // A light inside the same absorbing medium: the shadow ray's whole length runs

@@ -1,13 +1,14 @@
 #include "prism/scene/environment_illuminance.h"
 
 #include "prism/color/color_space.h"
+#include "prism/scene/emission.h"
 #include "prism/scene/environment_mapping.h"
 
 namespace prism {
 
 double environment_illuminance_lux(const TextureImage& map, EnvironmentMapping mapping, const Vec3f& normal) {
   if (map.width <= 0 || map.height <= 0 || map.channels <= 0) return 0.0;
-  const Vec3d y_row = color::color_space("srgb").rgb_to_xyz.row(1);  // Rec.709 luminance weights
+  const Vec3d y_row = picker_color_space(map.texel_space).rgb_to_xyz.row(1);  // the texels' space's luminance weights
   const double texels = double(map.width) * double(map.height);
   double lux = 0.0;
   for (int y = 0; y < map.height; ++y)

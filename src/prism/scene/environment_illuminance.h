@@ -13,7 +13,7 @@ namespace prism {
 // The map's illuminance (lux per nit of texel value) on a surface with unit normal
 // `normal` in the map's own frame: the midpoint rule over texel centres, each texel
 // weighted by its solid angle (environment_solid_angle_per_uv_area / texel count), its
-// luminance from linear Rec.709 RGB (grey for one- and two-channel images).
+// luminance from linear RGB in the map's texel_space (grey for one- and two-channel images).
 double environment_illuminance_lux(const TextureImage& map, EnvironmentMapping mapping, const Vec3f& normal);
 
 }  // namespace prism

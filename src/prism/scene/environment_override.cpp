@@ -52,7 +52,7 @@ void apply_environment_override(Scene& scene, const EnvironmentOverride& o, cons
     // Read before the scene changes, so a bad file leaves the scene as it was.
     TextureImage image =
         read_texture_file(path, encoding_of(path), TextureLimits(options.max_texture_dimension, options.memory_budget),
-                          TextureContent::color);
+                          TextureContent::color_own_gamut);
     if (!image.primaries_note.empty()) scene.warnings.push_back(image.primaries_note);
     scene.textures.push_back(std::move(image));
     light.environment_texture = static_cast<int>(scene.textures.size() - 1);

@@ -294,7 +294,8 @@ Vec3f texel_rgb(const TextureImage& t, Vec2f uv) {
 double LightSampler::build_environment_distribution(const Emitter& e) {
   if (!e.texture) return 1.0;
   const TextureImage& t = *e.texture;
-  const Vec3d y_row = color::color_space("srgb").rgb_to_xyz.row(1);  // luminance weights
+  // Luminance weights of the space the texels are in (an OpenEXR keeps its own gamut).
+  const Vec3d y_row = picker_color_space(t.texel_space).rgb_to_xyz.row(1);
   double weighted = 0.0, weight = 0.0;
   // Row by row (rows in order, so the sums are those of one pass over the image).
   environment_distribution_ = PiecewiseConstant2D(t.width, t.height, [&](int y, std::span<float> row) {

@@ -41,7 +41,7 @@ struct LightSample {
   float scale = 1.0f;       // multiplies the emitter's spectrum: 1/r² and spot falloff, or sun-disc radiance
   Vec3f position;           // sampled point (shadow-ray target); unused for directional lights
   Vec3f normal;             // emitter normal at the point (area lights)
-  bool has_rgb = false;     // environment: radiance is `rgb` (linear Rec.709, nits) times the emitter's tint
+  bool has_rgb = false;     // environment map: radiance is `rgb` (linear, nits, in the map's texel_space)
   Vec3f rgb;
   bool has_uv = false;      // triangle of an emitter with an emission texture: `uv` at `position`
   Vec2f uv;

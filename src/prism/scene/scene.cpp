@@ -15,6 +15,15 @@ std::size_t Scene::triangle_count() const {
   return n;
 }
 
+const TextureImage* environment_map(const Scene& scene) {
+  for (const Light& l : scene.lights) {
+    if (l.type != LightType::environment) continue;
+    const bool textured = l.environment_texture >= 0 && static_cast<std::size_t>(l.environment_texture) < scene.textures.size();
+    return textured ? &scene.textures[static_cast<std::size_t>(l.environment_texture)] : nullptr;
+  }
+  return nullptr;
+}
+
 void validate_scene(const Scene& scene) {
   if (scene.meshes.empty() || scene.triangle_count() == 0)
     throw SceneError(fmt::format("scene '{}' has no triangles", scene.name));

@@ -74,6 +74,11 @@ struct Scene {
   std::size_t triangle_count() const;
 };
 
+// The map of the scene's environment: the first environment light's texture (the light
+// sampler lights the scene with the first environment only), or null for none or a
+// constant sky. Its texel_space is the space its texels' radiance is in.
+const TextureImage* environment_map(const Scene& scene);
+
 // Throws SceneError when indices are out of range, a material index is invalid,
 // positions are not finite, the scene has no geometry, a spectrum is malformed
 // (validate_spectrum) or an environment light has one.

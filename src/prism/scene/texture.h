@@ -64,7 +64,8 @@ constexpr bool is_alpha_channel(int channel, int channels) {
 // keeping the colours outside Rec.709 that it holds. color_own_gamut keeps an OpenEXR in
 // the first of Rec.709, Rec.2020 and ACEScg whose gamut holds its primaries (pbrt-v4's
 // image textures keep their file's colour space; the material then takes the texture's,
-// pbrt_parser.cpp). 8-bit and .hdr images have no primaries attribute here and stay
+// pbrt_parser.cpp; every loader's environment maps, whose radiance the renderer takes from
+// that space, render/color_context.h). 8-bit and .hdr images have no primaries attribute here and stay
 // Rec.709 whatever is asked (TextureImage::texel_space says where texels are).
 enum class TextureContent : std::uint8_t { color, data, color_acescg, color_rec2020, color_own_gamut };
 

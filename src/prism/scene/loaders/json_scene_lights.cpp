@@ -112,7 +112,10 @@ void JsonSceneReader::read_environment(const JsonValue& value) {
         value[key].fail("an environment with a 'texture' takes no colour: its texels are its colours");
   read_light_color(value, light);
   light.intensity = value["luminance_nits"].as_float(0.0f, 1e12f);
-  if (auto t = value.find("texture")) light.environment_texture = read_texture(*t, TextureEncoding::srgb);
+  // An OpenEXR sky keeps its file's gamut (the first of Rec.709, Rec.2020 and ACEScg that
+  // holds its primaries): an ACEScg HDRI's colours outside Rec.709 light the scene.
+  if (auto t = value.find("texture"))
+    light.environment_texture = read_texture(*t, TextureEncoding::srgb, {}, TextureContent::color_own_gamut);
   if (auto m = value.find("mapping")) {
     light.environment_mapping = m->as_enum<EnvironmentMapping>(
         {{"equirectangular", EnvironmentMapping::equirectangular},

@@ -102,10 +102,9 @@ std::filesystem::path JsonSceneReader::resolve(const JsonValue& file_name) const
 }
 
 int JsonSceneReader::read_texture(const JsonValue& value, TextureEncoding default_encoding,
-                                  TextureCache::ImageCheck check, ColorPickerSpace color_space) {
+                                  TextureCache::ImageCheck check, TextureContent colour_content) {
   // What the key reads is colour or data whatever encoding the file is given in.
-  const TextureContent content =
-      default_encoding == TextureEncoding::srgb ? color_content_in(color_space) : TextureContent::data;
+  const TextureContent content = default_encoding == TextureEncoding::srgb ? colour_content : TextureContent::data;
   if (value.is_string())
     return textures.load(resolve(value), default_encoding, TextureWrap::repeat, TextureWrap::repeat, {},
                          std::move(check), content);
@@ -246,7 +245,7 @@ void JsonSceneReader::read_material(const JsonValue& value) {
   if (min(m.base_color, Vec3f(0.0f)) != Vec3f(0.0f)) value["base_color"].fail("colour components must not be negative");
   if (auto s = value.find("base_color_space")) m.base_color_space = read_color_picker_space(*s);
   if (auto t = value.find("base_color_texture"))
-    m.base_color_texture = read_texture(*t, TextureEncoding::srgb, {}, m.base_color_space);
+    m.base_color_texture = read_texture(*t, TextureEncoding::srgb, {}, color_content_in(m.base_color_space));
   if (auto s = value.find("base_color_spectrum")) {
     if (value.has("base_color_space")) value.fail("give either 'base_color_space' or 'base_color_spectrum', not both");
     if (value.has("base_color")) value.fail("give either 'base_color' or 'base_color_spectrum', not both");

@@ -34,11 +34,12 @@ struct JsonSceneReader {
   std::filesystem::path resolve(const JsonValue& file_name) const;
   // A texture reference: "file.png" or {"file", "encoding", "wrap", "wrap_u", "wrap_v"}.
   // `default_encoding` says what the key reads: sRGB for colours, linear for data, which an
-  // "encoding" given in the file does not change (TextureContent); a colour in
-  // `color_space` (a wide-gamut material's base colour: an OpenEXR's texels are read into
-  // that space). `check` runs on the image once it is decoded (at the end of the load).
+  // "encoding" given in the file does not change (TextureContent); a colour is read as
+  // `colour_content` (a wide-gamut material's base colour asks for its space, an
+  // environment map keeps its own gamut: an OpenEXR's texels are read into that space).
+  // `check` runs on the image once it is decoded (at the end of the load).
   int read_texture(const JsonValue& value, TextureEncoding default_encoding, TextureCache::ImageCheck check = {},
-                   ColorPickerSpace color_space = ColorPickerSpace::srgb);
+                   TextureContent colour_content = TextureContent::color);
   // A spectrum given as data (json_scene_spectra.cpp): a name, a black body, points or a CSV
   // column; reflectances must lie in [0, 1], emission must be visible.
   color::PiecewiseLinearSpectrum read_spectrum(const JsonValue& value, SpectrumUse use) const;

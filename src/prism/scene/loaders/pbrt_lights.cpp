@@ -126,10 +126,11 @@ void PbrtBuilder::light_source(const std::string& type, const PbrtParams& p) {
       const std::string context = fmt::format("{}:{}: infinite light", p.source, p.line);
       try {
         // pbrt-v4 reads an 8- or 16-bit PNG as sRGB-encoded (Image::Read without an
-        // encoding); EXR and HDR are linear whatever is asked.
+        // encoding); EXR and HDR are linear whatever is asked. Its ImageInfiniteLight keeps
+        // the image's colour space (an EXR's chromaticities), as Prism's image textures do.
         light.environment_texture =
             textures_->load(resolve(p, "filename", file), TextureEncoding::srgb, TextureWrap::repeat,
-                            TextureWrap::repeat, context);
+                            TextureWrap::repeat, context, {}, TextureContent::color_own_gamut);
       } catch (const IoError& e) {
         throw IoError(fmt::format("{}: {}", context, e.what()));
       }

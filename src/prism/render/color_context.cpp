@@ -99,13 +99,18 @@ ColorContext<SpectralMode<N>>::ColorContext(const Scene& scene, const TransportS
       to_srgb_(conversions_to(color::color_space("srgb"))) {
   // A wide-gamut colour is upsampled with its own space's table: the sRGB one would clip it
   // to Rec.709. Mallett–Yuksel's basis is sRGB's: the colour converted, clipped there.
-  // The wide-gamut tables are found only where a material needs them (each is megabytes).
+  // The wide-gamut tables are found only where a material or the environment map needs
+  // them (each is megabytes).
   tables_ = {srgb_table_, nullptr, nullptr};
-  if (const std::size_t space = static_cast<std::size_t>(environment_space_); !tables_[space])
-    tables_[space] = &color::JakobHanikaTable::get(picker_space_name(environment_space_));
+  const auto need_table = [&](ColorPickerSpace space) {
+    if (!tables_[static_cast<std::size_t>(space)])
+      tables_[static_cast<std::size_t>(space)] = &color::JakobHanikaTable::get(picker_space_name(space));
+  };
+  need_table(environment_space_);
   for (const Material& m : scene.materials) {
+    if (m.emission.texture >= 0) need_table(m.emission.color_space);  // textured radiance (rgb_radiance)
     const std::size_t space = static_cast<std::size_t>(m.base_color_space);
-    if (!tables_[space]) tables_[space] = &color::JakobHanikaTable::get(picker_space_name(m.base_color_space));
+    need_table(m.base_color_space);
     base_color_jh_.push_back(tables_[space]->lookup(Vec3d(m.base_color)));
     const Vec3d srgb = m.base_color_space == ColorPickerSpace::srgb ? Vec3d(m.base_color)
                                                                     : max(to_srgb_[space] * Vec3d(m.base_color), Vec3d(0.0));
@@ -124,8 +129,12 @@ ColorContext<SpectralMode<N>>::ColorContext(const Scene& scene, const TransportS
       emitter_table_.back() = static_cast<std::int32_t>(spectrum_tables_.size());
       spectrum_tables_.push_back(balanced_emission_table(*e.spectrum, white.get(), e.value));
     }
-    const Vec3d rgb = color::conversion_matrix(picker_color_space(e.space), working) * Vec3d(e.color);
-    emitters_.push_back(e.value > 0.0f ? color::emission_spectrum(rgb, working, e.value) : color::EmissionSpectrum{});
+    // Fitted in the colour's own space (adapted from its white to E), not the working
+    // space's: a wide-gamut emitter outside the working gamut would be clipped there, and
+    // inside it the two agree (Bradford adaptations compose: white → working white → E is
+    // white → E).
+    emitters_.push_back(e.value > 0.0f ? color::emission_spectrum(Vec3d(e.color), picker_color_space(e.space), e.value)
+                                       : color::EmissionSpectrum{});
   }
 }
 

@@ -8,7 +8,8 @@
 //             relative to E so that a flat white light films the colour
 //             itself; or Mallett–Yuksel 2019, whose sRGB basis takes wide-gamut colours
 //             clipped to Rec.709); emitters follow the emission rule of
-//             color/emission_spectrum.h (E-relative); the film holds 683·XYZ (Y in nits),
+//             color/emission_spectrum.h (E-relative), fitted in their own colour space so
+//             that a wide-gamut lamp is not clipped to the working gamut; the film holds 683·XYZ (Y in nits),
 //             relative to illuminant E.
 //   rgb:      channels are the working space's R, G, B; reflectances are converted from
 //             their primaries (Bradford between whites; a wide-gamut one clipped to the
@@ -162,12 +163,17 @@ class ColorContext<RgbMode> {
                              ColorPickerSpace space = ColorPickerSpace::srgb) const;
   Spectrum<Mode> base_color(std::uint32_t material, const Wavelengths<Mode>&) const { return base_colors_[material]; }
   Spectrum<Mode> emission(std::uint32_t emitter, const Wavelengths<Mode>&) const { return emitters_[emitter]; }
-  // The same conversion to the working space as reflectances': negative radiance is no
-  // more physical than a negative albedo, so a wide-gamut colour is clipped to the working
-  // gamut.
-  Spectrum<Mode> rgb_radiance(const Vec3f& linear_nits, const Wavelengths<Mode>& w,
+  // Converted to the working space as an emitter's colour is (emission_radiance_rgb), and
+  // not clipped: a colour outside the working gamut keeps its negative channel there, as
+  // the same colour given to a constant sky or a lamp does. Transport is linear and every
+  // reflectance it meets non-negative, so the film holds that colour itself, scaled; only
+  // reflectances are clipped (a negative albedo would flip the sign of what it reflects).
+  Spectrum<Mode> rgb_radiance(const Vec3f& linear_nits, const Wavelengths<Mode>&,
                               ColorPickerSpace space = ColorPickerSpace::srgb) const {
-    return reflectance(linear_nits, w, space);
+    const Vec3d rgb = to_working_[static_cast<std::size_t>(space)] * Vec3d(linear_nits);
+    Spectrum<Mode> s;
+    for (int i = 0; i < 3; ++i) s[i] = static_cast<float>(rgb[i]);
+    return s;
   }
   Spectrum<Mode> environment_radiance(const Vec3f& linear_nits, const Wavelengths<Mode>& w) const {
     return rgb_radiance(linear_nits, w, environment_space_);

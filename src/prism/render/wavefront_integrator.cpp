@@ -78,7 +78,7 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
   if (mip_pyramids.size() != scene.textures.size())
     throw std::invalid_argument("WavefrontIntegrator: one mip pyramid per scene texture expected");
   for (const Material& m : scene.materials)
-    textured_emission_.push_back(textured_emission_matrix(m.emission, color::color_space("srgb")));
+    textured_emission_.push_back(textured_emission_matrix(m.emission, picker_color_space(m.emission.color_space)));
 }
 
 template <class Mode>
@@ -295,10 +295,12 @@ Spectrum<Mode> WavefrontIntegrator<Mode>::textured_emitted_radiance(std::uint32_
   const TexelRgba t = texel_at(texture, uv, level_of_detail);
   const bool colour = scene_.textures[static_cast<std::size_t>(texture)].channels >= 3;
   const Vec3d texel = colour ? Vec3d(t[0], t[1], t[2]) : Vec3d(t[0]);
-  // Rec.709 radiance in nits, then the transport's own conversion (as for environment
-  // texels): RGB modes convert to the working space, spectral modes upsample with the
-  // E-relative scaling, so a grey texel gives the same spectrum as the untextured emitter.
-  return colors_.rgb_radiance(Vec3f(textured_emission_[material] * texel), wl);
+  // Radiance in nits in the emission colour's space, then the transport's own conversion
+  // (as for environment texels): RGB modes convert to the working space, spectral modes
+  // upsample with that space's table and the E-relative scaling, so a grey texel gives the
+  // same spectrum as the untextured emitter, to the table's accuracy.
+  return colors_.rgb_radiance(Vec3f(textured_emission_[material] * texel), wl,
+                              scene_.materials[material].emission.color_space);
 }
 
 template <class Mode>

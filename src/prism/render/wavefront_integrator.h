@@ -180,7 +180,7 @@ class WavefrontIntegrator {
   std::unique_ptr<Paths> whole_image_paths_;             // lockstep queue's, made on first use
   MaterialTables tables_;
   const std::vector<MipPyramid>& textures_;  // one per Scene::textures entry
-  std::vector<Mat3> textured_emission_;  // per material: texel → Rec.709 radiance (scene/emission.h)
+  std::vector<Mat3> textured_emission_;  // per material: texel → radiance in the emission colour's space (scene/emission.h)
   const Scene& scene_;
   const EmbreeAccel& accel_;
   const LightSampler& lights_;

@@ -9,14 +9,13 @@
 //             itself; or Mallett–Yuksel 2019, whose sRGB basis takes wide-gamut colours
 //             clipped to Rec.709); emitters follow the emission rule of
 //             color/emission_spectrum.h (E-relative), fitted in their own colour space so
-//             that a wide-gamut lamp is not clipped to the working gamut; the film holds 683·XYZ (Y in nits),
-//             relative to illuminant E.
+//             that a wide-gamut lamp is not clipped to the working gamut; the film holds
+//             683·XYZ (Y in nits), relative to illuminant E.
 //   rgb:      channels are the working space's R, G, B; reflectances are converted from
 //             their primaries (Bradford between whites; a wide-gamut one clipped to the
-//             working gamut, where spectral transport renders it whole; an environment
-//             map's radiance likewise from its texel space); emitters from their picker
-//             space (Bradford); the film holds
-//             working RGB with Y in nits.
+//             working gamut, where spectral transport renders it whole); emitters, an
+//             environment map's and an emission texture's radiance from their own space
+//             (Bradford), not clipped; the film holds working RGB with Y in nits.
 // Spectra a scene gives as data (scene/spectral_inputs.h) are white-balanced to the working
 // white W, the same convention the emission rule follows for colours:
 //   spectral: a reflectance R(λ) is used as measured; an emitter's SPD S(λ) becomes
@@ -72,8 +71,8 @@ class ColorContext<SpectralMode<N>> {
   Spectrum<Mode> base_color(std::uint32_t material, const Wavelengths<Mode>& w) const;
   // Emitted radiance (or intensity / illuminance for delta lights) of an emitter.
   Spectrum<Mode> emission(std::uint32_t emitter, const Wavelengths<Mode>& w) const;
-  // Radiance given as linear RGB in nits in `space` (texels of emission textures, Rec.709;
-  // of environment maps, their own): upsampled with that space's Jakob–Hanika table
+  // Radiance given as linear RGB in nits in `space` (an emission texture's, in its emission
+  // colour's space; an environment map's, in its texel space): upsampled with that space's Jakob–Hanika table
   // (E-relative, like the emission rule) at half the largest channel and scaled so that a
   // grey texel becomes the flat spectrum of the same luminance; a colour films as itself
   // to the table's accuracy.

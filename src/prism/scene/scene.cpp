@@ -18,8 +18,8 @@ std::size_t Scene::triangle_count() const {
 const TextureImage* environment_map(const Scene& scene) {
   for (const Light& l : scene.lights) {
     if (l.type != LightType::environment) continue;
-    const bool textured = l.environment_texture >= 0 && static_cast<std::size_t>(l.environment_texture) < scene.textures.size();
-    return textured ? &scene.textures[static_cast<std::size_t>(l.environment_texture)] : nullptr;
+    const auto index = static_cast<std::size_t>(l.environment_texture);
+    return l.environment_texture >= 0 && index < scene.textures.size() ? &scene.textures[index] : nullptr;
   }
   return nullptr;
 }

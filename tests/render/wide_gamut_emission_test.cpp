@@ -14,11 +14,13 @@
 #include "prism/color/chromatic_adaptation.h"
 #include "prism/color/color_space.h"
 #include "prism/color/emission_spectrum.h"
+#include "prism/io/exr.h"
 #include "prism/render/renderer.h"
 #include "prism/scene/emission.h"
 #include "prism/scene/loaders/json_scene.h"
 #include "support/direct_light_settings.h"
 #include "support/film_statistics.h"
+#include "support/scratch_folder.h"
 
 namespace prism {
 namespace {
@@ -28,8 +30,8 @@ const Vec3d kLampAcescg(0.45, 0.03, 0.02);
 constexpr double kLampNits = 3.0;
 
 // A camera looking straight up at a large emissive ceiling of `emission` (a JSON object),
-// with uvs: every pixel sees the lamp and nothing else.
-Scene ceiling(const std::string& emission) {
+// with uvs: every pixel sees the lamp and nothing else. Texture files are found in `dir`.
+Scene ceiling(const std::string& emission, const std::filesystem::path& dir = {}) {
   return loaders::parse_json_scene(R"({"format": "prism-scene/1",
     "materials": [{"name": "glow", "type": "diffuse", "base_color": [0, 0, 0], "emission": )" + emission + R"(}],
     "meshes": [{"name": "ceiling", "material": "glow",
@@ -37,7 +39,7 @@ Scene ceiling(const std::string& emission) {
                 "uvs": [[0, 0], [1, 0], [1, 1], [0, 1]],
                 "indices": [0, 1, 2, 0, 2, 3]}],
     "camera": {"eye": [0, 1, 0], "target": [0, 2, 0], "up": [0, 0, 1], "fov_degrees": 30}})",
-                                   "ceiling.json", {}, "ceiling");
+                                   "ceiling.json", dir, "ceiling");
 }
 
 std::string acescg_lamp(double nits) {
@@ -115,6 +117,56 @@ TEST(WideGamutEmission, AWideGamutLampsTextureKeepsItsColourInSpectralTransport)
     const double table = (std::abs(a(k, 0)) + std::abs(a(k, 1)) + std::abs(a(k, 2))) * 0.004 * 2.0 * radiance.x;
     EXPECT_NEAR(e.mean[k], expected[k], 5.0 * std::sqrt(e.variance[k]) + table) << "channel " << k;
   }
+}
+
+// A Rec.709 texture (a PNG's, or one made in code) on an ACEScg lamp is converted to ACEScg
+// and multiplies the colour there, as a base colour texture's texels do: in RGB transport
+// in ACEScg the ceiling films conversion(texel) × L / Y(colour). Until session 26 the
+// Rec.709 numbers multiplied the ACEScg colour as they were, filming a more saturated red.
+TEST(WideGamutEmission, ARec709TextureOnAWideGamutLampIsConvertedToTheLampsSpace) {
+  const Vec3f texel(0.8f, 0.2f, 0.1f);
+  Scene scene = ceiling(R"({"color": [1, 1, 1], "color_space": "acescg", "luminance_nits": 3})");
+  TextureImage t;
+  t.name = "rec709";
+  t.width = t.height = 2;
+  t.channels = 3;
+  for (int i = 0; i < 4; ++i) t.texels.insert(t.texels.end(), {texel.x, texel.y, texel.z});
+  scene.textures.push_back(t);
+  scene.materials[0].emission.texture = 0;
+  RenderSettings s = test::direct_light_settings(TransportKind::rgb, LightEstimator::mis, 4, 7);
+  s.transport.working_space = "acescg";
+  const Vec3d got = test::block_estimate(render(scene, s).film, 0, 0, 8, 8).mean;
+  // The white's Y is 1 in ACEScg: L / Y(colour) = 3.
+  const Vec3d expected =
+      color::conversion_matrix(color::color_space("srgb"), color::color_space("acescg")) * Vec3d(texel) * 3.0;
+  std::printf("[ wide lamp ] Rec.709 texture: expected (%.4f, %.4f, %.4f) filmed (%.4f, %.4f, %.4f)\n", expected.x,
+              expected.y, expected.z, got.x, got.y, got.z);
+  // The lamp is seen directly and nothing else is lit (its base colour is black): no noise,
+  // float accumulation only (1e-5).
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[k], expected[k], 1e-5 * expected[k]) << "channel " << k;
+}
+
+// JSON: an OpenEXR emission texture is read into the lamp's colour space, so an ACEScg file
+// on an `acescg` lamp is kept as written (no conversion, no clip, no warning), and a
+// Rec.709 lamp's is converted to Rec.709 as before.
+TEST(WideGamutEmission, JsonReadsAnOpenExrEmissionTextureIntoTheLampsSpace) {
+  test::ScratchFolder dir;
+  const color::ColorSpace& aces = color::color_space("acescg");
+  const auto f = [](double v) { return static_cast<float>(v); };
+  const ExrChromaticities ap1{f(aces.red.x),  f(aces.red.y),  f(aces.green.x), f(aces.green.y),
+                              f(aces.blue.x), f(aces.blue.y), f(aces.white.x), f(aces.white.y)};
+  const std::vector<float> texels = {0.45f, 0.03f, 0.02f, 0.45f, 0.03f, 0.02f};
+  write_exr(dir / "glow.exr", ImageRgbF{2, 1, texels}, ap1);
+  const Scene kept = ceiling(R"({"color": [1, 1, 1], "color_space": "acescg", "luminance_nits": 3, "texture": "glow.exr"})",
+                             dir.path());
+  const TextureImage& k = kept.textures[static_cast<std::size_t>(kept.materials[0].emission.texture)];
+  EXPECT_EQ(k.texel_space, ColorPickerSpace::acescg);
+  EXPECT_EQ(k.linear_values(), texels);
+  EXPECT_TRUE(kept.warnings.empty());
+  const Scene rec709 = ceiling(R"({"color": [1, 1, 1], "luminance_nits": 3, "texture": "glow.exr"})", dir.path());
+  const TextureImage& r = rec709.textures[static_cast<std::size_t>(rec709.materials[0].emission.texture)];
+  EXPECT_EQ(r.texel_space, ColorPickerSpace::srgb);
+  EXPECT_FALSE(rec709.warnings.empty());  // converted from ACEScg and clipped: said
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "prism/core/frame.h"
 #include "prism/core/pcg32.h"
 #include "prism/scene/builtin_scenes.h"
+#include "prism/scene/emission.h"
 #include "prism/scene/flatten_instances.h"
 #include "support/chi_square.h"
 
@@ -321,6 +322,58 @@ TEST(LightSampler, CodedEmissionTexturesWeighTrianglesAsTheirDecodedFloats) {
             << "encoding " << static_cast<int>(encoding) << " channels " << channels << " triangle " << t;
       }
     }
+}
+
+// A texture in another space than its lamp's colour (a Rec.709 PNG on an ACEScg lamp)
+// weighs its triangles as its texels converted to the lamp's space, where they multiply the
+// colour (scene/emission.h): the same probabilities as the texture converted beforehand and
+// held in ACEScg. Without the conversion the Rec.709 numbers would be weighed as ACEScg
+// ones, whose luminance row differs (blue 0.054 against 0.072).
+TEST(LightSampler, EmissionTexturesInAnotherSpaceWeighTrianglesAsTheirConvertedTexels) {
+  TextureImage coded;
+  coded.width = 19;
+  coded.height = 13;
+  coded.channels = 3;
+  coded.encoding = TextureEncoding::srgb;
+  Pcg32 rng(5, 9);
+  for (int i = 0; i < coded.width * coded.height * 3; ++i) coded.codes.push_back(static_cast<std::uint8_t>(rng.next_u32() >> 24));
+  TextureImage converted = coded;
+  converted.codes.clear();
+  converted.texel_space = ColorPickerSpace::acescg;
+  const std::vector<float> values = coded.linear_values();
+  const Mat3& to_acescg = picker_space_conversion(ColorPickerSpace::srgb, ColorPickerSpace::acescg);
+  for (std::size_t i = 0; i < values.size(); i += 3) {
+    const Vec3d v = to_acescg * Vec3d(values[i], values[i + 1], values[i + 2]);
+    converted.texels.insert(converted.texels.end(), {float(v.x), float(v.y), float(v.z)});
+  }
+  const auto lights_for = [](const TextureImage& texture) {
+    Scene scene;
+    Material emitter;
+    emitter.emission.color = Vec3f(0.9f, 0.5f, 0.2f);
+    emitter.emission.color_space = ColorPickerSpace::acescg;
+    emitter.emission.luminance_nits = 3.0f;
+    emitter.emission.texture = 0;
+    scene.materials.push_back(emitter);
+    scene.textures.push_back(texture);
+    TriangleMesh mesh;  // four triangles in the plane y = 0 over different parts of the texture
+    for (int t = 0; t < 4; ++t) {
+      const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+      mesh.positions.insert(mesh.positions.end(), {{float(t), 0, 0}, {float(t), 0, 1}, {float(t) + 1, 0, 0}});
+      const float u = 0.1f + 0.23f * static_cast<float>(t), v = 0.7f - 0.17f * static_cast<float>(t);
+      mesh.uvs.insert(mesh.uvs.end(), {{u, v}, {u + 0.05f, v}, {u, v + 0.04f}});
+      mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2});
+    }
+    scene.meshes.push_back(mesh);
+    return LightSampler(scene, scene_bounds(scene));
+  };
+  const LightSampler from_rec709 = lights_for(coded), from_acescg = lights_for(converted);
+  for (std::uint32_t t = 0; t < 4; ++t) {
+    const Vec3f on_triangle(static_cast<float>(t) + 0.3f, 0.0f, 0.3f), above(1.5f, 4.0f, 0.5f);
+    const float expected = from_acescg.pdf_triangle(0, t, above, on_triangle);
+    // The converted texels were rounded to float once (1e-7 relative) and bilinear filtering
+    // rounds again: 1e-5 relative.
+    EXPECT_NEAR(from_rec709.pdf_triangle(0, t, above, on_triangle), expected, 1e-5 * expected) << "triangle " << t;
+  }
 }
 
 }  // namespace

@@ -77,8 +77,13 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
   prefetch_geometry_ = geometry_bytes > (std::size_t{512} << 10);
   if (mip_pyramids.size() != scene.textures.size())
     throw std::invalid_argument("WavefrontIntegrator: one mip pyramid per scene texture expected");
-  for (const Material& m : scene.materials)
-    textured_emission_.push_back(textured_emission_matrix(m.emission, picker_color_space(m.emission.color_space)));
+  for (const Material& m : scene.materials) {
+    const bool textured = m.emission.texture >= 0 && static_cast<std::size_t>(m.emission.texture) < scene.textures.size();
+    const ColorPickerSpace texel_space =
+        textured ? scene.textures[static_cast<std::size_t>(m.emission.texture)].texel_space : ColorPickerSpace::srgb;
+    textured_emission_.push_back(
+        textured_emission_matrix(m.emission, picker_color_space(m.emission.color_space), texel_space));
+  }
 }
 
 template <class Mode>

@@ -74,11 +74,12 @@ Vec3d emission_radiance_rgb(const Vec3f& color, ColorPickerSpace space, float lu
   return to_target * Vec3d(color) * (static_cast<double>(luminance_nits) / y);
 }
 
-Mat3 textured_emission_matrix(const Emission& e, const color::ColorSpace& target) {
+Mat3 textured_emission_matrix(const Emission& e, const color::ColorSpace& target, ColorPickerSpace texel_space) {
   const double y = relative_luminance(e.color, e.color_space);
   if (!(y > 0.0) || !(e.luminance_nits > 0.0f)) return Mat3::diagonal(Vec3d(0.0));
   const Mat3 to_target = color::conversion_matrix(picker_color_space(e.color_space), target);
-  return to_target * Mat3::diagonal(Vec3d(e.color) * (static_cast<double>(e.luminance_nits) / y));
+  const Mat3 m = to_target * Mat3::diagonal(Vec3d(e.color) * (static_cast<double>(e.luminance_nits) / y));
+  return texel_space == e.color_space ? m : m * picker_space_conversion(texel_space, e.color_space);
 }
 
 }  // namespace prism

@@ -37,10 +37,12 @@ inline Vec3d emission_radiance_rgb(const Emission& e, const color::ColorSpace& t
   return emission_radiance_rgb(e.color, e.color_space, e.luminance_nits, target);
 }
 
-// For an emitter with an emission texture: the matrix taking a linear texel (which
-// multiplies the colour channel by channel, in the picker space) to radiance in `target`,
-// M · diag(colour) · L / Y(colour). A white texel gives emission_radiance_rgb(e, target).
-Mat3 textured_emission_matrix(const Emission& e, const color::ColorSpace& target);
+// For an emitter with an emission texture: the matrix taking a linear texel in
+// `texel_space` (converted to the picker space, where it multiplies the colour channel by
+// channel, as a base colour texture's texels do) to radiance in `target`,
+// M · diag(colour) · L / Y(colour) · C. A white texel gives emission_radiance_rgb(e, target).
+Mat3 textured_emission_matrix(const Emission& e, const color::ColorSpace& target,
+                              ColorPickerSpace texel_space = ColorPickerSpace::srgb);
 
 // Luminance (CIE Y) of a linear RGB colour in the given picker space.
 double relative_luminance(const Vec3f& color, ColorPickerSpace space);

@@ -54,13 +54,16 @@ Vec2f barycentric_uv(Vec2f uv0, Vec2f duv1, Vec2f duv2, Vec2f b) {
 }
 
 // Y(colour ⊙ texel) / Y(colour) of an emission texture, with the picker space's luminance
-// row looked up once per emissive mesh (these run per texel and per quadrature point).
+// row looked up once per emissive mesh (these run per texel and per quadrature point); a
+// texel in another space than the colour's is converted to it first (scene/emission.h).
 struct TexelEmissionWeight {
   TexelEmissionWeight(const TextureImage& texture_, const Emission& emission)
       : texture(texture_),
         colour(emission.color),
         luminance_row(picker_color_space(emission.color_space).rgb_to_xyz.row(1)),
-        y_colour(dot(luminance_row, Vec3d(emission.color))) {}
+        y_colour(dot(luminance_row, Vec3d(emission.color))),
+        converts(texture_.texel_space != emission.color_space),
+        to_picker(picker_space_conversion(texture_.texel_space, emission.color_space)) {}
 
   // At uv, bilinear on the finest level.
   double operator()(Vec2f uv) const {
@@ -70,12 +73,17 @@ struct TexelEmissionWeight {
   }
   // Of texel (x, y) itself.
   double at_texel(int x, int y) const { return y_colour > 0.0 ? of_rgb(texel_rgb(texture, x, y)) : 0.0; }
-  double of_rgb(const Vec3f& rgb) const { return std::max(0.0, dot(luminance_row, Vec3d(colour * rgb)) / y_colour); }
+  double of_rgb(const Vec3f& rgb) const {
+    if (converts) return std::max(0.0, dot(luminance_row, Vec3d(colour) * (to_picker * Vec3d(rgb))) / y_colour);
+    return std::max(0.0, dot(luminance_row, Vec3d(colour * rgb)) / y_colour);
+  }
 
   const TextureImage& texture;
   Vec3f colour;
   Vec3d luminance_row;
   double y_colour;
+  bool converts;  // texels are in another space than the colour
+  Mat3 to_picker;
 };
 
 // The terms of of_rgb's dot product for an 8-bit texture, per channel and code:
@@ -111,7 +119,7 @@ double texture_mean_weight(const TexelEmissionWeight& weight) {
         for (int x = 0; x < texture.width; ++x) row_sums[y] += texel_weight(x, static_cast<int>(y));
     });
   };
-  if (texture.has_codes() && weight.y_colour > 0.0) {
+  if (texture.has_codes() && weight.y_colour > 0.0 && !weight.converts) {
     const CodedEmissionTerms terms(weight);  // 8-bit textures: their codes' terms, tabulated
     sum_rows([&](int x, int y) { return terms.at(texture, x, y, weight.y_colour); });
   } else {

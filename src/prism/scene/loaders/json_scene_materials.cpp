@@ -86,7 +86,9 @@ void read_emission(JsonSceneReader& reader, Material& m, std::uint32_t index, co
     value.fail("give exactly one of 'luminance_nits' and 'power_lm'");
   if (auto l = value.find("luminance_nits")) e.luminance_nits = l->as_float(0.0f, 1e12f);
   if (auto p = value.find("power_lm")) reader.emission_power_lm[index] = p->as_float(0.0f, 1e15f);
-  if (auto t = value.find("texture")) e.texture = reader.read_texture(*t, TextureEncoding::srgb);
+  // An OpenEXR texture is read into the colour's space (as a wide-gamut base colour's is).
+  if (auto t = value.find("texture"))
+    e.texture = reader.read_texture(*t, TextureEncoding::srgb, {}, color_content_in(e.color_space));
 }
 
 }  // namespace

@@ -270,6 +270,29 @@ TEST(LightSampler, TexturedEmitterSelectionHasTheTextureMeanFloor) {
   EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
 }
 
+// Four emissive triangles in the plane y = 0 with small uv footprints in different parts of
+// `texture`, on a lamp of an unequal colour (so a swapped channel shows) in `space`.
+LightSampler textured_lamp_lights(const TextureImage& texture, ColorPickerSpace space = ColorPickerSpace::srgb) {
+  Scene scene;
+  Material emitter;
+  emitter.emission.color = Vec3f(0.9f, 0.5f, 0.2f);
+  emitter.emission.color_space = space;
+  emitter.emission.luminance_nits = 3.0f;
+  emitter.emission.texture = 0;
+  scene.materials.push_back(emitter);
+  scene.textures.push_back(texture);
+  TriangleMesh mesh;
+  for (int t = 0; t < 4; ++t) {
+    const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    mesh.positions.insert(mesh.positions.end(), {{float(t), 0, 0}, {float(t), 0, 1}, {float(t) + 1, 0, 0}});
+    const float u = 0.1f + 0.23f * static_cast<float>(t), v = 0.7f - 0.17f * static_cast<float>(t);
+    mesh.uvs.insert(mesh.uvs.end(), {{u, v}, {u + 0.05f, v}, {u, v + 0.04f}});
+    mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2});
+  }
+  scene.meshes.push_back(mesh);
+  return LightSampler(scene, scene_bounds(scene));
+}
+
 // An 8-bit emission texture weighs its triangles as the floats it decodes to: the
 // texture's mean (the selection floor) is summed from per-code tables for codes and from
 // the texels for floats, and every triangle's probability must come out the same float,
@@ -294,26 +317,7 @@ TEST(LightSampler, CodedEmissionTexturesWeighTrianglesAsTheirDecodedFloats) {
       ASSERT_TRUE(coded.has_codes());
       ASSERT_FALSE(floats.has_codes());
 
-      const auto lights_for = [](const TextureImage& texture) {
-        Scene scene;
-        Material emitter;
-        emitter.emission.color = Vec3f(0.9f, 0.5f, 0.2f);  // unequal, so a swapped channel shows
-        emitter.emission.luminance_nits = 3.0f;
-        emitter.emission.texture = 0;
-        scene.materials.push_back(emitter);
-        scene.textures.push_back(texture);
-        TriangleMesh mesh;  // four triangles in the plane y = 0 with small uv footprints
-        for (int t = 0; t < 4; ++t) {
-          const auto base = static_cast<std::uint32_t>(mesh.positions.size());
-          mesh.positions.insert(mesh.positions.end(), {{float(t), 0, 0}, {float(t), 0, 1}, {float(t) + 1, 0, 0}});
-          const float u = 0.1f + 0.23f * static_cast<float>(t), v = 0.7f - 0.17f * static_cast<float>(t);
-          mesh.uvs.insert(mesh.uvs.end(), {{u, v}, {u + 0.05f, v}, {u, v + 0.04f}});
-          mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2});
-        }
-        scene.meshes.push_back(mesh);
-        return LightSampler(scene, scene_bounds(scene));
-      };
-      const LightSampler from_codes = lights_for(coded), from_floats = lights_for(floats);
+      const LightSampler from_codes = textured_lamp_lights(coded), from_floats = textured_lamp_lights(floats);
       for (std::uint32_t t = 0; t < 4; ++t) {
         const Vec3f on_triangle(static_cast<float>(t) + 0.3f, 0.0f, 0.3f), above(1.5f, 4.0f, 0.5f);
         const float pdf = from_codes.pdf_triangle(0, t, above, on_triangle);
@@ -346,27 +350,8 @@ TEST(LightSampler, EmissionTexturesInAnotherSpaceWeighTrianglesAsTheirConvertedT
     const Vec3d v = to_acescg * Vec3d(values[i], values[i + 1], values[i + 2]);
     converted.texels.insert(converted.texels.end(), {float(v.x), float(v.y), float(v.z)});
   }
-  const auto lights_for = [](const TextureImage& texture) {
-    Scene scene;
-    Material emitter;
-    emitter.emission.color = Vec3f(0.9f, 0.5f, 0.2f);
-    emitter.emission.color_space = ColorPickerSpace::acescg;
-    emitter.emission.luminance_nits = 3.0f;
-    emitter.emission.texture = 0;
-    scene.materials.push_back(emitter);
-    scene.textures.push_back(texture);
-    TriangleMesh mesh;  // four triangles in the plane y = 0 over different parts of the texture
-    for (int t = 0; t < 4; ++t) {
-      const auto base = static_cast<std::uint32_t>(mesh.positions.size());
-      mesh.positions.insert(mesh.positions.end(), {{float(t), 0, 0}, {float(t), 0, 1}, {float(t) + 1, 0, 0}});
-      const float u = 0.1f + 0.23f * static_cast<float>(t), v = 0.7f - 0.17f * static_cast<float>(t);
-      mesh.uvs.insert(mesh.uvs.end(), {{u, v}, {u + 0.05f, v}, {u, v + 0.04f}});
-      mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2});
-    }
-    scene.meshes.push_back(mesh);
-    return LightSampler(scene, scene_bounds(scene));
-  };
-  const LightSampler from_rec709 = lights_for(coded), from_acescg = lights_for(converted);
+  const LightSampler from_rec709 = textured_lamp_lights(coded, ColorPickerSpace::acescg),
+                     from_acescg = textured_lamp_lights(converted, ColorPickerSpace::acescg);
   for (std::uint32_t t = 0; t < 4; ++t) {
     const Vec3f on_triangle(static_cast<float>(t) + 0.3f, 0.0f, 0.3f), above(1.5f, 4.0f, 0.5f);
     const float expected = from_acescg.pdf_triangle(0, t, above, on_triangle);

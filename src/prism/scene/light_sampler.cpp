@@ -250,9 +250,7 @@ LightSampler::LightSampler(const Scene& scene, const Bounds3f& world, const Ligh
         e.mapping = light.environment_mapping;
         e.map_to_world = light.environment_to_world;
         e.world_to_map = inverse_linear(light.environment_to_world);
-        const bool textured = light.environment_texture >= 0 &&
-                              static_cast<std::size_t>(light.environment_texture) < scene.textures.size();
-        e.texture = textured ? &scene.textures[static_cast<std::size_t>(light.environment_texture)] : nullptr;
+        e.texture = environment_map(scene);  // this is the first environment light: its map
         const double average_luminance = build_environment_distribution(e);
         environment_built_ = true;
         // Φ ≈ π R² · π L̄: the scene's disc lit by the sky's average luminance.

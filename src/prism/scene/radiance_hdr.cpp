@@ -1,7 +1,9 @@
 #include "prism/scene/radiance_hdr.h"
 
 #include <algorithm>
+#include <charconv>
 #include <climits>
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -46,6 +48,35 @@ long parse_long(std::string_view& text) {
   return negative ? -value : value;
 }
 
+std::string_view trim(std::string_view text) {
+  while (!text.empty() && is_space(text.front())) text.remove_prefix(1);
+  while (!text.empty() && is_space(text.back())) text.remove_suffix(1);
+  return text;
+}
+
+// The value of header line `line` if it sets variable `prefix` ("EXPOSURE="), trimmed.
+std::optional<std::string_view> variable(std::string_view line, std::string_view prefix) {
+  if (!line.starts_with(prefix)) return std::nullopt;
+  return trim(line.substr(prefix.size()));
+}
+
+// Exactly N finite numbers separated by white space (as Radiance's printf writes them), or
+// nothing.
+template <std::size_t N>
+std::optional<std::array<double, N>> parse_numbers(std::string_view text) {
+  std::array<double, N> values{};
+  for (std::size_t i = 0; i < N; ++i) {
+    text = trim(text);
+    if (!text.empty() && text.front() == '+') text.remove_prefix(1);
+    const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), values[i]);
+    if (ec != std::errc() || !std::isfinite(values[i])) return std::nullopt;
+    text.remove_prefix(static_cast<std::size_t>(end - text.data()));
+    if (!text.empty() && !is_space(text.front())) return std::nullopt;  // "2x"
+  }
+  if (!trim(text).empty()) return std::nullopt;
+  return values;
+}
+
 // Reads bytes in order; running past the end is a truncated file.
 class ByteReader {
  public:
@@ -73,14 +104,44 @@ RadianceHeader read_radiance_header(std::span<const unsigned char> bytes, std::s
   std::size_t pos = 0;
   const std::string_view magic = next_line(bytes, pos);
   if (magic != "#?RADIANCE" && magic != "#?RGBE") fail(name, "not a Radiance picture (no #?RADIANCE line)");
-  bool rgbe = false;
+  RadianceHeader h;
+  bool format = false;
+  int line_number = 1;
+  const auto bad_line = [&](std::string_view line, std::string_view why) {
+    fail(name, fmt::format("header line {} '{}' {}", line_number, line.substr(0, 80), why));
+  };
   for (;;) {  // variables up to the empty line that ends the header
     if (pos >= bytes.size()) fail(name, "the header has no end");
     const std::string_view line = next_line(bytes, pos);
+    ++line_number;
     if (line.empty()) break;
-    if (line == "FORMAT=32-bit_rle_rgbe") rgbe = true;
+    if (const auto value = variable(line, "FORMAT=")) {
+      format = *value == "32-bit_rle_rgbe" || *value == "32-bit_rle_xyze";
+      h.xyz = *value == "32-bit_rle_xyze";
+    } else if (const auto exposure = variable(line, "EXPOSURE=")) {
+      const auto e = parse_numbers<1>(*exposure);
+      if (!e || !((*e)[0] > 0.0)) bad_line(line, "is no exposure (a positive number expected)");
+      h.exposure *= (*e)[0];
+    } else if (const auto correction = variable(line, "COLORCORR=")) {
+      const auto c = parse_numbers<3>(*correction);
+      if (!c || !((*c)[0] > 0.0 && (*c)[1] > 0.0 && (*c)[2] > 0.0))
+        bad_line(line, "is no colour correction (three positive numbers expected)");
+      for (std::size_t k = 0; k < 3; ++k) h.color_correction[k] *= (*c)[k];
+    } else if (const auto primaries = variable(line, "PRIMARIES=")) {
+      const auto p = parse_numbers<8>(*primaries);
+      if (!p) bad_line(line, "is no primaries (eight numbers expected: red, green, blue and white x y)");
+      if (std::all_of(p->begin(), p->end(), [](double v) { return v == 0.0; })) continue;  // Photoshop's "none"
+      const color::Primaries read{{(*p)[0], (*p)[1]}, {(*p)[2], (*p)[3]}, {(*p)[4], (*p)[5]}, {(*p)[6], (*p)[7]}};
+      try {
+        color::validate_primaries(read);
+      } catch (const Error& e) {
+        bad_line(line, fmt::format("names no RGB space ({})", e.what()));
+      }
+      h.primaries = read;
+    }
   }
-  if (!rgbe) fail(name, "unsupported Radiance format (FORMAT=32-bit_rle_rgbe expected)");
+  if (!format)
+    fail(name, "unsupported Radiance format (FORMAT=32-bit_rle_rgbe or FORMAT=32-bit_rle_xyze expected)");
   const std::string_view line = next_line(bytes, pos);
   const auto unsupported_layout = [&] {
     fail(name,
@@ -89,7 +150,6 @@ RadianceHeader read_radiance_header(std::span<const unsigned char> bytes, std::s
   std::string_view rest = line;  // what is left to parse of the line
   if (!rest.starts_with("-Y ")) unsupported_layout();
   rest.remove_prefix(3);
-  RadianceHeader h;
   h.height = parse_long(rest);
   while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
   if (!rest.starts_with("+X ")) unsupported_layout();

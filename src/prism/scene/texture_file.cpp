@@ -28,6 +28,7 @@
 #include "prism/io/read_to_end.h"
 #include "prism/scene/emission.h"
 #include "prism/scene/radiance_hdr.h"
+#include "prism/scene/texture_primaries.h"
 
 namespace prism {
 namespace {
@@ -81,11 +82,6 @@ TextureMemoryNeed texel_memory(const StbHeader& header) {
   return {texels * static_cast<std::uint64_t>(header.channels) * kept_bytes_per_sample,
           texels * static_cast<std::uint64_t>(header.decoded_channels) *
               static_cast<std::uint64_t>(header.decoded_bytes_per_sample)};
-}
-
-// A Radiance picture keeps its RGBE texels, 4 bytes each, read straight into place.
-TextureMemoryNeed radiance_memory(long width, long height) {
-  return {static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height) * 4, 0};
 }
 
 // An OpenEXR texture keeps its colour channels (RGB, or Y alone), as halves (2 bytes per
@@ -274,13 +270,99 @@ std::optional<std::vector<unsigned char>> without_empty_idat_chunks(std::span<co
   return out;
 }
 
-// Radiance pictures keep their RGBE texels (texture.h), read by Prism's own reader
-// (radiance_hdr.h): linear whatever the encoding asked.
-TextureImage decode_radiance(std::span<const unsigned char> bytes, std::string_view name, const TextureLimits& limits) {
+// What a Radiance picture's texels are by its header (radiance_hdr.h): CIE XYZ relative to
+// the equal-energy white for XYZE, RGB in its PRIMARIES, or Rec.709 without that line.
+color::ColorSpace radiance_file_space(const RadianceHeader& header, std::string_view name) {
+  if (header.xyz)  // XYZ as a "space" (identity matrices) tagged with Radiance's white, E
+    return {"CIE XYZ", {1.0, 0.0}, {0.0, 1.0}, {0.0, 0.0}, {1.0 / 3.0, 1.0 / 3.0}, Mat3::identity(), Mat3::identity()};
+  if (header.primaries) return color::make_color_space(std::string(name), *header.primaries);  // validated
+  return color::color_space("srgb");
+}
+
+bool radiance_texels_scaled(const RadianceHeader& header) {
+  return header.exposure != 1.0 || header.color_correction != std::array<double, 3>{1.0, 1.0, 1.0};
+}
+
+bool radiance_rec709_primaries(const RadianceHeader& header) {
+  return !header.xyz && (!header.primaries || same_primaries(*header.primaries, color::color_space("srgb")));
+}
+
+// A Radiance picture keeps its RGBE texels, 4 bytes each, read straight into place, unless
+// a colour texture's must be converted (radiance_conversion): then they become float RGB
+// (12 bytes a texel), the RGBE held only while they are converted. From the header alone,
+// which does not know the texture's use, a conversion is assumed wherever one may happen.
+TextureMemoryNeed radiance_memory(long width, long height, bool converted) {
+  const auto texels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
+  if (converted) return {texels * 3 * sizeof(float), texels * 4};
+  return {texels * 4, 0};
+}
+bool radiance_may_convert(const RadianceHeader& header) {
+  return !radiance_rec709_primaries(header) || radiance_texels_scaled(header);
+}
+
+// Whether a colour texture's texels change space going into `target` (XYZ always does).
+bool radiance_changes_space(const RadianceHeader& header, const color::ColorSpace& file_space,
+                            ColorPickerSpace target) {
+  return header.xyz || !same_primaries(color::Primaries{file_space.red, file_space.green, file_space.blue,
+                                                        file_space.white},
+                                       picker_color_space(target));
+}
+
+// The matrix taking a colour texture's texels to radiance in the space `content` puts them
+// in (`target`): the header's factors divided out (EXPOSURE and COLORCORR are what the
+// texels were multiplied by), then the file's primaries (or XYZ) converted with Bradford
+// between whites. Nothing where the texels are that already.
+std::optional<Mat3> radiance_conversion(const RadianceHeader& header, const color::ColorSpace& file_space,
+                                        ColorPickerSpace target) {
+  const bool changes_space = radiance_changes_space(header, file_space, target);
+  if (!changes_space && !radiance_texels_scaled(header)) return std::nullopt;
+  const auto& c = header.color_correction;
+  const Vec3d factors(1.0 / (header.exposure * c[0]), 1.0 / (header.exposure * c[1]), 1.0 / (header.exposure * c[2]));
+  return (changes_space ? color::conversion_matrix(file_space, picker_color_space(target)) : Mat3::identity()) *
+         Mat3::diagonal(factors);
+}
+
+// What was done to a converted Radiance texture, for the loader's warnings; nothing for
+// Rec.709 texels put unscaled into a wider space without clipping, which lose nothing.
+std::string radiance_note(const RadianceHeader& header, bool changed_space, const TextureImage& image,
+                          std::size_t clipped) {
+  const bool rec709 = radiance_rec709_primaries(header), scaled = radiance_texels_scaled(header);
+  if (rec709 && !scaled && clipped == 0) return "";
+  std::string note = fmt::format("texture '{}': ", image.name);
+  note += header.xyz ? "CIE XYZ (FORMAT=32-bit_rle_xyze)"
+          : rec709   ? "Rec.709 RGB"
+                     : "RGB in the primaries of its PRIMARIES line (" + primaries_text(*header.primaries) + ")";
+  note += changed_space ? fmt::format(" converted to {}", picker_space_label(image.texel_space))
+                        : fmt::format(" kept in {}", picker_space_label(image.texel_space));
+  if (scaled) {
+    const auto& c = header.color_correction;
+    note += fmt::format(", divided by its header's {} to radiance",
+                        header.color_correction == std::array<double, 3>{1.0, 1.0, 1.0}
+                            ? fmt::format("EXPOSURE {:g}", header.exposure)
+                            : fmt::format("EXPOSURE {:g} and COLORCORR {:g} {:g} {:g}", header.exposure, c[0], c[1],
+                                          c[2]));
+  }
+  return note + clipped_texels_text(clipped, image);
+}
+
+// Radiance pictures are read by Prism's own reader (radiance_hdr.h): linear whatever the
+// encoding asked. A colour texture's texels are radiance in the space `content` asks for
+// (radiance_conversion); data is kept as stored.
+TextureImage decode_radiance(std::span<const unsigned char> bytes, std::string_view name, const TextureLimits& limits,
+                             TextureContent content) {
   const RadianceHeader header = read_radiance_header(bytes, name);
   check_dimensions(header.width, header.height, limits.max_dimension, name);
+  std::optional<Mat3> conversion;
+  ColorPickerSpace target = ColorPickerSpace::srgb;
+  bool changes_space = false;
+  if (is_color_content(content)) {
+    const color::ColorSpace file_space = radiance_file_space(header, name);
+    target = texel_space_for(content, file_space);
+    changes_space = radiance_changes_space(header, file_space, target);
+    conversion = radiance_conversion(header, file_space, target);
+  }
   if (limits.budget) {
-    const TextureMemoryNeed need = radiance_memory(header.width, header.height);
+    const TextureMemoryNeed need = radiance_memory(header.width, header.height, conversion.has_value());
     limits.budget->reserve(need.texel_bytes, need.transient_bytes,
                            fmt::format("texture '{}' ({}x{}, 3 channels)", name, header.width, header.height));
   }
@@ -290,6 +372,15 @@ TextureImage decode_radiance(std::span<const unsigned char> bytes, std::string_v
   image.width = static_cast<int>(header.width);
   image.height = static_cast<int>(header.height);
   image.channels = 3;
+  image.texel_space = target;
+  if (conversion) {
+    image.texels.resize(image.rgbe.size() / 4 * 3);
+    for (std::size_t t = 0; t < image.rgbe.size() / 4; ++t)
+      for (std::size_t k = 0; k < 3; ++k) image.texels[3 * t + k] = rgbe_value(image.rgbe[4 * t + k], image.rgbe[4 * t + 3]);
+    image.rgbe = {};
+    const std::size_t clipped = convert_texels(image, *conversion, target);
+    image.primaries_note = radiance_note(header, changes_space, image, clipped);
+  }
   return image;
 }
 
@@ -481,70 +572,23 @@ OpenExrFirstPart check_openexr_header(std::span<const unsigned char> bytes, int 
 TextureImage read_openexr_texels(const std::filesystem::path& path, const OpenExrFirstPart& layout, long width,
                                  long height);
 
-// Chromaticities within 1e-4 in x and y are the same primaries: rounding in how a writer
-// printed a standard's.
-bool same_primaries(const Imf::Chromaticities& c, const color::ColorSpace& space) {
-  const float given[] = {c.red.x, c.red.y, c.green.x, c.green.y, c.blue.x, c.blue.y, c.white.x, c.white.y};
-  const double standard[] = {space.red.x,  space.red.y,  space.green.x, space.green.y,
-                             space.blue.x, space.blue.y, space.white.x, space.white.y};
-  for (int i = 0; i < 8; ++i)
-    if (std::abs(given[i] - standard[i]) > 1e-4) return false;
-  return true;
-}
-
 // The primaries an OpenEXR's `chromaticities` attribute names: a file without the
 // attribute has OpenEXR's default, Rec.709 with D65.
 Imf::Chromaticities file_chromaticities(const Imf::Header& header) {
   return Imf::hasChromaticities(header) ? Imf::chromaticities(header) : Imf::Chromaticities();
 }
 
+color::Primaries primaries_of(const Imf::Chromaticities& c) {
+  return {{c.red.x, c.red.y}, {c.green.x, c.green.y}, {c.blue.x, c.blue.y}, {c.white.x, c.white.y}};
+}
+
 // The colour space of an OpenEXR's chromaticities (file_chromaticities).
-color::ColorSpace openexr_primaries(const Imf::Chromaticities& c, const std::string& name) {
+color::ColorSpace openexr_primaries(const color::Primaries& p, const std::string& name) {
   try {
-    return color::make_color_space(name, {c.red.x, c.red.y}, {c.green.x, c.green.y}, {c.blue.x, c.blue.y},
-                                   {c.white.x, c.white.y});
+    return color::make_color_space(name, p);
   } catch (const Error& e) {
     throw IoError(fmt::format("cannot read image '{}': its chromaticities are no colour space ({})", name, e.what()));
   }
-}
-
-// Converts an RGB OpenEXR texture's texels (halves or floats) by `conversion` into
-// `target`, clipping what falls below 0 (colours outside the target's gamut, which a texel
-// there cannot hold), and says what it did in the image's primaries_note: for a file in
-// other primaries than Rec.709, and where anything was clipped. A Rec.709 file (labelled,
-// or without the attribute) going into a wider space loses nothing and gets no note.
-void convert_texels(TextureImage& image, const Mat3& conversion, ColorPickerSpace target,
-                    const Imf::Chromaticities& c) {
-  const std::size_t texels = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
-  std::size_t clipped = 0;
-  const auto convert = [&](Vec3d rgb) {
-    const Vec3d v = conversion * rgb;
-    if (color::is_outside_gamut(v)) ++clipped;
-    return max(v, Vec3d(0.0));
-  };
-  for (std::size_t t = 0; t < texels; ++t) {
-    if (image.has_halves()) {
-      std::uint16_t* h = image.halves.data() + 3 * t;
-      const Vec3d v = convert(Vec3d(half_bits_to_float(h[0]), half_bits_to_float(h[1]), half_bits_to_float(h[2])));
-      for (int k = 0; k < 3; ++k) h[k] = Imath::half(static_cast<float>(v[k])).bits();
-    } else {
-      float* f = image.texels.data() + 3 * t;
-      const Vec3d v = convert(Vec3d(f[0], f[1], f[2]));
-      for (int k = 0; k < 3; ++k) f[k] = static_cast<float>(v[k]);
-    }
-  }
-  image.texel_space = target;
-  const char* label = picker_space_label(target);
-  const std::string clip_note =
-      clipped ? fmt::format("; {} of {} texels lie outside {} and were clipped to it", clipped, texels, label) : "";
-  if (same_primaries(c, color::color_space("srgb"))) {
-    if (clipped) image.primaries_note = fmt::format("texture '{}': Rec.709 RGB converted to {}{}", image.name, label, clip_note);
-    return;
-  }
-  image.primaries_note = fmt::format(
-      "texture '{}': RGB in the primaries of its chromaticities (red {:.4f},{:.4f} green {:.4f},{:.4f} blue "
-      "{:.4f},{:.4f} white {:.4f},{:.4f}) converted to {}{}",
-      image.name, c.red.x, c.red.y, c.green.x, c.green.y, c.blue.x, c.blue.y, c.white.x, c.white.y, label, clip_note);
 }
 
 // A colour texture's texels follow its chromaticities into the space `content` asks for;
@@ -581,15 +625,24 @@ TextureImage read_openexr(const std::filesystem::path& path, std::span<const uns
     // The file's colour space is built once, both to choose the target and to convert; a
     // conversion is needed where the primaries differ from the target's (Bradford between
     // whites).
-    const Imf::Chromaticities c = file_chromaticities(*header);
-    const color::ColorSpace file_space = openexr_primaries(c, name);
-    const ColorPickerSpace target =
-        content == TextureContent::color_own_gamut ? smallest_picker_space_holding(file_space) : requested_space(content);
+    const color::Primaries file = primaries_of(file_chromaticities(*header));
+    const color::ColorSpace file_space = openexr_primaries(file, name);
+    const ColorPickerSpace target = texel_space_for(content, file_space);
     const color::ColorSpace& target_space = picker_color_space(target);
-    if (same_primaries(c, target_space))
+    if (same_primaries(file, target_space)) {
       image.texel_space = target;
-    else
-      convert_texels(image, color::conversion_matrix(file_space, target_space), target, c);
+    } else {
+      // A Rec.709 file (labelled, or without the attribute) going into a wider space loses
+      // nothing and gets no note; other primaries are named, and clipping is counted.
+      const std::size_t clipped = convert_texels(image, color::conversion_matrix(file_space, target_space), target);
+      const bool rec709 = same_primaries(file, color::color_space("srgb"));
+      if (!rec709 || clipped)
+        image.primaries_note =
+            fmt::format("texture '{}': {} converted to {}{}", image.name,
+                        rec709 ? std::string("Rec.709 RGB")
+                               : "RGB in the primaries of its chromaticities (" + primaries_text(file) + ")",
+                        picker_space_label(target), clipped_texels_text(clipped, image));
+    }
   }
   return image;
 }
@@ -641,13 +694,13 @@ ImageFileFormat detect_image_format(std::span<const unsigned char> head) {
 }
 
 TextureImage decode_texture_memory(std::span<const unsigned char> bytes, std::string_view name,
-                                   TextureEncoding encoding, const TextureLimits& limits) {
+                                   TextureEncoding encoding, const TextureLimits& limits, TextureContent content) {
   switch (const ImageFileFormat format = detect_image_format(bytes)) {
     case ImageFileFormat::png:
     case ImageFileFormat::jpeg:
       return decode_with_stb(bytes, format, name, encoding, limits);
     case ImageFileFormat::radiance_hdr:
-      return decode_radiance(bytes, name, limits);
+      return decode_radiance(bytes, name, limits, content);
     case ImageFileFormat::openexr:
       throw IoError(fmt::format("cannot read image '{}': OpenEXR images are read from files only", name));
     case ImageFileFormat::unknown:
@@ -663,7 +716,7 @@ std::optional<TextureMemoryNeed> texture_memory_need(std::span<const unsigned ch
     try {
       const RadianceHeader header = read_radiance_header(bytes, "");
       if (header.width < 1 || header.height < 1) return std::nullopt;
-      return radiance_memory(header.width, header.height);
+      return radiance_memory(header.width, header.height, radiance_may_convert(header));
     } catch (const IoError&) {
       return std::nullopt;
     }
@@ -707,7 +760,7 @@ TextureImage read_texture_file(const std::filesystem::path& path, TextureEncodin
   const std::vector<unsigned char> bytes = read_file_bytes(path, "image");
   if (detect_image_format(head) == ImageFileFormat::openexr)
     return read_openexr(path, bytes, limits, content);
-  return decode_texture_memory(bytes, path.string(), encoding, limits);
+  return decode_texture_memory(bytes, path.string(), encoding, limits, content);
 }
 
 }  // namespace prism

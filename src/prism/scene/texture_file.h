@@ -28,24 +28,29 @@ ImageFileFormat detect_image_format(std::span<const unsigned char> head);
 // Throws IoError for a missing/unreadable/truncated/unrecognised file and for an image
 // wider or taller than `limits.max_dimension`, and Error when its texels would exceed the
 // memory budget (both checked from the header, before the pixels are allocated).
-// `content`: a colour texture's OpenEXR texels are converted from the primaries its
-// `chromaticities` attribute names (Rec.709 without one) into Rec.709, or into the wide
-// space a wide-gamut material's base colour asks for (Bradford between whites; what falls
-// outside the gamut is clipped, and TextureImage::primaries_note says so), and
-// TextureImage::texel_space says which; data (normal, roughness, height maps) is read as
-// stored. 8-bit and .hdr images have no such attribute here and stay Rec.709.
+// `content`: a colour texture's texels are converted from the colour space their file
+// names into Rec.709, or into the wide space a wide-gamut material's base colour or an
+// environment map asks for (TextureContent; Bradford between whites; what falls outside
+// the gamut is clipped, and TextureImage::primaries_note says so, or what else was done),
+// and TextureImage::texel_space says which. The file's space is an OpenEXR's
+// `chromaticities` attribute (Rec.709 without one), or a Radiance picture's PRIMARIES line
+// or XYZE format (Rec.709 without either; its EXPOSURE and COLORCORR factors are divided
+// out too, radiance_hdr.h). Data (normal, roughness, height maps) is read as stored. 8-bit
+// images carry no primaries here and stay Rec.709.
 TextureImage read_texture_file(const std::filesystem::path& path, TextureEncoding encoding,
                                const TextureLimits& limits, TextureContent content = TextureContent::data);
 
 // The same for PNG, JPEG and .hdr data already in memory (EXR needs a file); `name` is
 // used in messages and as the texture's name.
 TextureImage decode_texture_memory(std::span<const unsigned char> bytes, std::string_view name,
-                                   TextureEncoding encoding, const TextureLimits& limits);
+                                   TextureEncoding encoding, const TextureLimits& limits, TextureContent content);
 
 // What decode_texture_memory (or read_texture_file, for OpenEXR) reserves from a budget for
 // `bytes`, read from the header: the texels as kept (a byte per sample of an 8-bit image, 4
 // bytes per RGBE texel, a float otherwise), and the decoder's buffer, held only while it
-// decodes. Nothing when the header cannot be read (the decode then reports why).
+// decodes. A Radiance picture whose header asks for a conversion counts float texels and
+// its RGBE as the buffer, whatever the use (the most it can reserve). Nothing when the
+// header cannot be read (the decode then reports why).
 struct TextureMemoryNeed {
   std::uint64_t texel_bytes = 0, transient_bytes = 0;
 };

@@ -242,7 +242,7 @@ TEST(ExrTexturePrimaries, WritersPngsHoldRec709) {
   const TextureImage wide =
       read_texture_file(dir / "acescg.exr", TextureEncoding::srgb, TextureLimits(4096), TextureContent::color_acescg);
   const std::vector<unsigned char> png = loaders::encode_texture_png(wide, TextureEncoding::srgb);
-  const TextureImage back = decode_texture_memory(png, "back.png", TextureEncoding::srgb, TextureLimits(4096));
+  const TextureImage back = decode_texture_memory(png, "back.png", TextureEncoding::srgb, TextureLimits(4096), TextureContent::color);
   EXPECT_EQ(back.texel_space, ColorPickerSpace::srgb);
   const std::vector<float> texels = back.linear_values();
   for (std::size_t t = 0; t < 3; ++t) {

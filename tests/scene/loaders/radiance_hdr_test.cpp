@@ -4,6 +4,7 @@
 // stb_image loops forever (a run-length scanline cut short).
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -148,6 +149,67 @@ TEST(RadianceHdr, TexturesKeepTheirRgbeTexelsAndTheBudgetCountsThem) {
   dir.write("empty.hdr", "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 0 +X 4\n");
   EXPECT_NE(error_of<IoError>([&] { read_texture_file(dir / "empty.hdr", TextureEncoding::srgb, 32768); })
                 .find("invalid size"),
+            std::string::npos);
+}
+
+// The header variables that say what the texels mean (radiance_hdr.h): EXPOSURE and
+// COLORCORR multiply up line by line, PRIMARIES is eight chromaticities, XYZE is a format.
+TEST(RadianceHdr, HeaderVariablesAreRead) {
+  const RadianceHeader plain = read_radiance_header(as_bytes(stb_written_hdr(8, 2)), "p.hdr");
+  EXPECT_FALSE(plain.xyz);
+  EXPECT_EQ(plain.exposure, 1.0);
+  EXPECT_EQ(plain.color_correction, (std::array<double, 3>{1.0, 1.0, 1.0}));
+  EXPECT_FALSE(plain.primaries);
+  const RadianceHeader h = read_radiance_header(
+      as_bytes("#?RADIANCE\nEXPOSURE=2\n\tpfilt -1 -e 2\nEXPOSURE= 1.5e+00\nCOLORCORR= 1 2 0.5\nCOLORCORR=2 2 2\n"
+               "PRIMARIES= 0.708 0.292 0.170 0.797 0.131 0.046 0.3127 0.3290\nFORMAT=32-bit_rle_xyze \r\n\n-Y 1 +X 1\n"),
+      "h.hdr");
+  EXPECT_TRUE(h.xyz);
+  EXPECT_EQ(h.exposure, 3.0);
+  EXPECT_EQ(h.color_correction, (std::array<double, 3>{2.0, 4.0, 1.0}));
+  ASSERT_TRUE(h.primaries);
+  EXPECT_EQ(h.primaries->red.x, 0.708);
+  EXPECT_EQ(h.primaries->green.y, 0.797);
+  EXPECT_EQ(h.primaries->blue.x, 0.131);
+  EXPECT_EQ(h.primaries->white.y, 0.3290);
+  // Photoshop's line (Poly Haven's HDRIs carry it) names no primaries: the file is Rec.709.
+  EXPECT_FALSE(read_radiance_header(as_bytes("#?RADIANCE\n# Made with Adobe Photoshop\nGAMMA=1\n"
+                                             "PRIMARIES=0 0 0 0 0 0 0 0\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 1\n"),
+                                    "ps.hdr")
+                   .primaries);
+}
+
+// A variable whose value does not read is a one-line error naming the file, the line and
+// what was expected, not a texture silently read some other way.
+TEST(RadianceHdr, UnreadableHeaderVariablesAreOneLineErrorsWithTheirLine) {
+  const auto header_error = [](const std::string& lines) {
+    return error_of<IoError>(
+        [&] { read_radiance_header(as_bytes("#?RADIANCE\nSOFTWARE=test\n" + lines + "\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 1\n"), "v.hdr"); });
+  };
+  const std::pair<const char*, const char*> cases[] = {
+      {"EXPOSURE=abc", "is no exposure"},
+      {"EXPOSURE=0", "is no exposure"},
+      {"EXPOSURE=-2", "is no exposure"},
+      {"EXPOSURE=2 3", "is no exposure"},
+      {"EXPOSURE=inf", "is no exposure"},
+      {"COLORCORR=1 1", "is no colour correction"},
+      {"COLORCORR=1 0 1", "is no colour correction"},
+      {"PRIMARIES=0.64 0.33 0.3 0.6 0.15 0.06 0.3127", "is no primaries"},
+      {"PRIMARIES=0.64 0.33 0.3 0.6x 0.15 0.06 0.3127 0.329", "is no primaries"},
+      {"PRIMARIES=0.64 0.33 0.3 0.6 0.15 0.06 0.3127 0.329 1", "is no primaries"},
+      {"PRIMARIES=0.6 0.3 0.4 0.2 0.2 0.1 0.3127 0.329", "names no RGB space"},  // collinear
+      {"PRIMARIES=0.64 0.33 0.3 0.6 0.15 0.06 0.3127 0", "names no RGB space"},  // white y = 0
+  };
+  for (const auto& [line, why] : cases) {
+    const std::string message = header_error(line);
+    EXPECT_NE(message.find("cannot read image 'v.hdr': header line 3 '" + std::string(line) + "' " + why),
+              std::string::npos)
+        << line << ": " << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+  EXPECT_NE(error_of<IoError>([] {
+              read_radiance_header(as_bytes("#?RADIANCE\nFORMAT=32-bit_rle_cmyk\n\n-Y 1 +X 1\n"), "f.hdr");
+            }).find("FORMAT=32-bit_rle_xyze expected"),
             std::string::npos);
 }
 

@@ -61,6 +61,12 @@ int extension_texture_index(const tinygltf::Value& object, const char* key) {
   return info.IsObject() && info.Has("index") && info.Get("index").IsInt() ? info.Get("index").GetNumberAsInt() : -1;
 }
 
+// glTF's colour textures are its sRGB-encoded ones (base colour, emission, sheen and
+// specular colours); the rest are data.
+TextureContent content_of(TextureEncoding encoding) {
+  return encoding == TextureEncoding::srgb ? TextureContent::color : TextureContent::data;
+}
+
 }  // namespace
 
 int GltfBuilder::texture(const tinygltf::TextureInfo& info, TextureEncoding encoding, const std::string& where) {
@@ -93,8 +99,9 @@ int GltfBuilder::texture(int index, const tinygltf::ExtensionMap& extensions, Te
       decoded_images_.erase(ahead);
     } else {
       decoded = decode_texture_memory(image.image, image_name(t.source), encoding,
-                                      {options_.max_texture_dimension, options_.memory_budget});
+                                      {options_.max_texture_dimension, options_.memory_budget}, content_of(encoding));
     }
+    if (!decoded.primaries_note.empty()) warnings_.push_back(decoded.primaries_note);
     scene_.textures.push_back(std::move(decoded));
     result = static_cast<int>(scene_.textures.size() - 1);
     image_textures_[key] = result;
@@ -179,7 +186,8 @@ void GltfBuilder::decode_images_in_parallel() {
       try {
         decoded[k].image = decode_texture_memory(model_.images[static_cast<std::size_t>(source)].image,
                                                  image_name(source), encoding,
-                                                 {options_.max_texture_dimension, options_.memory_budget});
+                                                 {options_.max_texture_dimension, options_.memory_budget},
+                                                 content_of(encoding));
       } catch (...) {
         decoded[k].error = std::current_exception();
       }

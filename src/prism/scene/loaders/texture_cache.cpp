@@ -11,10 +11,12 @@
 namespace prism::loaders {
 namespace {
 
-bool has_openexr_extension(const std::filesystem::path& file) {
+// OpenEXR and Radiance pictures can name their primaries (an OpenEXR's chromaticities, a
+// .hdr's PRIMARIES line or XYZE format), so their colour texels depend on the use.
+bool may_name_primaries(const std::filesystem::path& file) {
   std::string extension = file.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension == ".exr";
+  return extension == ".exr" || extension == ".hdr" || extension == ".pic";
 }
 
 }  // namespace
@@ -27,9 +29,9 @@ int TextureCache::load(const std::filesystem::path& file, TextureEncoding encodi
   if (ec) canonical = file;
   TextureContent what =
       content.value_or(encoding == TextureEncoding::srgb ? TextureContent::color : TextureContent::data);
-  // Only an OpenEXR's texels go into a wide space (texture.h): any other image is decoded
-  // once for every colour use.
-  if (is_color_content(what) && !has_openexr_extension(canonical)) what = TextureContent::color;
+  // Only an OpenEXR's or a Radiance picture's texels go into a wide space (texture_file.h):
+  // any other image is decoded once for every colour use.
+  if (is_color_content(what) && !may_name_primaries(canonical)) what = TextureContent::color;
   const Key key{canonical.string(), encoding, wrap_u, wrap_v, what};
   if (const auto it = indices_.find(key); it != indices_.end()) return it->second;
   // The entry's place and addressing now, its texels at the next sync.

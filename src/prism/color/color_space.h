@@ -61,6 +61,10 @@ ColorSpace make_color_space(std::string name, Chromaticity r, Chromaticity g, Ch
                             Chromaticity white);
 ColorSpace make_color_space(std::string name, const Primaries& p);
 
+// CIE XYZ as a "space": identity matrices, tagged with the white its data is relative to
+// (the named xyz spaces; XYZ relative to E is the spectral film's, and Radiance's XYZE).
+ColorSpace xyz_space(std::string name, Chromaticity white);
+
 // XYZ of the space's white at Y = 1 (the adaptation source/destination white).
 inline Vec3d white_XYZ(const ColorSpace& space) { return xy_to_XYZ(space.white); }
 

@@ -11,12 +11,6 @@
 namespace prism::color {
 namespace {
 
-// CIE XYZ as a "space": identity matrices, tagged with the white its data is relative to.
-ColorSpace xyz_space(std::string name, Chromaticity white) {
-  return ColorSpace{std::move(name), {1.0, 0.0}, {0.0, 1.0}, {0.0, 0.0}, white,
-                    Mat3::identity(), Mat3::identity()};
-}
-
 std::vector<ColorSpace> build_named_spaces() {
   // ITU-R BT.709-6 Table 1 item 1.3 (also IEC 61966-2-1 sRGB).
   constexpr Chromaticity r709{0.64, 0.33}, g709{0.30, 0.60}, b709{0.15, 0.06};
@@ -71,6 +65,11 @@ std::string normalise(std::string_view name) {
 }
 
 }  // namespace
+
+ColorSpace xyz_space(std::string name, Chromaticity white) {
+  return ColorSpace{std::move(name), {1.0, 0.0}, {0.0, 1.0}, {0.0, 0.0}, white,
+                    Mat3::identity(), Mat3::identity()};
+}
 
 const ColorSpace& color_space(std::string_view name) {
   std::string key = normalise(name);

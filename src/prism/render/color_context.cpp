@@ -80,14 +80,7 @@ ColorPickerSpace environment_space(const Scene& scene) {
 
 color::ColorSpace film_color_space(const TransportSettings& settings) {
   if (settings.kind == TransportKind::rgb) return color::color_space(settings.working_space);
-  color::ColorSpace xyz;
-  xyz.name = "xyz-e";
-  xyz.red = {1.0, 0.0};
-  xyz.green = {0.0, 1.0};
-  xyz.blue = {0.0, 0.0};
-  xyz.white = color::kWhiteE;
-  xyz.rgb_to_xyz = xyz.xyz_to_rgb = Mat3::identity();
-  return xyz;
+  return color::xyz_space("xyz-e", color::kWhiteE);
 }
 
 template <int N>
@@ -95,13 +88,12 @@ ColorContext<SpectralMode<N>>::ColorContext(const Scene& scene, const TransportS
     : settings_(settings),
       environment_space_(environment_space(scene)),
       to_film_(conversions_to(film_color_space(settings))),
-      srgb_table_(&color::JakobHanikaTable::get("srgb")),
       to_srgb_(conversions_to(color::color_space("srgb"))) {
   // A wide-gamut colour is upsampled with its own space's table: the sRGB one would clip it
   // to Rec.709. Mallett–Yuksel's basis is sRGB's: the colour converted, clipped there.
   // The wide-gamut tables are found only where a material or the environment map needs
   // them (each is megabytes).
-  tables_ = {srgb_table_, nullptr, nullptr};
+  tables_ = {&color::JakobHanikaTable::get("srgb"), nullptr, nullptr};
   const auto need_table = [&](ColorPickerSpace space) {
     if (!tables_[static_cast<std::size_t>(space)])
       tables_[static_cast<std::size_t>(space)] = &color::JakobHanikaTable::get(picker_space_name(space));

@@ -108,12 +108,11 @@ class ColorContext<SpectralMode<N>> {
   TransportSettings settings_;
   ColorPickerSpace environment_space_;  // environment_map(scene)'s texel space
   std::array<Mat3, 3> to_film_;  // per ColorPickerSpace
-  // The sRGB upsampling table, found once: JakobHanikaTable::get looks the space up by
-  // name and takes a lock, which every textured shading point and environment lookup
-  // paid (and every thread contended for) when it was called per lookup.
-  const color::JakobHanikaTable* srgb_table_;
-  // Per ColorPickerSpace; null for a space no material's base colour nor the environment
-  // map is in.
+  // The upsampling tables per ColorPickerSpace, found once: JakobHanikaTable::get looks the
+  // space up by name and takes a lock, which every textured shading point and environment
+  // lookup paid (and every thread contended for) when it was called per lookup. sRGB's is
+  // always there; another space's is null unless a material's base colour, a textured
+  // lamp or the environment map is in it.
   std::array<const color::JakobHanikaTable*, 3> tables_;
   std::array<Mat3, 3> to_srgb_;                           // per ColorPickerSpace (Mallett–Yuksel)
   std::vector<color::SigmoidPolynomial> base_color_jh_;
@@ -169,7 +168,7 @@ class ColorContext<RgbMode> {
   // reflectances are clipped (a negative albedo would flip the sign of what it reflects).
   Spectrum<Mode> rgb_radiance(const Vec3f& linear_nits, const Wavelengths<Mode>&,
                               ColorPickerSpace space = ColorPickerSpace::srgb) const {
-    const Vec3d rgb = to_working_[static_cast<std::size_t>(space)] * Vec3d(linear_nits);
+    const Vec3d rgb = to_working(linear_nits, space);
     Spectrum<Mode> s;
     for (int i = 0; i < 3; ++i) s[i] = static_cast<float>(rgb[i]);
     return s;
@@ -180,11 +179,16 @@ class ColorContext<RgbMode> {
   Vec3d to_film(const Spectrum<Mode>& value, const Wavelengths<Mode>&) const { return {value[0], value[1], value[2]}; }
   // A linear reflectance in `space` (the albedo AOV) in the working space.
   Vec3d reflectance_to_film(const Vec3f& rgb, ColorPickerSpace space = ColorPickerSpace::srgb) const {
-    return to_working_[static_cast<std::size_t>(space)] * Vec3d(rgb);
+    return to_working(rgb, space);
   }
   void terminate_secondary(Wavelengths<Mode>&) const {}
 
  private:
+  // A linear colour in `space` in the working space, unclipped.
+  Vec3d to_working(const Vec3f& rgb, ColorPickerSpace space) const {
+    return to_working_[static_cast<std::size_t>(space)] * Vec3d(rgb);
+  }
+
   ColorPickerSpace environment_space_;  // environment_map(scene)'s texel space
   std::array<Mat3, 3> to_working_;  // per ColorPickerSpace; [srgb] converts textures and tints
   std::vector<Spectrum<Mode>> base_colors_;

@@ -273,8 +273,7 @@ std::optional<std::vector<unsigned char>> without_empty_idat_chunks(std::span<co
 // What a Radiance picture's texels are by its header (radiance_hdr.h): CIE XYZ relative to
 // the equal-energy white for XYZE, RGB in its PRIMARIES, or Rec.709 without that line.
 color::ColorSpace radiance_file_space(const RadianceHeader& header, std::string_view name) {
-  if (header.xyz)  // XYZ as a "space" (identity matrices) tagged with Radiance's white, E
-    return {"CIE XYZ", {1.0, 0.0}, {0.0, 1.0}, {0.0, 0.0}, {1.0 / 3.0, 1.0 / 3.0}, Mat3::identity(), Mat3::identity()};
+  if (header.xyz) return color::xyz_space("xyz-e", color::kWhiteE);  // Radiance's XYZ white is E
   if (header.primaries) return color::make_color_space(std::string(name), *header.primaries);  // validated
   return color::color_space("srgb");
 }

@@ -25,6 +25,7 @@
 #include "prism/core/version.h"
 #include "prism/io/atomic_file.h"
 #include "prism/io/exr.h"
+#include "prism/io/radiance_hdr_writer.h"
 #include "prism/io/png.h"
 #include "prism/render/aov_images.h"
 #include "prism/render/checkpoint.h"
@@ -93,13 +94,15 @@ void apply_sample_range(const std::string& text, RenderSettings& settings) {
     throw UsageError(fmt::format("--sample-range '{}' is empty or negative", text));
 }
 
-enum class OutputFormat { exr, display };
+enum class OutputFormat { exr, radiance_hdr, display };
 
 OutputFormat output_format(const std::filesystem::path& path) {
   const std::string ext = path.extension().string();
   if (ext == ".exr" || ext == ".EXR") return OutputFormat::exr;
+  if (ext == ".hdr" || ext == ".HDR") return OutputFormat::radiance_hdr;
   if (ext == ".png" || ext == ".PNG" || ext == ".avif" || ext == ".AVIF") return OutputFormat::display;
-  throw UsageError(fmt::format("unknown output extension '{}' in '{}' (supported: .exr, .png, .avif)", ext, path.string()));
+  throw UsageError(
+      fmt::format("unknown output extension '{}' in '{}' (supported: .exr, .hdr, .png, .avif)", ext, path.string()));
 }
 
 LightEstimator parse_estimator(const std::string& name) {
@@ -168,6 +171,17 @@ void write_outputs(const std::vector<std::filesystem::path>& outputs, const Rend
       const AovImages aovs = film_aov_images(result.film, color::conversion_matrix(result.film_space, space));
       write_exr(path, film_image(result.film, result.film_space, space), chromaticities_of(space), meta, {},
                 aov_exr_channels(aovs));
+    } else if (output_format(path) == OutputFormat::radiance_hdr) {
+      // Scene-referred like the EXR, in the same space: a spectral film in XYZ is written
+      // as XYZE, unconverted.
+      const color::ColorSpace& space = o.exr_space == "film" ? result.film_space : working;
+      const RadianceWriteReport report =
+          write_radiance_hdr(path, film_image(result.film, result.film_space, space), space, fmt::format("Prism {}", kVersion));
+      if (report.clipped_pixels > 0)
+        fmt::print(stderr,
+                   "prism: warning: '{}': {} pixels lie outside {} (a negative channel) and were written with it at 0, "
+                   "which RGBE cannot hold; an .exr output keeps them\n",
+                   path.string(), report.clipped_pixels, space.name);
     } else {
       // Display-referred outputs go through the display pipeline (exposure, ACES, encoding);
       // they hold the beauty only, or the normal AOV for --view normal.
@@ -342,11 +356,13 @@ int run_render(const RenderOptions& o) {
 
 void add_render_command(CLI::App& root, Action& action) {
   auto options = std::make_shared<RenderOptions>();
-  CLI::App* cmd = root.add_subcommand("render", "Render a scene to EXR (linear, scene-referred) and/or PNG (sRGB)");
+  CLI::App* cmd = root.add_subcommand("render", "Render a scene to EXR or .hdr (linear, scene-referred) and/or PNG or AVIF (display-referred)");
   cmd->add_option("scene", options->scene, "Built-in scene name or scene file")->capture_default_str();
   cmd->add_option("-o,--output", options->outputs,
-                  "Output image; repeat for several. The extension picks the format: .exr (32-bit float linear "
-                  "Rec.709, with chromaticities and render metadata) or .png (8-bit sRGB). Default: SCENE.exr and SCENE.png");
+                  "Output image; repeat for several. The extension picks the format: .exr (32-bit float linear, in "
+                  "--exr-space, with chromaticities and render metadata), .hdr (Radiance RGBE, linear, in --exr-space, "
+                  "its PRIMARIES named; XYZE for the film space), or .png / .avif (display-referred, through the display "
+                  "pipeline). Default: SCENE.exr and SCENE.png");
   cmd->add_option("--spp", options->spp, "Samples per pixel (passes of one sample each), at least 1")->capture_default_str();
   cmd->add_option("--max-depth", options->max_depth, "Maximum number of bounces; 1 = direct light only, 0 = emitted light only (what the camera sees of lights)")->capture_default_str();
   cmd->add_option("--seed", options->seed, "Seed of the per-pixel random streams")->capture_default_str();
@@ -391,8 +407,8 @@ void add_render_command(CLI::App& root, Action& action) {
   cmd->add_option("--samples-per-pass", options->samples_per_pass,
                   "Samples per pixel per pass (default: sized to about 0.5 s); does not change the image");
   cmd->add_option("--exr-space", options->exr_space,
-                  "EXR pixel space: working (the working space's RGB) or film (CIE XYZ relative to E for spectral "
-                  "renders); chromaticities always say which")
+                  "EXR and .hdr pixel space: working (the working space's RGB) or film (CIE XYZ relative to E for "
+                  "spectral renders); the EXR's chromaticities and the .hdr's header always say which")
       ->capture_default_str();
   cmd->add_option("--camera", options->camera,
                   "Which of the scene file's cameras renders: its name, or its zero-based index (`prism info SCENE` "

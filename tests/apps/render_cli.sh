@@ -57,6 +57,22 @@ else
   fail "small render failed: $(cat "$work/stderr")"
 fi
 
+# A .hdr output is the scene-referred image as Radiance RGBE with its primaries named, or
+# XYZE for the spectral film's space (--exr-space film); it reads back as an environment.
+rm -rf "$work/out"; mkdir -p "$work/out"
+if "$prism" render cornell-box --width 16 --height 8 --spp 2 -o "$work/out/w.hdr" >/dev/null 2>"$work/stderr" &&
+   "$prism" render cornell-box --width 16 --height 8 --spp 2 --exr-space film -o "$work/out/f.hdr" >/dev/null 2>>"$work/stderr"; then
+  head -c 10 "$work/out/w.hdr" | grep -q "#?RADIANCE" || fail ".hdr output lacks the Radiance magic"
+  grep -aq "^FORMAT=32-bit_rle_rgbe$" "$work/out/w.hdr" || fail ".hdr output is not RGBE"
+  grep -aq "^PRIMARIES= 0.64 0.33 0.3 0.6 0.15 0.06 0.3127 0.329$" "$work/out/w.hdr" || fail ".hdr output names no Rec.709 primaries"
+  grep -aq "^FORMAT=32-bit_rle_xyze$" "$work/out/f.hdr" || fail "--exr-space film .hdr output is not XYZE"
+  grep -aq "^PRIMARIES=" "$work/out/f.hdr" && fail "an XYZE output names primaries"
+  "$prism" render cornell-box --width 8 --height 8 --spp 1 --environment "$work/out/f.hdr" -o "$work/out/e.exr" \
+    >/dev/null 2>"$work/stderr" || fail "an XYZE output does not read back as a sky: $(cat "$work/stderr")"
+else
+  fail ".hdr render failed: $(cat "$work/stderr")"
+fi
+
 # --aov with good values: the EXR gains the layers, the PNG stays the beauty; --help says so.
 rm -rf "$work/out"; mkdir -p "$work/out"
 if "$prism" render cornell-box --width 16 --height 12 --spp 1 --aov albedo,normal,depth "${o[@]}" >"$work/stdout" 2>"$work/stderr"; then

@@ -1,5 +1,5 @@
-// `prism tonemap IN.exr -o OUT.(png|avif|exr)`: the display pipeline on any scene-linear EXR
-// (see docs/display-pipeline.md). A thin adapter: the options are display_options.h's, every
+// `prism tonemap IN.(exr|hdr) -o OUT.(png|avif|exr)`: the display pipeline on any
+// scene-linear OpenEXR or Radiance picture (see docs/display-pipeline.md). A thin adapter: the options are display_options.h's, every
 // stage lives in prism::display.
 #include <memory>
 #include <optional>
@@ -10,6 +10,9 @@
 #include "prism/color/color_space.h"
 #include "prism/core/error.h"
 #include "prism/io/exr.h"
+#include "prism/io/read_to_end.h"
+#include "prism/scene/radiance_hdr.h"
+#include "prism/scene/texture_file.h"
 
 namespace prism::cli {
 namespace {
@@ -30,15 +33,27 @@ color::ColorSpace film_space(const ExrFile& in) {
 int run_tonemap(const TonemapOptions& o) {
   // Everything the user typed is checked before the input is read or the output touched.
   validate_display_output(o.output, o.display);
-  ExrFile in;
+  ImageRgbF image;
+  color::ColorSpace space;
   std::optional<ImageRgbF> normals;
   try {
-    in = read_exr(o.input);
-    normals = read_exr_vector_layer(o.input, "N");
+    const std::vector<unsigned char> bytes = read_file_bytes(o.input, "image");
+    if (detect_image_format(bytes) == ImageFileFormat::radiance_hdr) {
+      // Radiance: the space its header names (PRIMARIES, XYZE; Rec.709 without), its
+      // EXPOSURE and COLORCORR divided out (scene/radiance_hdr.h).
+      RadianceImage hdr = read_radiance_image(bytes, o.input);
+      image = ImageRgbF{hdr.width, hdr.height, std::move(hdr.rgb)};
+      space = std::move(hdr.space);
+    } else {
+      ExrFile in = read_exr(o.input);
+      normals = read_exr_vector_layer(o.input, "N");
+      space = film_space(in);
+      image = std::move(in.image);
+    }
   } catch (const IoError& e) {
     throw UsageError(e.what());  // unreadable input is the user's input: exit 2
   }
-  write_display_output(o.output, in.image, film_space(in), o.display, normals);
+  write_display_output(o.output, image, space, o.display, normals);
   return 0;
 }
 
@@ -46,8 +61,9 @@ int run_tonemap(const TonemapOptions& o) {
 
 void add_tonemap_command(CLI::App& root, Action& action) {
   auto opts = std::make_shared<TonemapOptions>();
-  CLI::App* cmd = root.add_subcommand("tonemap", "Apply the display pipeline (exposure, ACES RRT+ODT, encoding) to an EXR");
-  cmd->add_option("input", opts->input, "Scene-linear OpenEXR; its chromaticities (Rec.709 when absent) give its space")
+  CLI::App* cmd = root.add_subcommand("tonemap", "Apply the display pipeline (exposure, ACES RRT+ODT, encoding) to an EXR or .hdr");
+  cmd->add_option("input", opts->input, "Scene-linear OpenEXR (its chromaticities, Rec.709 when absent, give its space) or Radiance .hdr (its "
+                  "PRIMARIES or XYZE format, Rec.709 without)")
       ->required();
   cmd->add_option("-o,--output", opts->output,
                   "Output .png (SDR, or HDR with cICP/mDCv/cLLi), .avif (10/12-bit with CICP) or .exr (scRGB)")

@@ -109,6 +109,20 @@ if "$prism" render cornell-box --width 24 --height 16 --spp 2 --aov normal -o "$
 else
   fail "could not render the input EXR with a normal AOV"
 fi
+# Radiance pictures are inputs too, in the space their header names (RGBE with PRIMARIES,
+# XYZE); one whose header does not read is a usage error.
+if "$prism" render cornell-box --width 24 --height 16 --spp 2 -o "$work/in.hdr" >/dev/null 2>&1 &&
+   "$prism" render cornell-box --width 24 --height 16 --spp 2 --exr-space film -o "$work/in-xyz.hdr" >/dev/null 2>&1; then
+  for hdr in in.hdr in-xyz.hdr; do
+    "$prism" tonemap "$work/$hdr" -o "$work/$hdr.png" >/dev/null 2>"$work/err" && [ -s "$work/$hdr.png" ] ||
+      fail "tonemap $hdr: $(cat "$work/err")"
+  done
+  sed 's/^FORMAT=/EXPOSURE=zero\nFORMAT=/' "$work/in.hdr" > "$work/bad.hdr"
+  expect_usage_error o23.png "$work/bad.hdr"
+  grep -q "EXPOSURE=zero' is no exposure" "$work/err" || fail "bad .hdr header: $(cat "$work/err")"
+else
+  fail "could not render the input .hdr files"
+fi
 expect_usage_error o17.png "$work/in.exr" --view heatmap
 expect_usage_error o18.png "$work/in.exr" --view sdr-hdr-split
 expect_usage_error o19.avif "$work/in.exr" --bit-depth 8

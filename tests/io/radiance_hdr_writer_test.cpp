@@ -120,7 +120,9 @@ TEST(RadianceHdrWriter, WhatItWritesReadsBackInItsSpace) {
     stbi_image_free(stb);
     // The run-length file is smaller than flat texels would be (the flat half of each row
     // is runs).
-    if (width >= 8) EXPECT_LT(bytes.size(), 4u * width * height);
+    if (width >= 8) {
+      EXPECT_LT(bytes.size(), 4u * width * height);
+    }
   }
 }
 

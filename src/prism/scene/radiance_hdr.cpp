@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "prism/core/error.h"
+#include "prism/scene/texture.h"
 
 namespace prism {
 namespace {
@@ -209,6 +210,38 @@ std::vector<std::uint8_t> read_radiance_texels(std::span<const unsigned char> by
     }
   }
   return texels;
+}
+
+color::ColorSpace radiance_color_space(const RadianceHeader& header, std::string_view name) {
+  if (header.xyz) return color::xyz_space("xyz-e", color::kWhiteE);
+  if (header.primaries) return color::make_color_space(std::string(name), *header.primaries);  // validated
+  return color::color_space("srgb");
+}
+
+bool radiance_texels_scaled(const RadianceHeader& header) {
+  return header.exposure != 1.0 || header.color_correction != std::array<double, 3>{1.0, 1.0, 1.0};
+}
+
+Vec3d radiance_texel_factors(const RadianceHeader& header) {
+  const auto& c = header.color_correction;
+  return {1.0 / (header.exposure * c[0]), 1.0 / (header.exposure * c[1]), 1.0 / (header.exposure * c[2])};
+}
+
+RadianceImage read_radiance_image(std::span<const unsigned char> bytes, std::string_view name) {
+  const RadianceHeader header = read_radiance_header(bytes, name);
+  if (header.width < 1 || header.height < 1 || header.width > 32768 || header.height > 32768)
+    fail(name, fmt::format("invalid size {}x{}", header.width, header.height));
+  const std::vector<std::uint8_t> texels = read_radiance_texels(bytes, header, name);
+  RadianceImage image;
+  image.width = static_cast<int>(header.width);
+  image.height = static_cast<int>(header.height);
+  image.space = radiance_color_space(header, name);
+  const Vec3d factors = radiance_texel_factors(header);
+  image.rgb.resize(texels.size() / 4 * 3);
+  for (std::size_t t = 0; t < texels.size() / 4; ++t)
+    for (std::size_t k = 0; k < 3; ++k)
+      image.rgb[3 * t + k] = static_cast<float>(rgbe_value(texels[4 * t + k], texels[4 * t + 3]) * factors[k]);
+  return image;
 }
 
 }  // namespace prism

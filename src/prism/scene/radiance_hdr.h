@@ -39,6 +39,7 @@
 #include <vector>
 
 #include "prism/color/color_space.h"
+#include "prism/core/vec.h"
 
 namespace prism {
 
@@ -57,10 +58,27 @@ struct RadianceHeader {
 // that is not eight numbers or names no RGB space.
 RadianceHeader read_radiance_header(std::span<const unsigned char> bytes, std::string_view name);
 
+// What the texels are by the header: CIE XYZ relative to E for XYZE (Radiance's XYZ white),
+// RGB in the PRIMARIES, or Rec.709 without that line. `name` names a PRIMARIES space.
+color::ColorSpace radiance_color_space(const RadianceHeader& header, std::string_view name);
+// Whether EXPOSURE or COLORCORR lines scale the texels.
+bool radiance_texels_scaled(const RadianceHeader& header);
+// Per channel, what a texel is multiplied by to be radiance: 1 / (EXPOSURE · COLORCORR).
+Vec3d radiance_texel_factors(const RadianceHeader& header);
+
 // The texels, 4 bytes each (r, g, b, exponent), row 0 at the top. `header` must come from
 // read_radiance_header(bytes) and have positive dimensions. Throws IoError for a truncated
 // file and for corrupt run-length data.
 std::vector<std::uint8_t> read_radiance_texels(std::span<const unsigned char> bytes, const RadianceHeader& header,
                                                std::string_view name);
+
+// A whole Radiance picture as radiance: float pixels (the header's factors divided out) in
+// its colour space (radiance_color_space). Throws IoError as the two readers above do.
+struct RadianceImage {
+  int width = 0, height = 0;
+  std::vector<float> rgb;  // 3 × width × height, row 0 at the top
+  color::ColorSpace space;
+};
+RadianceImage read_radiance_image(std::span<const unsigned char> bytes, std::string_view name);
 
 }  // namespace prism

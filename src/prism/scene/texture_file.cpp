@@ -270,18 +270,6 @@ std::optional<std::vector<unsigned char>> without_empty_idat_chunks(std::span<co
   return out;
 }
 
-// What a Radiance picture's texels are by its header (radiance_hdr.h): CIE XYZ relative to
-// the equal-energy white for XYZE, RGB in its PRIMARIES, or Rec.709 without that line.
-color::ColorSpace radiance_file_space(const RadianceHeader& header, std::string_view name) {
-  if (header.xyz) return color::xyz_space("xyz-e", color::kWhiteE);  // Radiance's XYZ white is E
-  if (header.primaries) return color::make_color_space(std::string(name), *header.primaries);  // validated
-  return color::color_space("srgb");
-}
-
-bool radiance_texels_scaled(const RadianceHeader& header) {
-  return header.exposure != 1.0 || header.color_correction != std::array<double, 3>{1.0, 1.0, 1.0};
-}
-
 bool radiance_rec709_primaries(const RadianceHeader& header) {
   return !header.xyz && (!header.primaries || same_primaries(*header.primaries, color::color_space("srgb")));
 }
@@ -315,10 +303,8 @@ std::optional<Mat3> radiance_conversion(const RadianceHeader& header, const colo
                                         ColorPickerSpace target) {
   const bool changes_space = radiance_changes_space(header, file_space, target);
   if (!changes_space && !radiance_texels_scaled(header)) return std::nullopt;
-  const auto& c = header.color_correction;
-  const Vec3d factors(1.0 / (header.exposure * c[0]), 1.0 / (header.exposure * c[1]), 1.0 / (header.exposure * c[2]));
   return (changes_space ? color::conversion_matrix(file_space, picker_color_space(target)) : Mat3::identity()) *
-         Mat3::diagonal(factors);
+         Mat3::diagonal(radiance_texel_factors(header));
 }
 
 // What was done to a converted Radiance texture, for the loader's warnings; nothing for
@@ -355,7 +341,7 @@ TextureImage decode_radiance(std::span<const unsigned char> bytes, std::string_v
   ColorPickerSpace target = ColorPickerSpace::srgb;
   bool changes_space = false;
   if (is_color_content(content)) {
-    const color::ColorSpace file_space = radiance_file_space(header, name);
+    const color::ColorSpace file_space = radiance_color_space(header, name);
     target = texel_space_for(content, file_space);
     changes_space = radiance_changes_space(header, file_space, target);
     conversion = radiance_conversion(header, file_space, target);

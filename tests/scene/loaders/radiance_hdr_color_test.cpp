@@ -19,6 +19,7 @@
 #include "prism/scene/environment_override.h"
 #include "prism/scene/loaders/json_scene.h"
 #include "prism/scene/loaders/pbrt_scene.h"
+#include "prism/scene/radiance_hdr.h"
 #include "prism/scene/texture_file.h"
 #include "scene/loaders/loader_test_files.h"
 
@@ -177,6 +178,27 @@ TEST(RadianceHdrColor, XyzeTexelsAreXyzRelativeToTheEqualEnergyWhite) {
               std::string::npos)
         << t.primaries_note;
   }
+}
+
+// The whole-image reader (`prism tonemap IN.hdr`): float radiance, the factors divided out,
+// with the space the header names.
+TEST(RadianceHdrColor, WholeImagesComeWithTheirSpaceAndWithoutTheirFactors) {
+  const auto as_span = [](const std::string& s) {
+    return std::span<const unsigned char>(reinterpret_cast<const unsigned char*>(s.data()), s.size());
+  };
+  const RadianceImage wide = read_radiance_image(as_span(hdr_with_header(kRec2020Primaries + "EXPOSURE=4\n")), "w.hdr");
+  EXPECT_EQ(wide.width, kWidth);
+  EXPECT_EQ(wide.height, kHeight);
+  std::vector<float> quarter = kTexels;
+  for (float& v : quarter) v /= 4.0f;
+  EXPECT_EQ(wide.rgb, quarter);
+  EXPECT_EQ(wide.space.red.x, 0.708);
+  EXPECT_EQ(wide.space.white.y, 0.3290);
+  EXPECT_EQ(read_radiance_image(as_span(hdr_with_header("")), "p.hdr").space.name, "srgb");
+  const RadianceImage xyz = read_radiance_image(as_span(hdr_with_header("", "32-bit_rle_xyze")), "x.hdr");
+  EXPECT_EQ(xyz.rgb, kTexels);
+  EXPECT_EQ(xyz.space.rgb_to_xyz(0, 0), 1.0);
+  EXPECT_EQ(xyz.space.white.x, 1.0 / 3.0);
 }
 
 // A JSON scene's, a pbrt-v4 infinite light's and --environment's .hdr sky with a PRIMARIES

@@ -497,12 +497,22 @@ OpenExrFirstPart check_openexr_header(std::span<const unsigned char> bytes, int 
     throw IoError(fmt::format("cannot read image '{}': corrupt or truncated OpenEXR header ({})", name, why));
   };
   if (bytes.size() < 8) corrupt("too short");
-  const bool multipart = (read_le32(bytes.data() + 4) & 0x1000) != 0;
+  const std::uint32_t version = read_le32(bytes.data() + 4);
+  const bool multipart = (version & 0x1000) != 0;
+  // OpenEXR reads attribute and type names of at most 31 characters, or 255 with the
+  // long-names flag (0x400), and carries on past a longer one's 31st character as if the
+  // name had ended there; a walk that read the whole name would then see other attributes
+  // than OpenEXR does, and miss a value size it allocates (found by fuzz_image_readers:
+  // a 42-character name, then a string attribute of 1.7 GB).
+  const std::size_t max_name = (version & 0x400) ? 255 : 31;
   std::size_t pos = 8;
   const auto read_string = [&] {
     const auto* begin = reinterpret_cast<const char*>(bytes.data() + pos);
     const std::size_t n = ::strnlen(begin, std::min<std::size_t>(bytes.size() - pos, 256));
     if (pos + n >= bytes.size() || n > 255) corrupt("unterminated attribute name");
+    if (n > max_name)
+      corrupt(fmt::format("a name of {} characters, over OpenEXR's {}{}", n, max_name,
+                          max_name == 31 ? " without the long-names flag" : ""));
     pos += n + 1;
     return std::string_view(begin, n);
   };

@@ -318,6 +318,23 @@ TEST(TextureFile, OpenExrAttributeOfAFixedSizeTypeMustDeclareThatSize) {
   EXPECT_EQ(read_texture_file(dir / "ok.exr", TextureEncoding::linear, 32768).width, 2);
 }
 
+TEST(TextureFile, OpenExrNamesLongerThanOpenExrReadsAreRefused) {
+  // Regression (fuzz_image_readers, session 27): a 358-byte EXR with a 42-character
+  // attribute name and no long-names flag. OpenEXR reads 31 characters of it and takes the
+  // rest for the type name, so it parses other attributes than our walk did, and allocated
+  // a string attribute of 1.7 GB. Names past OpenEXR's limit are now corrupt.
+  const std::string message = regression_input_error("fuzz_exr_long_attribute_name.exr", TextureEncoding::linear);
+  EXPECT_NE(message.find("a name of 42 characters, over OpenEXR's 31 without the long-names flag"), std::string::npos)
+      << message;
+  // Attribute names of 31 characters, the most OpenEXR writes without the flag, still read.
+  test::ScratchFolder dir;
+  ExrMetadata meta;
+  meta.strings["prism:aaaaaaaaaaaaaaaaaaaaaaaaa"] = "31 characters";
+  ASSERT_EQ(std::string("prism:aaaaaaaaaaaaaaaaaaaaaaaaa").size(), 31u);
+  write_exr(dir / "ok.exr", ImageRgbF{2, 2, std::vector<float>(2 * 2 * 3, 0.5f)}, kRec709, meta);
+  EXPECT_EQ(read_texture_file(dir / "ok.exr", TextureEncoding::linear, 32768).width, 2);
+}
+
 TEST(TextureFile, JpegHuffmanTableWithTooManyCodesIsRefusedBeforeStbImage) {
   // Regression (fuzz_image_readers, found by the CI's fuzz-smoke run): a 684-byte JPEG whose
   // DHT counts sum past 256; stb_image wrote past its 257-entry size table (UBSan

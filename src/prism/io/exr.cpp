@@ -18,6 +18,7 @@
 
 #include "prism/core/error.h"
 #include "prism/io/atomic_file.h"
+#include "prism/io/openexr_header.h"
 
 namespace prism {
 namespace {
@@ -119,6 +120,7 @@ void write_exr(const std::filesystem::path& path, const ImageRgbF& image, const 
 }
 
 ExrFile read_exr(const std::filesystem::path& path) {
+  check_openexr_file_header(path);  // before OpenEXR allocates what a header declares
   ExrFile result;
   try {
     Imf::InputFile in(path.c_str());
@@ -209,6 +211,7 @@ std::optional<std::vector<float>> read_exr_channels(const std::filesystem::path&
 }
 
 std::optional<ImageRgbF> read_exr_vector_layer(const std::filesystem::path& path, const std::string& name) {
+  check_openexr_file_header(path);
   try {
     Imf::InputFile in(path.c_str());
     const Imf::Header& header = in.header();

@@ -54,7 +54,8 @@ struct ExrFile {
 
 // Reads R, G, B channels (missing channels read as 0), or, in a file with none of them, Y
 // into all three (grey). Throws IoError on any failure, and for a file with none of R, G,
-// B, Y.
+// B, Y. The header is walked first (io/openexr_header.h): a corrupt one is refused before
+// OpenEXR allocates what it declares.
 ExrFile read_exr(const std::filesystem::path& path);
 
 // The channels `names` as stored halves (IEEE binary16 bits), interleaved, width × height ×

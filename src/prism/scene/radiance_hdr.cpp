@@ -236,12 +236,16 @@ RadianceImage read_radiance_image(std::span<const unsigned char> bytes, std::str
   image.width = static_cast<int>(header.width);
   image.height = static_cast<int>(header.height);
   image.space = radiance_color_space(header, name);
-  const Vec3d factors = radiance_texel_factors(header);
-  image.rgb.resize(texels.size() / 4 * 3);
-  for (std::size_t t = 0; t < texels.size() / 4; ++t)
-    for (std::size_t k = 0; k < 3; ++k)
-      image.rgb[3 * t + k] = static_cast<float>(rgbe_value(texels[4 * t + k], texels[4 * t + 3]) * factors[k]);
+  image.rgb = radiance_texels_as_floats(texels, radiance_texel_factors(header));
   return image;
+}
+
+std::vector<float> radiance_texels_as_floats(const std::vector<std::uint8_t>& rgbe, const Vec3d& factors) {
+  std::vector<float> rgb(rgbe.size() / 4 * 3);
+  for (std::size_t t = 0; t < rgbe.size() / 4; ++t)
+    for (std::size_t k = 0; k < 3; ++k)
+      rgb[3 * t + k] = static_cast<float>(rgbe_value(rgbe[4 * t + k], rgbe[4 * t + 3]) * factors[k]);
+  return rgb;
 }
 
 }  // namespace prism

@@ -72,6 +72,9 @@ Vec3d radiance_texel_factors(const RadianceHeader& header);
 std::vector<std::uint8_t> read_radiance_texels(std::span<const unsigned char> bytes, const RadianceHeader& header,
                                                std::string_view name);
 
+// RGBE texels (read_radiance_texels) as float RGB, each channel times `factors`.
+std::vector<float> radiance_texels_as_floats(const std::vector<std::uint8_t>& rgbe, const Vec3d& factors);
+
 // A whole Radiance picture as radiance: float pixels (the header's factors divided out) in
 // its colour space (radiance_color_space). Throws IoError as the two readers above do.
 struct RadianceImage {

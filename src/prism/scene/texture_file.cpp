@@ -352,9 +352,7 @@ TextureImage decode_radiance(std::span<const unsigned char> bytes, std::string_v
   image.channels = 3;
   image.texel_space = target;
   if (conversion) {
-    image.texels.resize(image.rgbe.size() / 4 * 3);
-    for (std::size_t t = 0; t < image.rgbe.size() / 4; ++t)
-      for (std::size_t k = 0; k < 3; ++k) image.texels[3 * t + k] = rgbe_value(image.rgbe[4 * t + k], image.rgbe[4 * t + 3]);
+    image.texels = radiance_texels_as_floats(image.rgbe, Vec3d(1.0));  // the factors are in the matrix
     image.rgbe = {};
     const std::size_t clipped = convert_texels(image, *conversion, target);
     image.primaries_note = radiance_note(header, changes_space, image, clipped);

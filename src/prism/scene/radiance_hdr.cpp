@@ -145,24 +145,38 @@ RadianceHeader read_radiance_header(std::span<const unsigned char> bytes, std::s
     fail(name, "unsupported Radiance format (FORMAT=32-bit_rle_rgbe or FORMAT=32-bit_rle_xyze expected)");
   const std::string_view line = next_line(bytes, pos);
   const auto unsupported_layout = [&] {
-    fail(name,
-         fmt::format("unsupported Radiance resolution line '{}' (-Y height +X width expected)", line.substr(0, 40)));
+    fail(name, fmt::format("unsupported Radiance resolution line '{}' (±Y height ±X width, or ±X width ±Y height, "
+                           "expected)",
+                           line.substr(0, 40)));
   };
+  // Two axes, each a sign, X or Y, and a count: the first is the one scanlines step along,
+  // the second the one each scanline runs along. Y points up, so "-Y" starts at the top.
   std::string_view rest = line;  // what is left to parse of the line
-  if (!rest.starts_with("-Y ")) unsupported_layout();
-  rest.remove_prefix(3);
-  h.height = parse_long(rest);
-  while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
-  if (!rest.starts_with("+X ")) unsupported_layout();
-  rest.remove_prefix(3);
-  h.width = parse_long(rest);
+  char axes[2] = {}, signs[2] = {};
+  long counts[2] = {};
+  for (int i = 0; i < 2; ++i) {
+    while (!rest.empty() && rest.front() == ' ') rest.remove_prefix(1);
+    if (rest.size() < 3 || (rest[0] != '-' && rest[0] != '+') || (rest[1] != 'X' && rest[1] != 'Y') || rest[2] != ' ')
+      unsupported_layout();
+    signs[i] = rest[0], axes[i] = rest[1];
+    rest.remove_prefix(3);
+    counts[i] = parse_long(rest);
+  }
+  if (axes[0] == axes[1]) unsupported_layout();
+  h.columns = axes[0] == 'X';
+  h.width = h.columns ? counts[0] : counts[1];
+  h.height = h.columns ? counts[1] : counts[0];
+  h.bottom_up = signs[h.columns ? 1 : 0] == '+';
+  h.right_to_left = signs[h.columns ? 0 : 1] == '-';
   h.data_offset = pos;
   return h;
 }
 
-std::vector<std::uint8_t> read_radiance_texels(std::span<const unsigned char> bytes, const RadianceHeader& header,
-                                               std::string_view name) {
-  const auto width = static_cast<std::size_t>(header.width), height = static_cast<std::size_t>(header.height);
+namespace {
+
+// The texels in the file's order: `scanlines` scanlines of `width` texels each.
+std::vector<std::uint8_t> read_scanlines(std::span<const unsigned char> bytes, const RadianceHeader& header,
+                                         std::size_t width, std::size_t height, std::string_view name) {
   // The fewest bytes any file of this size holds: 4 per texel flat; run-length, a scanline's
   // marker and, per component, a run (2 bytes) per 127 texels. A header that claims more
   // texels than its file could hold is refused before the texels are allocated (a 40-byte
@@ -192,7 +206,7 @@ std::vector<std::uint8_t> read_radiance_texels(std::span<const unsigned char> by
     }
     const std::size_t length = static_cast<std::size_t>(high) << 8 | in.byte();
     if (length != width)
-      fail(name, fmt::format("corrupt run-length data (a scanline of {} texels in an image {} wide)", length, width));
+      fail(name, fmt::format("corrupt run-length data (a scanline of {} texels, not {})", length, width));
     for (std::size_t k = 0; k < 4; ++k) {  // each component's runs and dumps in turn
       for (std::size_t x = 0; x < width;) {
         std::size_t count = in.byte();
@@ -208,6 +222,27 @@ std::vector<std::uint8_t> read_radiance_texels(std::span<const unsigned char> by
         x += count;
       }
     }
+  }
+  return texels;
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> read_radiance_texels(std::span<const unsigned char> bytes, const RadianceHeader& header,
+                                               std::string_view name) {
+  const auto width = static_cast<std::size_t>(header.width), height = static_cast<std::size_t>(header.height);
+  if (!header.columns && !header.bottom_up && !header.right_to_left)  // "-Y H +X W", the standard order
+    return read_scanlines(bytes, header, width, height, name);
+  const std::size_t scanline_length = header.columns ? height : width;
+  const std::vector<std::uint8_t> file = read_scanlines(bytes, header, scanline_length,
+                                                        header.columns ? width : height, name);
+  std::vector<std::uint8_t> texels(file.size());
+  for (std::size_t t = 0; t < width * height; ++t) {
+    const std::size_t scanline = t / scanline_length, along = t % scanline_length;
+    std::size_t x = header.columns ? scanline : along, y = header.columns ? along : scanline;
+    if (header.right_to_left) x = width - 1 - x;
+    if (header.bottom_up) y = height - 1 - y;
+    std::memcpy(texels.data() + 4 * (y * width + x), file.data() + 4 * t, 4);
   }
   return texels;
 }

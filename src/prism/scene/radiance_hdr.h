@@ -2,10 +2,9 @@
 // Radiance picture files (.hdr; Ward 1991, "Real Pixels", Graphics Gems II; the Radiance
 // reference manual's file format section): a text header ("#?RADIANCE" or "#?RGBE", lines
 // of variables up to an empty line, FORMAT=32-bit_rle_rgbe or 32-bit_rle_xyze required), a
-// resolution line
-// ("-Y height +X width": rows top to bottom, the only orientation read), then scanlines of
-// RGBE texels — three 8-bit mantissas and a shared exponent — flat, or in the "new" run-length
-// encoding (each scanline starts 2, 2, width / 256, width % 256, then the four components
+// resolution line ("-Y height +X width": rows top to bottom, each left to right, as Radiance
+// writes; the seven flipped and rotated orders are read too), then scanlines of RGBE texels — three 8-bit mantissas and a shared exponent — flat, or in the "new" run-length
+// encoding (each scanline starts 2, 2, length / 256, length % 256, then the four components
 // one after the other as runs (count > 128: count − 128 copies of one byte) and dumps
 // (count bytes as they are)).
 //
@@ -44,7 +43,11 @@
 namespace prism {
 
 struct RadianceHeader {
-  long width = 0, height = 0;
+  long width = 0, height = 0;   // of the picture as seen: rows top to bottom, left to right
+  // The resolution line's order, "-Y H +X W" (rows from the top, each left to right) when
+  // all are false: scanlines are columns ("±X W ±Y H"), run or step from the bottom ("+Y"),
+  // from the right ("-X"). read_radiance_texels returns rows top to bottom whatever it is.
+  bool columns = false, bottom_up = false, right_to_left = false;
   std::size_t data_offset = 0;  // where the first scanline starts
   bool xyz = false;             // FORMAT=32-bit_rle_xyze
   double exposure = 1.0;        // the product of the EXPOSURE= lines

@@ -271,10 +271,13 @@ bool radiance_rec709_primaries(const RadianceHeader& header) {
 // a colour texture's must be converted (radiance_conversion): then they become float RGB
 // (12 bytes a texel), the RGBE held only while they are converted. From the header alone,
 // which does not know the texture's use, a conversion is assumed wherever one may happen.
-TextureMemoryNeed radiance_memory(long width, long height, bool converted) {
-  const auto texels = static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(height);
-  if (converted) return {texels * 3 * sizeof(float), texels * 4};
-  return {texels * 4, 0};
+// A file in another pixel order than "-Y H +X W" is read in its order first (4 bytes a
+// texel more while it is put in rows).
+TextureMemoryNeed radiance_memory(const RadianceHeader& header, bool converted) {
+  const auto texels = static_cast<std::uint64_t>(header.width) * static_cast<std::uint64_t>(header.height);
+  const std::uint64_t reordered = header.columns || header.bottom_up || header.right_to_left ? texels * 4 : 0;
+  if (converted) return {texels * 3 * sizeof(float), texels * 4 + reordered};
+  return {texels * 4, reordered};
 }
 bool radiance_may_convert(const RadianceHeader& header) {
   return !radiance_rec709_primaries(header) || radiance_texels_scaled(header);
@@ -340,7 +343,7 @@ TextureImage decode_radiance(std::span<const unsigned char> bytes, std::string_v
     conversion = radiance_conversion(header, file_space, target);
   }
   if (limits.budget) {
-    const TextureMemoryNeed need = radiance_memory(header.width, header.height, conversion.has_value());
+    const TextureMemoryNeed need = radiance_memory(header, conversion.has_value());
     limits.budget->reserve(need.texel_bytes, need.transient_bytes,
                            fmt::format("texture '{}' ({}x{}, 3 channels)", name, header.width, header.height));
   }
@@ -562,7 +565,7 @@ std::optional<TextureMemoryNeed> texture_memory_need(std::span<const unsigned ch
     try {
       const RadianceHeader header = read_radiance_header(bytes, "");
       if (header.width < 1 || header.height < 1) return std::nullopt;
-      return radiance_memory(header.width, header.height, radiance_may_convert(header));
+      return radiance_memory(header, radiance_may_convert(header));
     } catch (const IoError&) {
       return std::nullopt;
     }

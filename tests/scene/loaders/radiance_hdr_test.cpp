@@ -121,8 +121,10 @@ TEST(RadianceHdr, CorruptFilesAreOneLineErrors) {
     return error_of<IoError>([&] { read_radiance_header(as_bytes(file), "h.hdr"); });
   };
   EXPECT_NE(header_error("#?RADIANCE\n\n-Y 1 +X 1\n").find("FORMAT=32-bit_rle_rgbe"), std::string::npos);
-  EXPECT_NE(header_error("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n+Y 1 +X 1\n").find("resolution line"),
-            std::string::npos);
+  for (const char* line : {"-Y 1 -Y 1", "Y 1 X 1", "-Y 1", "-Z 1 +X 1", "-Y 1 +X"})
+    EXPECT_NE(header_error(std::string("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n") + line + "\n").find("resolution line"),
+              std::string::npos)
+        << line;
   EXPECT_NE(header_error("#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n").find("no end"), std::string::npos);
   EXPECT_NE(header_error("P6\n").find("not a Radiance picture"), std::string::npos);
 }
@@ -211,6 +213,41 @@ TEST(RadianceHdr, UnreadableHeaderVariablesAreOneLineErrorsWithTheirLine) {
               read_radiance_header(as_bytes("#?RADIANCE\nFORMAT=32-bit_rle_cmyk\n\n-Y 1 +X 1\n"), "f.hdr");
             }).find("FORMAT=32-bit_rle_xyze expected"),
             std::string::npos);
+}
+
+// Radiance's eight pixel orders ("-Y H +X W" the standard; "+Y" from the bottom, "-X" from
+// the right, "±X W ±Y H" scanlines as columns) all read as the same picture, rows top to
+// bottom: each file below holds the standard file's texels in its own order.
+TEST(RadianceHdr, EveryPixelOrderReadsAsTheSamePicture) {
+  for (const auto& [w, h] : {std::pair{5, 3}, std::pair{12, 9}}) {  // flat; run-length-sized scanlines
+    const std::string standard = stb_written_hdr(w, h);
+    const RadianceHeader sh = read_radiance_header(as_bytes(standard), "s.hdr");
+    const std::vector<std::uint8_t> picture = read_radiance_texels(as_bytes(standard), sh, "s.hdr");
+    const auto texel = [&](int x, int y) { return std::string(reinterpret_cast<const char*>(&picture[4 * (y * w + x)]), 4); };
+    for (const bool columns : {false, true})
+      for (const bool bottom_up : {false, true})
+        for (const bool right_to_left : {false, true}) {
+          const std::string y_axis = std::string(bottom_up ? "+Y " : "-Y ") + std::to_string(h);
+          const std::string x_axis = std::string(right_to_left ? "-X " : "+X ") + std::to_string(w);
+          const std::string resolution = columns ? x_axis + " " + y_axis : y_axis + " " + x_axis;
+          SCOPED_TRACE(resolution + " " + std::to_string(w) + "x" + std::to_string(h));
+          // Flat texels in the file's order (the first texel's r and g are not 2, 2, so a
+          // reader takes them flat whatever the scanline length).
+          std::string file = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n" + resolution + "\n";
+          const int scanlines = columns ? w : h, length = columns ? h : w;
+          for (int s = 0; s < scanlines; ++s)
+            for (int a = 0; a < length; ++a) {
+              int x = columns ? s : a, y = columns ? a : s;
+              if (right_to_left) x = w - 1 - x;
+              if (bottom_up) y = h - 1 - y;
+              file += texel(x, y);
+            }
+          const RadianceHeader header = read_radiance_header(as_bytes(file), "o.hdr");
+          EXPECT_EQ(header.width, w);
+          EXPECT_EQ(header.height, h);
+          EXPECT_EQ(read_radiance_texels(as_bytes(file), header, "o.hdr"), picture);
+        }
+  }
 }
 
 }  // namespace

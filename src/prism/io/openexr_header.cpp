@@ -70,6 +70,45 @@ void read_openexr_channel_list(const unsigned char* value, std::size_t size, Ope
   }
 }
 
+// OpenEXR reads three types by their content, not by the declared size, so a value whose
+// content says another size than its declaration puts OpenEXR out of step with the walk (the
+// fuzz target found a chlist missing its final null: OpenEXR read on into the next
+// attribute, and later allocated a 1.6 GB string the walk never saw), or allocates what the
+// content says:
+//   chlist       entries (a name of at most `max_name` characters, then 16 bytes) up to an
+//                empty name, which must be the value's last byte;
+//   stringvector strings, each a 32-bit length and its characters, exactly filling it;
+//   preview      width and height, then 4 bytes per pixel, exactly filling it.
+// Returns why the value is inconsistent, or nothing.
+std::optional<std::string> content_size_mismatch(std::string_view type, const unsigned char* value, std::size_t size,
+                                                 std::size_t max_name) {
+  if (type == "chlist") {
+    std::size_t pos = 0;
+    while (pos < size && value[pos] != 0) {
+      const std::size_t n = ::strnlen(reinterpret_cast<const char*>(value + pos), size - pos);
+      if (n > max_name) return fmt::format("a channel name of {} characters, over {}", n, max_name);
+      pos += n + 1 + 16;
+    }
+    if (pos + 1 != size) return std::string("a channel list that does not end where its size says");
+  } else if (type == "stringvector") {
+    std::size_t pos = 0;
+    while (pos < size) {
+      if (size - pos < 4) return std::string("a string vector that does not end where its size says");
+      const std::int32_t length = read_le32(value + pos);
+      pos += 4;
+      if (length < 0 || static_cast<std::size_t>(length) > size - pos)
+        return fmt::format("a string of {} bytes in a string vector of {}", length, size);
+      pos += static_cast<std::size_t>(length);
+    }
+  } else if (type == "preview") {
+    if (size < 8) return std::string("a preview without its size");
+    const auto width = static_cast<std::uint32_t>(read_le32(value)), height = static_cast<std::uint32_t>(read_le32(value + 4));
+    if (8 + 4 * static_cast<std::uint64_t>(width) * height != size)
+      return fmt::format("a preview of {}x{} pixels in {} bytes", width, height, size);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 void check_image_dimensions(long width, long height, int max_dimension, std::string_view name) {
@@ -124,6 +163,8 @@ OpenExrFirstPart check_openexr_header(std::span<const unsigned char> bytes, int 
       if (const auto fixed = openexr_fixed_attribute_size(type); fixed && *fixed != size)
         corrupt(fmt::format("attribute '{}' of type {} claims {} bytes, not {}", attribute, type, size, *fixed));
       const unsigned char* value = bytes.data() + pos;
+      if (const auto why = content_size_mismatch(type, value, static_cast<std::size_t>(size), max_name))
+        corrupt(fmt::format("attribute '{}' of type {}: {}", attribute, type, *why));
       if (attribute == "dataWindow" && type == "box2i" && size == 16) {
         width = static_cast<long>(read_le32(value + 8)) - read_le32(value) + 1;
         height = static_cast<long>(read_le32(value + 12)) - read_le32(value + 4) + 1;

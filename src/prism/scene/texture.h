@@ -98,7 +98,8 @@ struct TextureImage {
   int channels = 0;  // 1 to 4, interleaved
   // The texels, width × height × channels, row 0 at the top: `texels` for float images,
   // `codes` (with `encoding`) for 8-bit ones, `rgbe` (r, g, b mantissas and the shared
-  // exponent, 4 bytes per texel; channels = 3) for Radiance .hdr ones, `halves` (IEEE
+  // exponent, 4 bytes per texel; channels = 3) for Radiance .hdr ones (floats where a colour
+  // texture's were converted, texture_file.h), `halves` (IEEE
   // binary16 bits, linear) for OpenEXR images stored in half floats. Three are empty.
   std::vector<float> texels;
   std::vector<std::uint8_t> codes;
@@ -110,12 +111,14 @@ struct TextureImage {
   float offset_u = 0.0f, offset_v = 0.0f, scale_u = 1.0f, scale_v = 1.0f, rotation_radians = 0.0f;
 
   // The primaries of a colour texture's RGB texels: Rec.709 (srgb), or the wide-gamut
-  // space an OpenEXR was read into for a material's base colour (TextureContent).
+  // space an OpenEXR or Radiance picture was read into for a wide-gamut base colour or a
+  // sky (TextureContent).
   ColorPickerSpace texel_space = ColorPickerSpace::srgb;
-  // Set when an OpenEXR colour texture in other primaries than Rec.709 was converted at
-  // load (from its chromaticities attribute), or when texels fell outside the gamut they
-  // were converted into and were clipped: what was done and how many, for the loader's
-  // warnings. Empty otherwise.
+  // Set when a colour texture in other primaries than Rec.709 was converted at load (an
+  // OpenEXR's chromaticities, a Radiance picture's PRIMARIES or XYZE format), when a
+  // Radiance header's EXPOSURE or COLORCORR was divided out, or when texels fell outside the
+  // gamut they were converted into and were clipped: what was done and how many, for the
+  // loader's warnings. Empty otherwise.
   std::string primaries_note{};
 
   bool has_codes() const { return !codes.empty(); }

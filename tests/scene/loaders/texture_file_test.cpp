@@ -11,6 +11,7 @@
 
 #include "prism/core/error.h"
 #include "prism/io/exr.h"
+#include "prism/io/openexr_header.h"
 #include "prism/scene/texture.h"
 #include "prism/io/png.h"
 #include "prism/scene/loaders/texture_cache.h"
@@ -322,17 +323,72 @@ TEST(TextureFile, OpenExrNamesLongerThanOpenExrReadsAreRefused) {
   // Regression (fuzz_image_readers, session 27): a 358-byte EXR with a 42-character
   // attribute name and no long-names flag. OpenEXR reads 31 characters of it and takes the
   // rest for the type name, so it parses other attributes than our walk did, and allocated
-  // a string attribute of 1.7 GB. Names past OpenEXR's limit are now corrupt.
-  const std::string message = regression_input_error("fuzz_exr_long_attribute_name.exr", TextureEncoding::linear);
+  // a string attribute of 1.7 GB. (Its channel list also lacks its final null, which the
+  // walk now finds first: TextureFile.OpenExrValuesReadByContentMustFillTheirSize.)
+  EXPECT_NE(regression_input_error("fuzz_exr_long_attribute_name.exr", TextureEncoding::linear)
+                .find("corrupt or truncated OpenEXR header"),
+            std::string::npos);
+  // The name alone: a valid file with a 42-character attribute put first.
+  test::ScratchFolder dir;
+  write_exr(dir / "ok.exr", ImageRgbF{2, 2, std::vector<float>(2 * 2 * 3, 0.5f)}, kRec709);
+  std::string bytes = test::read_bytes(dir / "ok.exr");
+  std::string attribute = std::string(42, 'a') + '\0' + "string" + '\0';
+  test::append<std::int32_t>(attribute, {4});
+  attribute += "abcd";
+  dir.write("long.exr", bytes.substr(0, 8) + attribute + bytes.substr(8));
+  const std::string message =
+      error_of<IoError>([&] { read_texture_file(dir / "long.exr", TextureEncoding::linear, 32768); });
   EXPECT_NE(message.find("a name of 42 characters, over OpenEXR's 31 without the long-names flag"), std::string::npos)
       << message;
   // Attribute names of 31 characters, the most OpenEXR writes without the flag, still read.
-  test::ScratchFolder dir;
   ExrMetadata meta;
   meta.strings["prism:aaaaaaaaaaaaaaaaaaaaaaaaa"] = "31 characters";
   ASSERT_EQ(std::string("prism:aaaaaaaaaaaaaaaaaaaaaaaaa").size(), 31u);
-  write_exr(dir / "ok.exr", ImageRgbF{2, 2, std::vector<float>(2 * 2 * 3, 0.5f)}, kRec709, meta);
-  EXPECT_EQ(read_texture_file(dir / "ok.exr", TextureEncoding::linear, 32768).width, 2);
+  write_exr(dir / "ok31.exr", ImageRgbF{2, 2, std::vector<float>(2 * 2 * 3, 0.5f)}, kRec709, meta);
+  EXPECT_EQ(read_texture_file(dir / "ok31.exr", TextureEncoding::linear, 32768).width, 2);
+}
+
+// OpenEXR reads a chlist, a stringvector and a preview by their content, not their declared
+// size: a value whose content says otherwise puts OpenEXR out of step with the walk.
+TEST(TextureFile, OpenExrValuesReadByContentMustFillTheirSize) {
+  // Regression (fuzz_image_readers, session 27): a 2.7 kB EXR whose second channel list
+  // declares 55 bytes for three entries and no final null. OpenEXR read on into the next
+  // attribute and later allocated a 1.6 GB string.
+  const std::string message = regression_input_error("fuzz_exr_chlist_without_end.exr", TextureEncoding::linear);
+  EXPECT_NE(message.find("attribute 'channels' of type chlist: a channel list that does not end where its size says"),
+            std::string::npos)
+      << message;
+  // A string vector whose string claims more than the value holds, and a preview whose
+  // size says more pixels than it holds: OpenEXR allocates what they claim.
+  test::ScratchFolder dir;
+  write_exr(dir / "ok.exr", ImageRgbF{2, 2, std::vector<float>(2 * 2 * 3, 0.5f)}, kRec709);
+  const std::string bytes = test::read_bytes(dir / "ok.exr");
+  std::string vector_attribute = std::string("notes") + '\0' + "stringvector" + '\0';
+  test::append<std::int32_t>(vector_attribute, {8, 1000000000});
+  vector_attribute += "abcd";
+  dir.write("vector.exr", bytes.substr(0, 8) + vector_attribute + bytes.substr(8));
+  EXPECT_NE(error_of<IoError>([&] { read_texture_file(dir / "vector.exr", TextureEncoding::linear, 32768); })
+                .find("a string of 1000000000 bytes in a string vector of 8"),
+            std::string::npos);
+  std::string preview_attribute = std::string("preview") + '\0' + "preview" + '\0';
+  test::append<std::int32_t>(preview_attribute, {12, 30000, 30000});
+  preview_attribute += "abcd";
+  dir.write("preview.exr", bytes.substr(0, 8) + preview_attribute + bytes.substr(8));
+  EXPECT_NE(error_of<IoError>([&] { read_texture_file(dir / "preview.exr", TextureEncoding::linear, 32768); })
+                .find("a preview of 30000x30000 pixels in 12 bytes"),
+            std::string::npos);
+  // Well-formed ones pass the walk: a string vector of two strings. (The inserted attribute
+  // moves the pixel data past the offsets the file records, so only the header is checked.)
+  std::string good = std::string("notes") + '\0' + "stringvector" + '\0';
+  test::append<std::int32_t>(good, {13, 2});
+  good += "ab";
+  test::append<std::int32_t>(good, {3});
+  good += "cde";
+  const std::string with_good = bytes.substr(0, 8) + good + bytes.substr(8);
+  EXPECT_EQ(check_openexr_header({reinterpret_cast<const unsigned char*>(with_good.data()), with_good.size()}, 32768,
+                                 "good.exr")
+                .width,
+            2);
 }
 
 TEST(TextureFile, JpegHuffmanTableWithTooManyCodesIsRefusedBeforeStbImage) {

@@ -359,36 +359,34 @@ TEST(TextureFile, OpenExrValuesReadByContentMustFillTheirSize) {
             std::string::npos)
       << message;
   // A string vector whose string claims more than the value holds, and a preview whose
-  // size says more pixels than it holds: OpenEXR allocates what they claim.
+  // size says more pixels than it holds: OpenEXR allocates what they claim. Each is put
+  // first in a valid file's header (its pixel data then lies past the offsets the file
+  // records, so only the walk's verdict is checked).
   test::ScratchFolder dir;
   write_exr(dir / "ok.exr", ImageRgbF{2, 2, std::vector<float>(2 * 2 * 3, 0.5f)}, kRec709);
   const std::string bytes = test::read_bytes(dir / "ok.exr");
-  std::string vector_attribute = std::string("notes") + '\0' + "stringvector" + '\0';
-  test::append<std::int32_t>(vector_attribute, {8, 1000000000});
-  vector_attribute += "abcd";
-  dir.write("vector.exr", bytes.substr(0, 8) + vector_attribute + bytes.substr(8));
-  EXPECT_NE(error_of<IoError>([&] { read_texture_file(dir / "vector.exr", TextureEncoding::linear, 32768); })
-                .find("a string of 1000000000 bytes in a string vector of 8"),
+  const auto walk = [&](const std::string& name, const std::string& type, std::initializer_list<std::int32_t> words,
+                        const std::string& tail) {
+    std::string attribute = name + '\0' + type + '\0';
+    test::append<std::int32_t>(attribute, words);
+    const std::string file = bytes.substr(0, 8) + attribute + tail + bytes.substr(8);
+    try {
+      check_openexr_header({reinterpret_cast<const unsigned char*>(file.data()), file.size()}, 32768, "t.exr");
+    } catch (const IoError& e) {
+      return std::string(e.what());
+    }
+    return std::string("passed");
+  };
+  EXPECT_NE(walk("notes", "stringvector", {8, 1000000000}, "abcd").find("a string of 1000000000 bytes in a string vector of 8"),
             std::string::npos);
-  std::string preview_attribute = std::string("preview") + '\0' + "preview" + '\0';
-  test::append<std::int32_t>(preview_attribute, {12, 30000, 30000});
-  preview_attribute += "abcd";
-  dir.write("preview.exr", bytes.substr(0, 8) + preview_attribute + bytes.substr(8));
-  EXPECT_NE(error_of<IoError>([&] { read_texture_file(dir / "preview.exr", TextureEncoding::linear, 32768); })
-                .find("a preview of 30000x30000 pixels in 12 bytes"),
+  EXPECT_NE(walk("preview", "preview", {12, 30000, 30000}, "abcd").find("a preview of 30000x30000 pixels in 12 bytes"),
             std::string::npos);
-  // Well-formed ones pass the walk: a string vector of two strings. (The inserted attribute
-  // moves the pixel data past the offsets the file records, so only the header is checked.)
-  std::string good = std::string("notes") + '\0' + "stringvector" + '\0';
-  test::append<std::int32_t>(good, {13, 2});
-  good += "ab";
-  test::append<std::int32_t>(good, {3});
-  good += "cde";
-  const std::string with_good = bytes.substr(0, 8) + good + bytes.substr(8);
-  EXPECT_EQ(check_openexr_header({reinterpret_cast<const unsigned char*>(with_good.data()), with_good.size()}, 32768,
-                                 "good.exr")
-                .width,
-            2);
+  // Well-formed ones pass: a string vector of two strings ("ab", "cde"), a 1×1 preview.
+  std::string two_strings = "ab";
+  test::append<std::int32_t>(two_strings, {3});
+  two_strings += "cde";
+  EXPECT_EQ(walk("notes", "stringvector", {13, 2}, two_strings), "passed");
+  EXPECT_EQ(walk("preview", "preview", {12, 1, 1}, "rgba"), "passed");
 }
 
 TEST(TextureFile, JpegHuffmanTableWithTooManyCodesIsRefusedBeforeStbImage) {

@@ -29,7 +29,9 @@ TEST(OpenExrHeader, TheIoReadersRefuseTheFuzzRegressionsBeforeOpenExrAllocates) 
       {"fuzz_exr_long_attribute_name.exr", "attribute 'channels' of type chlist"},
       {"fuzz_exr_chlist_without_end.exr", "a channel list that does not end where its size says"},
   };
-  for (const auto& [file, why] : files) {
+  for (const auto& entry : files) {
+    const char* file = entry.first;  // (clang 14 cannot capture a structured binding)
+    const char* why = entry.second;
     // Before session 27 these reached OpenEXR, which allocated 1.6–2 GB and then failed
     // (std::bad_alloc under a memory limit).
     const std::string message = test::error_of<IoError>([&] { read_exr(data / file); });

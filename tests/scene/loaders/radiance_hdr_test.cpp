@@ -219,7 +219,8 @@ TEST(RadianceHdr, UnreadableHeaderVariablesAreOneLineErrorsWithTheirLine) {
 // the right, "±X W ±Y H" scanlines as columns) all read as the same picture, rows top to
 // bottom: each file below holds the standard file's texels in its own order.
 TEST(RadianceHdr, EveryPixelOrderReadsAsTheSamePicture) {
-  for (const auto& [w, h] : {std::pair{5, 3}, std::pair{12, 9}}) {  // flat; run-length-sized scanlines
+  for (const auto& size : {std::pair{5, 3}, std::pair{12, 9}}) {  // flat; run-length-sized scanlines
+    const int w = size.first, h = size.second;  // (clang 14 cannot capture a structured binding)
     const std::string standard = stb_written_hdr(w, h);
     const RadianceHeader sh = read_radiance_header(as_bytes(standard), "s.hdr");
     const std::vector<std::uint8_t> picture = read_radiance_texels(as_bytes(standard), sh, "s.hdr");

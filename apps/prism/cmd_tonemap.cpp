@@ -37,11 +37,11 @@ int run_tonemap(const TonemapOptions& o) {
   color::ColorSpace space;
   std::optional<ImageRgbF> normals;
   try {
-    const std::vector<unsigned char> bytes = read_file_bytes(o.input, "image");
-    if (detect_image_format(bytes) == ImageFileFormat::radiance_hdr) {
+    // Only a Radiance picture is read whole here; OpenEXR reads its own file.
+    if (detect_image_file_format(o.input) == ImageFileFormat::radiance_hdr) {
       // Radiance: the space its header names (PRIMARIES, XYZE; Rec.709 without), its
       // EXPOSURE and COLORCORR divided out (scene/radiance_hdr.h).
-      RadianceImage hdr = read_radiance_image(bytes, o.input);
+      RadianceImage hdr = read_radiance_image(read_file_bytes(o.input, "image"), o.input);
       image = ImageRgbF{hdr.width, hdr.height, std::move(hdr.rgb)};
       space = std::move(hdr.space);
     } else {

@@ -294,10 +294,10 @@ bool radiance_changes_space(const RadianceHeader& header, const color::ColorSpac
 // The matrix taking a colour texture's texels to radiance in the space `content` puts them
 // in (`target`): the header's factors divided out (EXPOSURE and COLORCORR are what the
 // texels were multiplied by), then the file's primaries (or XYZ) converted with Bradford
-// between whites. Nothing where the texels are that already.
+// between whites (where `changes_space`, radiance_changes_space's answer). Nothing where the
+// texels are that already.
 std::optional<Mat3> radiance_conversion(const RadianceHeader& header, const color::ColorSpace& file_space,
-                                        ColorPickerSpace target) {
-  const bool changes_space = radiance_changes_space(header, file_space, target);
+                                        ColorPickerSpace target, bool changes_space) {
   if (!changes_space && !radiance_texels_scaled(header)) return std::nullopt;
   return (changes_space ? color::conversion_matrix(file_space, picker_color_space(target)) : Mat3::identity()) *
          Mat3::diagonal(radiance_texel_factors(header));
@@ -340,7 +340,7 @@ TextureImage decode_radiance(std::span<const unsigned char> bytes, std::string_v
     const color::ColorSpace file_space = radiance_color_space(header, name);
     target = texel_space_for(content, file_space);
     changes_space = radiance_changes_space(header, file_space, target);
-    conversion = radiance_conversion(header, file_space, target);
+    conversion = radiance_conversion(header, file_space, target, changes_space);
   }
   if (limits.budget) {
     const TextureMemoryNeed need = radiance_memory(header, conversion.has_value());
@@ -593,21 +593,24 @@ std::optional<TextureMemoryNeed> texture_file_memory_need(const std::filesystem:
   }
 }
 
+ImageFileFormat detect_image_file_format(const std::filesystem::path& path) {
+  std::array<unsigned char, 16> head{};
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw IoError(fmt::format("cannot read image '{}': {}", path.string(),
+                              std::filesystem::exists(path, ec) ? "not a regular file" : "no such file"));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw IoError(fmt::format("cannot read image '{}': cannot open it", path.string()));
+  in.read(reinterpret_cast<char*>(head.data()), head.size());
+  if (in.gcount() == 0) throw IoError(fmt::format("cannot read image '{}': the file is empty", path.string()));
+  return detect_image_format(head);
+}
+
 TextureImage read_texture_file(const std::filesystem::path& path, TextureEncoding encoding,
                                const TextureLimits& limits, TextureContent content) {
-  std::array<unsigned char, 16> head{};
-  {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-      throw IoError(fmt::format("cannot read image '{}': {}", path.string(),
-                                std::filesystem::exists(path, ec) ? "not a regular file" : "no such file"));
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError(fmt::format("cannot read image '{}': cannot open it", path.string()));
-    in.read(reinterpret_cast<char*>(head.data()), head.size());
-    if (in.gcount() == 0) throw IoError(fmt::format("cannot read image '{}': the file is empty", path.string()));
-  }
+  const ImageFileFormat format = detect_image_file_format(path);
   const std::vector<unsigned char> bytes = read_file_bytes(path, "image");
-  if (detect_image_format(head) == ImageFileFormat::openexr)
+  if (format == ImageFileFormat::openexr)
     return read_openexr(path, bytes, limits, content);
   return decode_texture_memory(bytes, path.string(), encoding, limits, content);
 }

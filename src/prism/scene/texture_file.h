@@ -24,6 +24,9 @@ struct TextureLimits {
   MemoryBudget* budget;    // when set: the texels (and the decoder's buffer) must fit
 };
 ImageFileFormat detect_image_format(std::span<const unsigned char> head);
+// The same from a file's first bytes. Throws IoError "cannot read image '<path>': ..." for a
+// missing, non-regular, unopenable or empty file.
+ImageFileFormat detect_image_file_format(const std::filesystem::path& path);
 
 // Throws IoError for a missing/unreadable/truncated/unrecognised file and for an image
 // wider or taller than `limits.max_dimension`, and Error when its texels would exceed the

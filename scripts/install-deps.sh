@@ -6,7 +6,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake ninja-build pkg-config
-  libembree-dev libtbb-dev libopenexr-dev libpng-dev libstb-dev
+  libembree-dev libtbb-dev libopenexr-dev libpng-dev zlib1g-dev libstb-dev
   nlohmann-json3-dev libcli11-dev libfmt-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   libopencolorio-dev  # ACES oracle in tests; `--ocio-config` display path (issue 6)

@@ -28,6 +28,7 @@
 #include "prism/io/openexr_header.h"
 #include "prism/io/read_to_end.h"
 #include "prism/scene/emission.h"
+#include "prism/scene/image_color_tags.h"
 #include "prism/scene/radiance_hdr.h"
 #include "prism/scene/texture_primaries.h"
 
@@ -93,21 +94,88 @@ void reserve_texels(const TextureLimits& limits, const StbHeader& header, std::s
                                      header.channels));
 }
 
-// Decodes 16-bit codes to linear floats: colour channels through the sRGB EOTF when asked,
-// alpha always linearly (8-bit codes are kept and decoded at lookup the same way).
-void decode_16_bit_codes(const std::uint16_t* codes, TextureImage& image, TextureEncoding encoding) {
-  constexpr double kMaxCode = 65535.0;
-  std::vector<float> lut(static_cast<std::size_t>(kMaxCode) + 1);
-  for (std::size_t i = 0; i < lut.size(); ++i) {
-    const double v = static_cast<double>(i) / kMaxCode;
-    lut[i] = static_cast<float>(encoding == TextureEncoding::srgb ? color::srgb_decode(v) : v);
-  }
+// Decodes 16-bit codes to linear floats: colour channels through the curves of the
+// image's colour tags where it has them (image_color_tags.h), else through the sRGB EOTF
+// when asked, alpha always linearly (8-bit codes are kept and decoded at lookup the same way).
+void decode_16_bit_codes(const std::uint16_t* codes, TextureImage& image, TextureEncoding encoding,
+                         const ImageColorTags* tags) {
+  constexpr unsigned kMaxCode = 65535;
   const int c = image.channels;
+  const bool tagged = tags && !tags->srgb;
+  const int curves = tagged && c >= 3 ? 3 : 1;
+  std::vector<std::vector<float>> luts(static_cast<std::size_t>(curves), std::vector<float>(kMaxCode + 1));
+  for (int k = 0; k < curves; ++k)
+    for (unsigned i = 0; i <= kMaxCode; ++i) {
+      const double v = static_cast<double>(i) / kMaxCode;
+      luts[static_cast<std::size_t>(k)][i] = static_cast<float>(tagged                              ? decode_tagged_code(*tags, k, i, kMaxCode)
+                                                                : encoding == TextureEncoding::srgb ? color::srgb_decode(v)
+                                                                                                    : v);
+    }
   image.texels.resize(static_cast<std::size_t>(image.width) * image.height * c);
   for (std::size_t i = 0; i < image.texels.size(); ++i) {
-    const bool alpha = is_alpha_channel(static_cast<int>(i % static_cast<std::size_t>(c)), c);
-    image.texels[i] = alpha ? static_cast<float>(codes[i] / kMaxCode) : lut[codes[i]];
+    const int channel = static_cast<int>(i % static_cast<std::size_t>(c));
+    image.texels[i] = is_alpha_channel(channel, c)
+                          ? static_cast<float>(codes[i] / static_cast<double>(kMaxCode))
+                          : luts[static_cast<std::size_t>(std::min(channel, curves - 1))][codes[i]];
   }
+}
+
+// An 8-bit image whose tags are not sRGB: its codes decoded through the tags' curves into
+// half floats (linear; alpha linearly), 2 bytes a sample instead of the code's 1.
+void decode_tagged_8_bit_codes(TextureImage& image, const ImageColorTags& tags, const TextureLimits& limits) {
+  const int c = image.channels;
+  if (limits.budget)
+    limits.budget->reserve(image.codes.size() * sizeof(std::uint16_t), 0,
+                           fmt::format("texture '{}' ({}x{}, {} channels, decoded to half floats for its colour "
+                                       "tags)",
+                                       image.name, image.width, image.height, c));
+  std::array<std::array<std::uint16_t, 256>, 4> luts;
+  for (int k = 0; k < c; ++k)
+    for (unsigned code = 0; code < 256; ++code)
+      luts[static_cast<std::size_t>(k)][code] =
+          Imath::half(static_cast<float>(is_alpha_channel(k, c) ? code / 255.0
+                                                                 : decode_tagged_code(tags, std::min(k, 2), code, 255)))
+              .bits();
+  image.halves.resize(image.codes.size());
+  for (std::size_t i = 0; i < image.codes.size(); ++i)
+    image.halves[i] = luts[i % static_cast<std::size_t>(c)][image.codes[i]];
+  image.codes = {};
+}
+
+// The space a tagged colour texture's RGB goes into: the one `content` asks for, or for
+// color_own_gamut the smallest of Rec.709, Rec.2020 and ACEScg that holds its primaries.
+ColorPickerSpace tagged_texel_space(const ImageColorTags& tags, TextureContent content) {
+  if (content != TextureContent::color_own_gamut) return requested_space(content);
+  for (const ColorPickerSpace candidate : {ColorPickerSpace::srgb, ColorPickerSpace::rec2020}) {
+    const Mat3 to = image_color_conversion(tags, picker_color_space(candidate));
+    bool holds = true;
+    for (const Vec3d primary : {Vec3d(1, 0, 0), Vec3d(0, 1, 0), Vec3d(0, 0, 1)})
+      holds = holds && !color::is_outside_gamut(to * primary);
+    if (holds) return candidate;
+  }
+  return ColorPickerSpace::acescg;
+}
+
+// A decoded colour texture after its tags: linear RGB converted into the space its use asks
+// for (nothing for grey images, whose values are achromatic in every space), and the
+// loader's note of what was done or passed over.
+void convert_tagged_texels(TextureImage& image, const ImageColorTags& tags, TextureContent content) {
+  std::string note;
+  if (!tags.srgb) {
+    std::size_t clipped = 0;
+    if (image.channels >= 3) {
+      const ColorPickerSpace target = tagged_texel_space(tags, content);
+      clipped = convert_texels(image, image_color_conversion(tags, picker_color_space(target)), target);
+    }
+    note = fmt::format("texture '{}': {} decoded{}{}", image.name, tags.source,
+                       image.channels >= 3 ? fmt::format(" and converted to {}", picker_space_label(image.texel_space))
+                                           : std::string(" (grey)"),
+                       clipped_texels_text(clipped, image));
+  }
+  if (!tags.passed_over.empty())
+    note += (note.empty() ? fmt::format("texture '{}': ", image.name) : std::string("; ")) + tags.passed_over +
+            (tags.srgb ? "; read as sRGB" : "");
+  image.primaries_note = note;
 }
 
 // stb_image reads past the end of its input as zeros, so a truncated .hdr or JPEG would
@@ -365,12 +433,18 @@ TextureImage decode_radiance(std::span<const unsigned char> bytes, std::string_v
 
 // `format` (png or jpeg) is detect_image_format's answer for `bytes`, which the caller has.
 TextureImage decode_with_stb(std::span<const unsigned char> bytes, ImageFileFormat format, std::string_view name,
-                             TextureEncoding encoding, const TextureLimits& limits) {
+                             TextureEncoding encoding, const TextureLimits& limits, TextureContent content,
+                             ImageColorTagUse tag_use) {
   if (format == ImageFileFormat::jpeg) check_jpeg_huffman_tables(bytes, name);
   if (format == ImageFileFormat::png) {
     if (const auto cleaned = without_empty_idat_chunks(bytes, name))
-      return decode_with_stb(*cleaned, format, name, encoding, limits);
+      return decode_with_stb(*cleaned, format, name, encoding, limits, content, tag_use);
   }
+  // A colour texture's tags (image_color_tags.h), read before the pixels: a refusal costs
+  // no decode.
+  std::optional<ImageColorTags> tags;
+  if (tag_use == ImageColorTagUse::honour && encoding == TextureEncoding::srgb && is_color_content(content))
+    tags = format == ImageFileFormat::png ? read_png_color_tags(bytes, name) : read_jpeg_color_tags(bytes, name);
   if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max()))
     throw IoError(fmt::format("cannot read image '{}': file too large", name));
   const auto header = stb_header(bytes);
@@ -392,7 +466,7 @@ TextureImage decode_with_stb(std::span<const unsigned char> bytes, ImageFileForm
   if (decoded_bytes_per_sample == 2) {
     const auto pixels = input.decode(&stbi_load_16_from_callbacks, width, height, channels);
     check(pixels.get());
-    decode_16_bit_codes(pixels.get(), image, encoding);
+    decode_16_bit_codes(pixels.get(), image, encoding, tags ? &*tags : nullptr);
   } else {
     const bool as_rgba = header->decoded_channels != header->channels;
     const auto pixels =
@@ -413,7 +487,9 @@ TextureImage decode_with_stb(std::span<const unsigned char> bytes, ImageFileForm
       if (texels > 0) std::memcpy(rgb + 3 * (texels - 1), rgba + 4 * (texels - 1), 3);
     }
     image.encoding = encoding;
+    if (tags && !tags->srgb) decode_tagged_8_bit_codes(image, *tags, limits);
   }
+  if (tags) convert_tagged_texels(image, *tags, content);
   return image;
 }
 
@@ -543,11 +619,12 @@ ImageFileFormat detect_image_format(std::span<const unsigned char> head) {
 }
 
 TextureImage decode_texture_memory(std::span<const unsigned char> bytes, std::string_view name,
-                                   TextureEncoding encoding, const TextureLimits& limits, TextureContent content) {
+                                   TextureEncoding encoding, const TextureLimits& limits, TextureContent content,
+                                   ImageColorTagUse tag_use) {
   switch (const ImageFileFormat format = detect_image_format(bytes)) {
     case ImageFileFormat::png:
     case ImageFileFormat::jpeg:
-      return decode_with_stb(bytes, format, name, encoding, limits);
+      return decode_with_stb(bytes, format, name, encoding, limits, content, tag_use);
     case ImageFileFormat::radiance_hdr:
       return decode_radiance(bytes, name, limits, content);
     case ImageFileFormat::openexr:

@@ -38,15 +38,24 @@ ImageFileFormat detect_image_file_format(const std::filesystem::path& path);
 // and TextureImage::texel_space says which. The file's space is an OpenEXR's
 // `chromaticities` attribute (Rec.709 without one), or a Radiance picture's PRIMARIES line
 // or XYZE format (Rec.709 without either; its EXPOSURE and COLORCORR factors are divided
-// out too, radiance_hdr.h). Data (normal, roughness, height maps) is read as stored. 8-bit
-// images carry no primaries here and stay Rec.709.
+// out too, radiance_hdr.h), or a PNG's or JPEG's colour tags (cICP, an ICC profile, sRGB,
+// cHRM and gAMA; image_color_tags.h): an 8-bit image in sRGB, or without tags, keeps its
+// codes; one whose tags say otherwise is decoded through their curves into half floats
+// and converted. Data (normal, roughness, height maps) is read as stored.
 TextureImage read_texture_file(const std::filesystem::path& path, TextureEncoding encoding,
                                const TextureLimits& limits, TextureContent content = TextureContent::data);
+
+// Whether a PNG's or JPEG's colour tags are read (image_color_tags.h). glTF 2.0 §3.8.3
+// says a glTF's images are sRGB whatever they say ("Any colorspace information (such as
+// ICC profiles, intents, gamma values, etc.) from PNG or JPEG images MUST be ignored"); its
+// loader passes `ignore`.
+enum class ImageColorTagUse : std::uint8_t { honour, ignore };
 
 // The same for PNG, JPEG and .hdr data already in memory (EXR needs a file); `name` is
 // used in messages and as the texture's name.
 TextureImage decode_texture_memory(std::span<const unsigned char> bytes, std::string_view name,
-                                   TextureEncoding encoding, const TextureLimits& limits, TextureContent content);
+                                   TextureEncoding encoding, const TextureLimits& limits, TextureContent content,
+                                   ImageColorTagUse tag_use = ImageColorTagUse::honour);
 
 // What decode_texture_memory (or read_texture_file, for OpenEXR) reserves from a budget for
 // `bytes`, read from the header: the texels as kept (a byte per sample of an 8-bit image, 4

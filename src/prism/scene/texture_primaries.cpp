@@ -37,13 +37,14 @@ std::size_t convert_texels(TextureImage& image, const Mat3& conversion, ColorPic
     if (color::is_outside_gamut(v)) ++clipped;
     return max(v, Vec3d(0.0));
   };
+  const auto stride = static_cast<std::size_t>(image.channels);  // RGB or RGBA: alpha stays
   for (std::size_t t = 0; t < texels; ++t) {
     if (image.has_halves()) {
-      std::uint16_t* h = image.halves.data() + 3 * t;
+      std::uint16_t* h = image.halves.data() + stride * t;
       const Vec3d v = convert(Vec3d(half_bits_to_float(h[0]), half_bits_to_float(h[1]), half_bits_to_float(h[2])));
       for (int k = 0; k < 3; ++k) h[k] = Imath::half(static_cast<float>(v[k])).bits();
     } else {
-      float* f = image.texels.data() + 3 * t;
+      float* f = image.texels.data() + stride * t;
       const Vec3d v = convert(Vec3d(f[0], f[1], f[2]));
       for (int k = 0; k < 3; ++k) f[k] = static_cast<float>(v[k]);
     }

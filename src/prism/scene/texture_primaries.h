@@ -24,7 +24,7 @@ std::string primaries_text(const color::Primaries& p);
 // Rec.709, Rec.2020 and ACEScg that holds `file_space`, otherwise the one it asks for.
 ColorPickerSpace texel_space_for(TextureContent content, const color::ColorSpace& file_space);
 
-// Replaces every RGB texel (halves or floats; channels == 3) v by conversion · v, clipping
+// Replaces every RGB texel (halves or floats; channels 3, or 4 with alpha, which stays) v by conversion · v, clipping
 // what falls below 0, and sets texel_space to `target`. Returns how many texels were
 // clipped.
 std::size_t convert_texels(TextureImage& image, const Mat3& conversion, ColorPickerSpace target);

@@ -99,7 +99,8 @@ int GltfBuilder::texture(int index, const tinygltf::ExtensionMap& extensions, Te
       decoded_images_.erase(ahead);
     } else {
       decoded = decode_texture_memory(image.image, image_name(t.source), encoding,
-                                      {options_.max_texture_dimension, options_.memory_budget}, content_of(encoding));
+                                      {options_.max_texture_dimension, options_.memory_budget}, content_of(encoding),
+                                      ImageColorTagUse::ignore);  // glTF 2.0 §3.8.3
     }
     if (!decoded.primaries_note.empty()) warnings_.push_back(decoded.primaries_note);
     scene_.textures.push_back(std::move(decoded));
@@ -187,7 +188,7 @@ void GltfBuilder::decode_images_in_parallel() {
         decoded[k].image = decode_texture_memory(model_.images[static_cast<std::size_t>(source)].image,
                                                  image_name(source), encoding,
                                                  {options_.max_texture_dimension, options_.memory_budget},
-                                                 content_of(encoding));
+                                                 content_of(encoding), ImageColorTagUse::ignore);
       } catch (...) {
         decoded[k].error = std::current_exception();
       }

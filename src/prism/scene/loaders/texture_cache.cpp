@@ -7,16 +7,19 @@
 
 #include "prism/core/error.h"
 #include "prism/core/parallel.h"
+#include "prism/scene/image_color_tags.h"
 
 namespace prism::loaders {
 namespace {
 
 // OpenEXR and Radiance pictures can name their primaries (an OpenEXR's chromaticities, a
-// .hdr's PRIMARIES line or XYZE format), so their colour texels depend on the use.
+// .hdr's PRIMARIES line or XYZE format), and PNG and JPEG images theirs in colour tags
+// (cICP, an ICC profile, cHRM and gAMA: image_color_tags.h), so their colour texels depend
+// on the use.
 bool may_name_primaries(const std::filesystem::path& file) {
   std::string extension = file.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return extension == ".exr" || extension == ".hdr" || extension == ".pic";
+  return extension == ".exr" || extension == ".hdr" || extension == ".pic" || image_file_has_color_tags(file);
 }
 
 }  // namespace
@@ -29,8 +32,8 @@ int TextureCache::load(const std::filesystem::path& file, TextureEncoding encodi
   if (ec) canonical = file;
   TextureContent what =
       content.value_or(encoding == TextureEncoding::srgb ? TextureContent::color : TextureContent::data);
-  // Only an OpenEXR's or a Radiance picture's texels go into a wide space (texture_file.h):
-  // any other image is decoded once for every colour use.
+  // Only an OpenEXR's, a Radiance picture's or a tagged PNG's or JPEG's texels go into a
+  // wide space (texture_file.h): any other image is decoded once for every colour use.
   if (is_color_content(what) && !may_name_primaries(canonical)) what = TextureContent::color;
   const Key key{canonical.string(), encoding, wrap_u, wrap_v, what};
   if (const auto it = indices_.find(key); it != indices_.end()) return it->second;

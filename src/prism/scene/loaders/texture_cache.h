@@ -43,7 +43,8 @@ class TextureCache {
   // `content` (read_texture_file): by default colour when asked sRGB-encoded, data when
   // linear; a loader that knows better says (an OpenEXR is linear whatever is asked). A
   // colour in a wide space is kept in the key only for a file named .exr, .hdr or .pic,
-  // whose header can name its primaries: any other image is Rec.709 whatever is asked
+  // whose header can name its primaries, and for a PNG or JPEG with colour tags
+  // (image_file_has_color_tags): any other image is sRGB whatever is asked
   // (texture_file.h), and is decoded once.
   int load(const std::filesystem::path& file, TextureEncoding encoding, TextureWrap wrap_u = TextureWrap::repeat,
            TextureWrap wrap_v = TextureWrap::repeat, std::string context = {}, ImageCheck check = {},

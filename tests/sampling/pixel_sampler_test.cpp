@@ -9,6 +9,7 @@
 
 #include "prism/core/sample_stream.h"
 #include "prism/sampling/owen_scrambling.h"
+#include "prism/sampling/padded_sobol_lanes.h"
 #include "prism/sampling/sobol.h"
 #include "prism/sampling/zsobol_index.h"
 #include "support/chi_square.h"
@@ -113,6 +114,55 @@ TEST(PixelSampler, BounceBlocksDrawOnlyTheNumbersAskedFor) {
         EXPECT_EQ(b.roulette, roulette ? full.roulette : 0.0f);
       }
     }
+}
+
+TEST(PixelSampler, OnlyNeededIsWhatAPartialBlockDraws) {
+  // The integrator draws whole blocks ahead of shading and hands each vertex only_needed()
+  // of it: that must be exactly what asking bounce_samples for the partial block gives.
+  for (SamplerKind k : {SamplerKind::independent, SamplerKind::sobol, SamplerKind::zsobol})
+    for (std::uint32_t sample : {0u, 41u, 0x9e3779b9u}) {
+      const PixelSample s{3, 5 * 64 + 1, 64, sample};
+      for (unsigned needs = 0; needs <= kNeedAllBounceSamples; ++needs) {
+        const BounceSamples a = only_needed(bounce_samples(k, s, 3), needs), b = bounce_samples(k, s, 3, needs);
+        EXPECT_EQ(a.light_select, b.light_select);
+        expect_same(a.light, b.light);
+        EXPECT_EQ(a.lobe, b.lobe);
+        expect_same(a.direction, b.direction);
+        EXPECT_EQ(a.roulette, b.roulette);
+      }
+    }
+}
+
+TEST(PixelSampler, SobolLanesDrawTheScalarBits) {
+  // padded_sobol_lanes.h's AVX2 blocks against the scalar requests (sample_1d/sample_2d,
+  // which never take the lanes), over seeds, pixels, sample indices with every bit in play,
+  // depths and every partial block; the camera block with and without a lens.
+  if (!padded_sobol_lanes_available()) GTEST_SKIP() << "this processor (or PRISM_SAMPLER_SCALAR) runs no AVX2 lanes";
+  std::uint64_t state = 1;
+  const auto next = [&] { return static_cast<std::uint32_t>((state = mix64(state)) >> 32); };
+  for (int trial = 0; trial < 300; ++trial) {
+    const PixelSample s{next() | (std::uint64_t{next()} << 32), next() % 65536, 256, trial < 20 ? next() % 64 : next()};
+    const CameraSamples c = padded_sobol_camera_block_lanes(s, true);
+    expect_same(c.pixel_jitter, sample_2d(SamplerKind::sobol, s, kPixelJitterDimension));
+    expect_same(c.lens, sample_2d(SamplerKind::sobol, s, kLensDimension));
+    EXPECT_NEAR(c.wavelength, sample_1d(SamplerKind::sobol, s, kWavelengthDimension), 0x1p-24);
+    EXPECT_EQ(bits_to_unit_float(static_cast<std::uint32_t>(c.wavelength * 0x1p32)),
+              sample_1d(SamplerKind::sobol, s, kWavelengthDimension));
+    const CameraSamples pinhole = padded_sobol_camera_block_lanes(s, false);
+    expect_same(pinhole.pixel_jitter, c.pixel_jitter);
+    expect_same(pinhole.lens, Vec2f(0.0f, 0.0f));
+    EXPECT_EQ(pinhole.wavelength, c.wavelength);
+    const int depth = static_cast<int>(next() % 12);
+    const std::uint32_t base = kFirstBounceDimension + kDimensionsPerBounce * static_cast<std::uint32_t>(depth);
+    for (unsigned needs = 0; needs <= kNeedAllBounceSamples; ++needs) {
+      const BounceSamples b = padded_sobol_bounce_block_lanes(s, depth, needs);
+      EXPECT_EQ(b.light_select, needs & kNeedLightSelect ? sample_1d(SamplerKind::sobol, s, base) : 0.0f);
+      expect_same(b.light, needs & kNeedLightPoint ? sample_2d(SamplerKind::sobol, s, base + 1) : Vec2f(0.0f, 0.0f));
+      EXPECT_EQ(b.lobe, needs & kNeedLobe ? sample_1d(SamplerKind::sobol, s, base + 3) : 0.0f);
+      expect_same(b.direction, needs & kNeedDirection ? sample_2d(SamplerKind::sobol, s, base + 4) : Vec2f(0.0f, 0.0f));
+      EXPECT_EQ(b.roulette, needs & kNeedRoulette ? sample_1d(SamplerKind::sobol, s, base + 6) : 0.0f);
+    }
+  }
 }
 
 TEST(PixelSampler, SobolRunsOfSamplesArePerPixelNetsWhateverTheirLength) {

@@ -28,7 +28,7 @@ struct WavefrontIntegrator<Mode>::Paths {
       : ray(n), throughput(n), radiance(n), wavelengths(n), hit(n), hit_found(n), shadow_ray(n),
         shadow_contribution(n), shadow_pending(n), shadow_blocked(n), prev_position(n), prev_normal(n), prev_pdf(n),
         eta_scale(n), cone_width(n), cone_spread(n), prev_specular(n), depth(n), finished(n), sample_index(n),
-        sample_end(n), inside_absorbing(n), interior_sigma(n) {}
+        sample_end(n), inside_absorbing(n), interior_sigma(n), bounce_block(n) {}
   std::size_t capacity() const { return ray.size(); }
   std::uint32_t first_pixel = 0;
   std::vector<Ray> ray;
@@ -57,6 +57,8 @@ struct WavefrontIntegrator<Mode>::Paths {
   // The AOVs of each slot's current sample, written by shade() at depth 0 and added to the
   // film with the sample. Empty unless the film keeps AOVs.
   std::vector<AovSample> first_hit_aovs;
+  // Each hit's bounce block, drawn whole before shading where bounce_blocks_ahead_.
+  std::vector<BounceSamples> bounce_block;
 };
 
 template <class Mode>
@@ -75,6 +77,7 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
                       (m.positions.size() + m.normals.size() + m.tangents.size()) * sizeof(Vec3f) +
                       m.uvs.size() * sizeof(Vec2f);
   prefetch_geometry_ = geometry_bytes > (std::size_t{512} << 10);
+  bounce_blocks_ahead_ = whole_bounce_blocks_are_cheap(settings_.sampler);
   if (mip_pyramids.size() != scene.textures.size())
     throw std::invalid_argument("WavefrontIntegrator: one mip pyramid per scene texture expected");
   for (const Material& m : scene.materials) {
@@ -445,8 +448,11 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   if (p.depth[slot] + 1 >= settings_.russian_roulette_depth) needs |= kNeedRoulette;
   const std::uint32_t pixel = p.first_pixel + slot;
   const BounceSamples u =
-      bounce_samples(settings_.sampler, PixelSample{seed_, pixel, static_cast<std::uint32_t>(width_), p.sample_index[slot]},
-                     p.depth[slot], needs);
+      bounce_blocks_ahead_
+          ? only_needed(p.bounce_block[slot], needs)
+          : bounce_samples(settings_.sampler,
+                           PixelSample{seed_, pixel, static_cast<std::uint32_t>(width_), p.sample_index[slot]},
+                           p.depth[slot], needs);
 
   if (light_sampled) {
     if (const auto ls = lights_.sample(si.position, u.light_select, u.light, si.shading.n)) {
@@ -673,8 +679,15 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
       accel_.intersect_slots(p.ray.data(), live.data() + b, e - b, p.hit.data(), p.hit_found.data());
     });
     // Stage 2: shading emits continuation and shadow rays, with the geometry of the hits
-    // a few slots ahead prefetched (surface_interaction.h) where it is too big for the caches.
+    // a few slots ahead prefetched (surface_interaction.h) where it is too big for the caches,
+    // and the hits' bounce blocks drawn first where that is cheap (bounce_blocks_ahead_).
     for_range(parallel, live.size(), kGrain, [&](std::size_t b, std::size_t e) {
+      if (bounce_blocks_ahead_)
+        for (std::size_t i = b; i < e; ++i)
+          if (const std::uint32_t s = live[i]; p.hit_found[s])
+            p.bounce_block[s] = bounce_samples(
+                settings_.sampler,
+                PixelSample{seed_, p.first_pixel + s, static_cast<std::uint32_t>(width_), p.sample_index[s]}, p.depth[s]);
       if (!prefetch_geometry_) {
         for (std::size_t i = b; i < e; ++i) shade(p, live[i]);
         return;

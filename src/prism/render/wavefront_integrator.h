@@ -191,6 +191,11 @@ class WavefrontIntegrator {
   std::uint64_t seed_;
   bool regenerate_;
   bool prefetch_geometry_ = false;  // the meshes outgrow the caches: shading prefetches hits' vertices
+  // Every hit's bounce block is drawn whole for the queue before shading (Paths::bounce_block),
+  // where that is cheap (whole_bounce_blocks_are_cheap): the draws of a queue are
+  // independent of one another and overlap, where inside shade() they are a link in each
+  // path's chain of dependent work (BENCHMARKS.md "Session 28").
+  bool bounce_blocks_ahead_ = false;
 };
 
 }  // namespace prism

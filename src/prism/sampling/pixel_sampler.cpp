@@ -3,6 +3,8 @@
 #include "prism/core/pcg32.h"
 #include "prism/core/sample_stream.h"
 #include "prism/sampling/owen_scrambling.h"
+#include "prism/sampling/padded_sobol.h"
+#include "prism/sampling/padded_sobol_lanes.h"
 #include "prism/sampling/sobol.h"
 #include "prism/sampling/zsobol_index.h"
 
@@ -28,26 +30,16 @@ struct IndependentDimensions {
 };
 
 // Padded Sobol' with Burley's (2020) shuffled, Owen-scrambled index, all seeds per
-// (seed, pixel, dimension): one 64-bit hash per request gives the index-shuffle seed and
-// the first axis' scramble seed, a second one the other axis'.
-//
-// By definition index = NUS(sample_index, low), x = NUS(sobol_0(index), high) and
-// y = NUS(sobol_1(index), high'), with NUS(v, s) = rev(LK(rev(v), s)) (owen_scrambling.h).
-// Since sobol_0 is rev itself, the reversals cancel: x = rev(LK(index, high)); the sample
-// index is reversed once per block, and sobol_1 is taken already reversed. Three bit
-// reversals per 2D request instead of seven, the same bits (pixel_sampler_test checks the
-// definition).
+// (seed, pixel, dimension) (padded_sobol.h). Where the processor has AVX2, the blocks are
+// drawn by padded_sobol_lanes.h instead, with the same bits.
 struct PaddedSobolDimensions {
   std::uint64_t pixel_key;
   std::uint32_t reversed_sample_index;
   explicit PaddedSobolDimensions(const PixelSample& s)
-      : pixel_key(mix64(mix64(s.seed ^ 0x736f626f6c5eedull) + s.pixel_index)),
-        reversed_sample_index(reverse_bits_32(s.sample_index)) {}
-  std::uint64_t request_hash(std::uint32_t dimension) const {
-    return mix64(pixel_key + 0x9e3779b97f4a7c15ull * (dimension + 1ull));
-  }
-  static std::uint32_t low(std::uint64_t h) { return static_cast<std::uint32_t>(h); }
-  static std::uint32_t high(std::uint64_t h) { return static_cast<std::uint32_t>(h >> 32); }
+      : pixel_key(padded_sobol_pixel_key(s.seed, s.pixel_index)), reversed_sample_index(reverse_bits_32(s.sample_index)) {}
+  std::uint64_t request_hash(std::uint32_t dimension) const { return padded_sobol_request_hash(pixel_key, dimension); }
+  static std::uint32_t low(std::uint64_t h) { return padded_sobol_shuffle_seed(h); }
+  static std::uint32_t high(std::uint64_t h) { return padded_sobol_x_seed(h); }
   std::uint32_t shuffled_index(std::uint64_t h) const {
     return reverse_bits_32(laine_karras_permutation(reversed_sample_index, low(h)));
   }
@@ -65,7 +57,7 @@ struct PaddedSobolDimensions {
   Vec2f get2d(std::uint32_t dimension) const {
     const std::uint64_t h = request_hash(dimension);
     const std::uint32_t index = shuffled_index(h);
-    const std::uint32_t y = reverse_bits_32(laine_karras_permutation(sobol_dimension1_reversed_bits(index), high(mix64(h))));
+    const std::uint32_t y = reverse_bits_32(laine_karras_permutation(sobol_dimension1_reversed_bits(index), padded_sobol_y_seed(h)));
     return {bits_to_unit_float(x_bits(index, h)), bits_to_unit_float(y)};
   }
 };
@@ -138,7 +130,9 @@ std::optional<SamplerKind> parse_sampler(std::string_view name) {
 
 CameraSamples camera_samples(SamplerKind kind, const PixelSample& s, bool lens) {
   switch (kind) {
-    case SamplerKind::sobol: return camera_block(PaddedSobolDimensions{s}, lens);
+    case SamplerKind::sobol:
+      return padded_sobol_lanes_available() ? padded_sobol_camera_block_lanes(s, lens)
+                                            : camera_block(PaddedSobolDimensions{s}, lens);
     case SamplerKind::zsobol: return camera_block(ZSobolDimensions{s}, lens);
     case SamplerKind::independent: break;
   }
@@ -147,11 +141,17 @@ CameraSamples camera_samples(SamplerKind kind, const PixelSample& s, bool lens) 
 
 BounceSamples bounce_samples(SamplerKind kind, const PixelSample& s, int depth, unsigned needs) {
   switch (kind) {
-    case SamplerKind::sobol: return bounce_block(PaddedSobolDimensions{s}, depth, needs);
+    case SamplerKind::sobol:
+      return padded_sobol_lanes_available() ? padded_sobol_bounce_block_lanes(s, depth, needs)
+                                            : bounce_block(PaddedSobolDimensions{s}, depth, needs);
     case SamplerKind::zsobol: return bounce_block(ZSobolDimensions{s}, depth, needs);
     case SamplerKind::independent: break;
   }
   return bounce_block(IndependentDimensions{s}, depth, needs);
+}
+
+bool whole_bounce_blocks_are_cheap(SamplerKind kind) {
+  return kind == SamplerKind::sobol && padded_sobol_lanes_available();
 }
 
 float sample_1d(SamplerKind kind, const PixelSample& s, std::uint32_t dimension) {

@@ -89,6 +89,22 @@ CameraSamples camera_samples(SamplerKind kind, const PixelSample& sample, bool l
 BounceSamples bounce_samples(SamplerKind kind, const PixelSample& sample, int depth,
                              unsigned needs = kNeedAllBounceSamples);
 
+// The numbers of a whole block that `needs` asks for, the others 0: what bounce_samples
+// returns for `needs` (the integrator draws whole blocks ahead of shading, where that is
+// cheaper, and hands each vertex only what it asked for).
+constexpr BounceSamples only_needed(BounceSamples b, unsigned needs) {
+  if (!(needs & kNeedLightSelect)) b.light_select = 0.0f;
+  if (!(needs & kNeedLightPoint)) b.light = Vec2f(0.0f, 0.0f);
+  if (!(needs & kNeedLobe)) b.lobe = 0.0f;
+  if (!(needs & kNeedDirection)) b.direction = Vec2f(0.0f, 0.0f);
+  if (!(needs & kNeedRoulette)) b.roulette = 0.0f;
+  return b;
+}
+
+// Whether drawing a whole bounce block costs little more than the numbers a vertex reads:
+// the padded Sobol' sampler where the processor runs its AVX2 lanes (padded_sobol_lanes.h).
+bool whole_bounce_blocks_are_cheap(SamplerKind kind);
+
 // Single requests (tests, tools, and the numbers outside the blocks): dimension
 // `dimension` (and `dimension + 1` for 2D) of a sample, as laid out above.
 float sample_1d(SamplerKind kind, const PixelSample& sample, std::uint32_t dimension);

@@ -58,6 +58,12 @@ TextureImage read_color(const std::string& file, TextureContent content = Textur
   return read_texture_file(kData / file, TextureEncoding::srgb, TextureLimits(64, budget), content);
 }
 
+// The file decoded as a glTF image is: its tags ignored.
+TextureImage read_ignoring_tags(const std::string& file) {
+  return decode_texture_memory(read_file_bytes(kData / file, "image"), file, TextureEncoding::srgb, TextureLimits(64),
+                               TextureContent::color, ImageColorTagUse::ignore);
+}
+
 // Tolerance: the texels are half floats (relative precision 2^-11 = 4.9e-4), and the two
 // implementations round the colorants differently (lcms2 through its s15Fixed16 tags and
 // its own Bradford, Prism in double): 1e-3 relative, and 2e-5 absolute near black.
@@ -147,9 +153,7 @@ TEST(ImageColorTags, GreyIccProfileDecodesItsCurve) {
 TEST(ImageColorTags, JpegProfileOverTwoApp2SegmentsIsRead) {
   // 98 kB of profile, which Pillow split into two APP2 segments; every pixel is the code
   // 200,100,50 (quality 100, 4:4:4: the decode without tags checks that premise first).
-  const std::vector<unsigned char> bytes = read_file_bytes(kData / "display-p3-large-icc.jpg", "image");
-  const TextureImage codes = decode_texture_memory(bytes, "p3.jpg", TextureEncoding::srgb, TextureLimits(64),
-                                                   TextureContent::color, ImageColorTagUse::ignore);
+  const TextureImage codes = read_ignoring_tags("display-p3-large-icc.jpg");
   ASSERT_TRUE(codes.has_codes());
   for (std::size_t i = 0; i < codes.codes.size(); i += 3)
     ASSERT_TRUE(codes.codes[i] == 200 && codes.codes[i + 1] == 100 && codes.codes[i + 2] == 50) << i;
@@ -161,9 +165,7 @@ TEST(ImageColorTags, JpegProfileOverTwoApp2SegmentsIsRead) {
 
 TEST(ImageColorTags, GltfImagesAndDataTexturesIgnoreTags) {
   // glTF 2.0 §3.8.3: colour information in its PNG and JPEG images MUST be ignored.
-  const std::vector<unsigned char> bytes = read_file_bytes(kData / "display-p3-icc.png", "image");
-  const TextureImage gltf = decode_texture_memory(bytes, "p3.png", TextureEncoding::srgb, TextureLimits(64),
-                                                  TextureContent::color, ImageColorTagUse::ignore);
+  const TextureImage gltf = read_ignoring_tags("display-p3-icc.png");
   EXPECT_TRUE(gltf.has_codes());
   EXPECT_EQ(gltf.primaries_note, "");
   // Data (a roughness or normal map) is read as stored whatever it says.

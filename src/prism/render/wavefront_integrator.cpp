@@ -312,9 +312,14 @@ Spectrum<Mode> WavefrontIntegrator<Mode>::textured_emitted_radiance(std::uint32_
 }
 
 template <class Mode>
+PixelSample WavefrontIntegrator<Mode>::pixel_sample(const Paths& p, std::uint32_t slot) const {
+  return {seed_, p.first_pixel + slot, static_cast<std::uint32_t>(width_), p.sample_index[slot]};
+}
+
+template <class Mode>
 Vec2f WavefrontIntegrator<Mode>::facet_numbers(const Paths& p, std::uint32_t slot) const {
-  const PixelSample s{seed_, p.first_pixel + slot, static_cast<std::uint32_t>(width_), p.sample_index[slot]};
-  return sample_2d(settings_.sampler, s, kFirstFacetDimension + 2 * static_cast<std::uint32_t>(p.depth[slot]));
+  return sample_2d(settings_.sampler, pixel_sample(p, slot),
+                   kFirstFacetDimension + 2 * static_cast<std::uint32_t>(p.depth[slot]));
 }
 
 template <class Mode>
@@ -446,13 +451,9 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   if (bsdf.uses_lobe_sample()) needs |= kNeedLobe;
   if (bsdf.uses_direction_sample()) needs |= kNeedDirection;
   if (p.depth[slot] + 1 >= settings_.russian_roulette_depth) needs |= kNeedRoulette;
-  const std::uint32_t pixel = p.first_pixel + slot;
-  const BounceSamples u =
-      bounce_blocks_ahead_
-          ? only_needed(p.bounce_block[slot], needs)
-          : bounce_samples(settings_.sampler,
-                           PixelSample{seed_, pixel, static_cast<std::uint32_t>(width_), p.sample_index[slot]},
-                           p.depth[slot], needs);
+  const BounceSamples u = bounce_blocks_ahead_
+                              ? only_needed(p.bounce_block[slot], needs)
+                              : bounce_samples(settings_.sampler, pixel_sample(p, slot), p.depth[slot], needs);
 
   if (light_sampled) {
     if (const auto ls = lights_.sample(si.position, u.light_select, u.light, si.shading.n)) {
@@ -685,9 +686,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
       if (bounce_blocks_ahead_)
         for (std::size_t i = b; i < e; ++i)
           if (const std::uint32_t s = live[i]; p.hit_found[s])
-            p.bounce_block[s] = bounce_samples(
-                settings_.sampler,
-                PixelSample{seed_, p.first_pixel + s, static_cast<std::uint32_t>(width_), p.sample_index[s]}, p.depth[s]);
+            p.bounce_block[s] = bounce_samples(settings_.sampler, pixel_sample(p, s), p.depth[s]);
       if (!prefetch_geometry_) {
         for (std::size_t i = b; i < e; ++i) shade(p, live[i]);
         return;

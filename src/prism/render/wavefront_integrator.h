@@ -147,6 +147,8 @@ class WavefrontIntegrator {
                                                     const Frame& unmapped, float cone_width, const Ray& ray) const;
   // Microfacet normal mapping's two numbers for the slot's current bounce (pixel_sampler.h).
   Vec2f facet_numbers(const Paths& paths, std::uint32_t slot) const;
+  // The sampler's key of the slot's current sample.
+  PixelSample pixel_sample(const Paths& paths, std::uint32_t slot) const;
   // Replaces si.shading by the material's bump-mapped frame, where it has a bump map.
   void apply_bump_map(const Material& material, SurfaceInteraction& si, float cone_width, const Ray& ray) const;
   // Roughness and metallic after the metallic-roughness texture (G, B; linear).

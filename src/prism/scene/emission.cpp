@@ -46,8 +46,13 @@ const Mat3& picker_space_conversion(ColorPickerSpace from, ColorPickerSpace to) 
 }
 
 ColorPickerSpace smallest_picker_space_holding(const color::ColorSpace& space) {
+  return smallest_picker_space_holding(
+      [&](const color::ColorSpace& candidate) { return color::conversion_matrix(space, candidate); });
+}
+
+ColorPickerSpace smallest_picker_space_holding(const std::function<Mat3(const color::ColorSpace&)>& to_candidate) {
   for (const ColorPickerSpace candidate : {ColorPickerSpace::srgb, ColorPickerSpace::rec2020}) {
-    const Mat3 to = color::conversion_matrix(space, picker_color_space(candidate));
+    const Mat3 to = to_candidate(picker_color_space(candidate));
     bool holds = true;
     for (const Vec3d primary : {Vec3d(1, 0, 0), Vec3d(0, 1, 0), Vec3d(0, 0, 1)})
       holds = holds && !color::is_outside_gamut(to * primary);

@@ -2,6 +2,7 @@
 // Radiance of an emitter in an RGB space: the colour is converted from its picker space
 // (with Bradford adaptation between whites) and scaled so that the radiance's luminance
 // equals the requested nits.
+#include <functional>
 #include <optional>
 
 #include "prism/color/color_space.h"
@@ -23,6 +24,9 @@ Vec3d picker_color_in_rec709(const Vec3f& color, ColorPickerSpace space);
 // more than round-off, color::is_outside_gamut); ACEScg, the widest, where none does
 // (ACES2065-1's AP0 primaries lie outside every real gamut).
 ColorPickerSpace smallest_picker_space_holding(const color::ColorSpace& space);
+// The same for RGB whose conversion into a candidate space `to_candidate` gives (an image's
+// ICC colorants, which are no set of chromaticities; scene/image_color_tags.h).
+ColorPickerSpace smallest_picker_space_holding(const std::function<Mat3(const color::ColorSpace&)>& to_candidate);
 // The matrix taking linear RGB in `from` to `to` (Bradford between whites; the identity
 // where they are the same): a texel's colour in a wide-gamut material's space.
 const Mat3& picker_space_conversion(ColorPickerSpace from, ColorPickerSpace to);

@@ -146,14 +146,8 @@ void decode_tagged_8_bit_codes(TextureImage& image, const ImageColorTags& tags, 
 // color_own_gamut the smallest of Rec.709, Rec.2020 and ACEScg that holds its primaries.
 ColorPickerSpace tagged_texel_space(const ImageColorTags& tags, TextureContent content) {
   if (content != TextureContent::color_own_gamut) return requested_space(content);
-  for (const ColorPickerSpace candidate : {ColorPickerSpace::srgb, ColorPickerSpace::rec2020}) {
-    const Mat3 to = image_color_conversion(tags, picker_color_space(candidate));
-    bool holds = true;
-    for (const Vec3d primary : {Vec3d(1, 0, 0), Vec3d(0, 1, 0), Vec3d(0, 0, 1)})
-      holds = holds && !color::is_outside_gamut(to * primary);
-    if (holds) return candidate;
-  }
-  return ColorPickerSpace::acescg;
+  return smallest_picker_space_holding(
+      [&](const color::ColorSpace& candidate) { return image_color_conversion(tags, candidate); });
 }
 
 // A decoded colour texture after its tags: linear RGB converted into the space its use asks

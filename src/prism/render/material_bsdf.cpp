@@ -10,6 +10,14 @@ MaterialTables::MaterialTables(const std::vector<Material>& materials) {
     // not by the first shading call that needs it.
     if (m.has_clearcoat()) bsdf::coat_directional_albedo(1.0f, m.clearcoat_roughness);
     if (m.has_sheen()) bsdf::sheen_directional_albedo(1.0f, m.sheen_roughness);  // likewise, its table
+    points_.push_back(untextured_point(m));
+    // The textures material_point() reads (render/wavefront_integrator.cpp).
+    const bool textured = m.metallic_roughness_texture >= 0 || m.clearcoat_texture >= 0 ||
+                          m.clearcoat_roughness_texture >= 0 || m.sheen_color_texture >= 0 ||
+                          m.sheen_roughness_texture >= 0 || m.specular_texture >= 0 ||
+                          m.specular_color_texture >= 0 || m.iridescence_texture >= 0 ||
+                          m.iridescence_thickness_texture >= 0;
+    point_is_fixed_.push_back(textured ? 0 : 1);
     const double r = (double(m.ior) - 1.0) / (double(m.ior) + 1.0);
     fresnel_f0_.push_back(r * r);
     if ((m.type == MaterialType::conductor) && m.conductor_fresnel == ConductorFresnel::complex_ior)

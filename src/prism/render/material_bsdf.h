@@ -18,23 +18,6 @@
 
 namespace prism {
 
-// Per-material data resolved once per render (measured metal tables).
-class MaterialTables {
- public:
-  explicit MaterialTables(const std::vector<Material>& materials);
-  const bsdf::ConductorIor* conductor(std::uint32_t material) const {
-    return conductors_[material] ? &*conductors_[material] : nullptr;
-  }
-  // A metallic_roughness material's dielectric F0 (bsdf/metallic_roughness.h) for a
-  // specular colour (KHR_materials_specular): min(((η − 1)/(η + 1))² × colour, 1) per
-  // component, in double so that η = 1.5 and white give 0.04f exactly, the glTF constant.
-  Vec3f dielectric_f0(std::uint32_t material, const Vec3f& specular_color) const;
-
- private:
-  std::vector<std::optional<bsdf::ConductorIor>> conductors_;
-  std::vector<double> fresnel_f0_;  // ((η − 1)/(η + 1))²
-};
-
 inline constexpr std::array<float, 3> kRgbRepresentativeWavelengthsNm = {630.0f, 532.0f, 465.0f};
 inline constexpr float kDLineWavelengthNm = 587.56f;
 
@@ -73,6 +56,30 @@ inline MaterialPoint untextured_point(const Material& m) {
           m.has_iridescence() ? m.iridescence : 0.0f,
           m.iridescence_thickness_max_nm};
 }
+
+// Per-material data resolved once per render (measured metal tables, fixed shading points).
+class MaterialTables {
+ public:
+  explicit MaterialTables(const std::vector<Material>& materials);
+  const bsdf::ConductorIor* conductor(std::uint32_t material) const {
+    return conductors_[material] ? &*conductors_[material] : nullptr;
+  }
+  // A metallic_roughness material's dielectric F0 (bsdf/metallic_roughness.h) for a
+  // specular colour (KHR_materials_specular): min(((η − 1)/(η + 1))² × colour, 1) per
+  // component, in double so that η = 1.5 and white give 0.04f exactly, the glTF constant.
+  Vec3f dielectric_f0(std::uint32_t material, const Vec3f& specular_color) const;
+  // The material's shading point where no texture varies it (its untextured_point), so
+  // shading copies it instead of testing every texture slot; null where a texture does.
+  const MaterialPoint* fixed_point(std::uint32_t material) const {
+    return point_is_fixed_[material] ? &points_[material] : nullptr;
+  }
+
+ private:
+  std::vector<std::optional<bsdf::ConductorIor>> conductors_;
+  std::vector<double> fresnel_f0_;  // ((η − 1)/(η + 1))²
+  std::vector<MaterialPoint> points_;          // untextured_point of each material
+  std::vector<std::uint8_t> point_is_fixed_;   // no texture of the point's parameters
+};
 
 // The colours of a shading point beside its base colour, in the transport's terms
 // (upsampled, or in the working space), each read only where the point has it:

@@ -247,6 +247,7 @@ std::optional<bsdf::NormalMapMicrosurface> WavefrontIntegrator<Mode>::apply_maps
 template <class Mode>
 MaterialPoint WavefrontIntegrator<Mode>::material_point(const Material& m, const SurfaceInteraction& si,
                                                         float cone_width, const Ray& ray) const {
+  if (const MaterialPoint* fixed = tables_.fixed_point(si.material)) return *fixed;
   MaterialPoint point = untextured_point(m);
   // glTF 2.0 §3.9.2: metallicRoughnessTexture's G channel scales roughnessFactor, B scales
   // metallicFactor (linear data). Grey textures expand to (g, g, g), so both use g.

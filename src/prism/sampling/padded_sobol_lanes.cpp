@@ -82,7 +82,39 @@ PRISM_AVX2 inline LanePoints scrambled_points(std::uint32_t sample_index, __m256
   return p;
 }
 
-PRISM_AVX2 inline int lane_seed(std::uint32_t seed) { return static_cast<int>(seed); }
+// sample_stream.h's mix64 in four 64-bit lanes. AVX2 multiplies 32 × 32 → 64 bits only:
+// the low 64 bits of a·c are lo(a)·lo(c) + ((hi(a)·lo(c) + lo(a)·hi(c)) << 32), all
+// modulo 2^64 as the scalar multiply is.
+PRISM_AVX2 inline __m256i multiply_low64_lanes(__m256i a, std::uint64_t c) {
+  const __m256i c_low = _mm256_set1_epi64x(static_cast<long long>(c & 0xffffffffu));
+  const __m256i c_high = _mm256_set1_epi64x(static_cast<long long>(c >> 32));
+  const __m256i cross = _mm256_add_epi64(_mm256_mul_epu32(_mm256_srli_epi64(a, 32), c_low), _mm256_mul_epu32(a, c_high));
+  return _mm256_add_epi64(_mm256_mul_epu32(a, c_low), _mm256_slli_epi64(cross, 32));
+}
+PRISM_AVX2 inline __m256i mix64_lanes(__m256i z) {
+  z = multiply_low64_lanes(_mm256_xor_si256(z, _mm256_srli_epi64(z, 30)), 0xbf58476d1ce4e5b9ull);
+  z = multiply_low64_lanes(_mm256_xor_si256(z, _mm256_srli_epi64(z, 27)), 0x94d049bb133111ebull);
+  return _mm256_xor_si256(z, _mm256_srli_epi64(z, 31));
+}
+
+// padded_sobol_request_hash of four dimensions `base + offsets[k]` in the four 64-bit
+// lanes, where bit k of `asked` is set; 0 (whose seeds are all 0, as mix64(0) = 0) elsewhere.
+PRISM_AVX2 inline __m256i request_hash_lanes(std::uint64_t pixel_key, std::uint32_t base, __m256i offsets, int asked) {
+  constexpr std::uint64_t kStep = 0x9e3779b97f4a7c15ull;  // padded_sobol_request_hash's
+  // key + step·(base + offset + 1) = (key + step·(base + 1)) + step·offset, modulo 2^64.
+  const __m256i keys = _mm256_add_epi64(_mm256_set1_epi64x(static_cast<long long>(pixel_key + kStep * (base + 1ull))),
+                                        multiply_low64_lanes(offsets, kStep));
+  const __m256i lane_bits = _mm256_setr_epi64x(1, 2, 4, 8);
+  const __m256i asked_lanes = _mm256_cmpeq_epi64(_mm256_and_si256(_mm256_set1_epi64x(asked), lane_bits), lane_bits);
+  return _mm256_and_si256(mix64_lanes(keys), asked_lanes);
+}
+
+// The low (shuffle) or high (scramble) 32-bit halves of the 64-bit lanes of a and b, as
+// the eight 32-bit lanes a0 a1 a2 a3 b0 b1 b2 b3.
+PRISM_AVX2 inline __m256i halves_lanes(__m256i a, __m256i b, bool high) {
+  const __m256i pick = high ? _mm256_setr_epi32(1, 3, 5, 7, 1, 3, 5, 7) : _mm256_setr_epi32(0, 2, 4, 6, 0, 2, 4, 6);
+  return _mm256_permute2x128_si256(_mm256_permutevar8x32_epi32(a, pick), _mm256_permutevar8x32_epi32(b, pick), 0x20);
+}
 
 bool detect_lanes() {
   // PRISM_SAMPLER_SCALAR=1 takes the scalar path (to compare the two on one machine).
@@ -97,21 +129,21 @@ const bool kLanes = detect_lanes();
 
 bool padded_sobol_lanes_available() { return kLanes; }
 
-// Lanes: 0 pixel jitter x, 1 lens x, 2 wavelength, 3 jitter y, 4 lens y.
+// Lanes: 0 pixel jitter x, 1 lens x, 2 wavelength, 3 jitter y, 4 lens y. The three
+// requests are hashed in three 64-bit lanes, and rehashed there for the second axes.
 PRISM_AVX2 CameraSamples padded_sobol_camera_block_lanes(const PixelSample& s, bool lens) {
   const std::uint64_t key = padded_sobol_pixel_key(s.seed, s.pixel_index);
-  const std::uint64_t jitter = padded_sobol_request_hash(key, kPixelJitterDimension);
-  const std::uint64_t lens_hash = lens ? padded_sobol_request_hash(key, kLensDimension) : 0;
-  const std::uint64_t wavelength = padded_sobol_request_hash(key, kWavelengthDimension);
-  const int jitter_shuffle = lane_seed(padded_sobol_shuffle_seed(jitter)),
-            lens_shuffle = lane_seed(padded_sobol_shuffle_seed(lens_hash));
-  const LanePoints p = scrambled_points<0b11000>(
-      s.sample_index,
-      _mm256_setr_epi32(jitter_shuffle, lens_shuffle, lane_seed(padded_sobol_shuffle_seed(wavelength)), jitter_shuffle,
-                        lens_shuffle, 0, 0, 0),
-      _mm256_setr_epi32(lane_seed(padded_sobol_x_seed(jitter)), lane_seed(padded_sobol_x_seed(lens_hash)),
-                        lane_seed(padded_sobol_x_seed(wavelength)), lane_seed(padded_sobol_y_seed(jitter)),
-                        lens ? lane_seed(padded_sobol_y_seed(lens_hash)) : 0, 0, 0, 0));
+  static_assert(kPixelJitterDimension == 0 && kLensDimension == 2 && kWavelengthDimension == 4);
+  // Requests jitter, lens, wavelength, none.
+  const __m256i hash = request_hash_lanes(key, kPixelJitterDimension, _mm256_setr_epi64x(0, 2, 4, 0), lens ? 0b111 : 0b101);
+  const __m256i rehash = mix64_lanes(hash);
+  // Shuffles: jitter, lens, wavelength, jitter, lens, then 0 (lane 3 of hash is 0).
+  const __m256i shuffle_seeds = _mm256_permutevar8x32_epi32(hash, _mm256_setr_epi32(0, 2, 4, 0, 2, 6, 6, 6));
+  // Scrambles: the three high halves, then the rehashes' of jitter and lens (y axes), then 0.
+  const __m256i scramble_seeds =
+      _mm256_blend_epi32(_mm256_permutevar8x32_epi32(hash, _mm256_setr_epi32(1, 3, 5, 7, 7, 7, 7, 7)),
+                         _mm256_permutevar8x32_epi32(rehash, _mm256_setr_epi32(7, 7, 7, 1, 3, 7, 7, 7)), 0b00011000);
+  const LanePoints p = scrambled_points<0b11000>(s.sample_index, shuffle_seeds, scramble_seeds);
   CameraSamples c;
   c.pixel_jitter = {p.u[0], p.u[3]};
   if (lens) c.lens = {p.u[1], p.u[4]};
@@ -121,27 +153,22 @@ PRISM_AVX2 CameraSamples padded_sobol_camera_block_lanes(const PixelSample& s, b
 
 // Lanes: 0 light select, 1 light x, 2 lobe, 3 direction x, 4 roulette, 5 light y,
 // 6 direction y. A request not asked for is not hashed: its lanes run on zero seeds and are
-// not read.
+// not read. The requests are hashed in two vectors of four 64-bit lanes laid out as the
+// eight lanes are (light and direction twice), and the second one's lanes 5 and 6 rehashed
+// for the second axes.
 PRISM_AVX2 BounceSamples padded_sobol_bounce_block_lanes(const PixelSample& s, int depth, unsigned needs) {
   const std::uint64_t key = padded_sobol_pixel_key(s.seed, s.pixel_index);
   const std::uint32_t base = kFirstBounceDimension + kDimensionsPerBounce * static_cast<std::uint32_t>(depth);
-  const auto hash = [&](unsigned need, std::uint32_t offset) -> std::uint64_t {
-    return needs & need ? padded_sobol_request_hash(key, base + offset) : 0;
-  };
-  const std::uint64_t select = hash(kNeedLightSelect, 0), light = hash(kNeedLightPoint, 1), lobe = hash(kNeedLobe, 3),
-                      direction = hash(kNeedDirection, 4), roulette = hash(kNeedRoulette, 6);
-  const int light_shuffle = lane_seed(padded_sobol_shuffle_seed(light)),
-            direction_shuffle = lane_seed(padded_sobol_shuffle_seed(direction));
-  const LanePoints p = scrambled_points<0b1100000>(
-      s.sample_index,
-      _mm256_setr_epi32(lane_seed(padded_sobol_shuffle_seed(select)), light_shuffle, lane_seed(padded_sobol_shuffle_seed(lobe)),
-                        direction_shuffle, lane_seed(padded_sobol_shuffle_seed(roulette)), light_shuffle, direction_shuffle,
-                        0),
-      _mm256_setr_epi32(lane_seed(padded_sobol_x_seed(select)), lane_seed(padded_sobol_x_seed(light)),
-                        lane_seed(padded_sobol_x_seed(lobe)), lane_seed(padded_sobol_x_seed(direction)),
-                        lane_seed(padded_sobol_x_seed(roulette)),
-                        needs & kNeedLightPoint ? lane_seed(padded_sobol_y_seed(light)) : 0,
-                        needs & kNeedDirection ? lane_seed(padded_sobol_y_seed(direction)) : 0, 0));
+  const int select = needs & kNeedLightSelect ? 1 : 0, light = needs & kNeedLightPoint ? 1 : 0,
+            lobe = needs & kNeedLobe ? 1 : 0, direction = needs & kNeedDirection ? 1 : 0,
+            roulette = needs & kNeedRoulette ? 1 : 0;
+  // Dimension offsets in the block: select 0, light 1, lobe 3, direction 4, roulette 6.
+  const __m256i first = request_hash_lanes(key, base, _mm256_setr_epi64x(0, 1, 3, 4),
+                                           select | light << 1 | lobe << 2 | direction << 3);
+  const __m256i second = request_hash_lanes(key, base, _mm256_setr_epi64x(6, 1, 4, 0), roulette | light << 1 | direction << 2);
+  const __m256i second_axes = _mm256_blend_epi32(second, mix64_lanes(second), 0b00111100);
+  const LanePoints p = scrambled_points<0b1100000>(s.sample_index, halves_lanes(first, second, false),
+                                                   halves_lanes(first, second_axes, true));
   BounceSamples b;
   if (needs & kNeedLightSelect) b.light_select = p.u[0];
   if (needs & kNeedLightPoint) b.light = {p.u[1], p.u[5]};

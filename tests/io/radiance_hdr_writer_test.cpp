@@ -14,6 +14,7 @@
 #include "prism/core/error.h"
 #include "prism/io/atomic_file.h"
 #include "prism/io/radiance_hdr_writer.h"
+#include "prism/io/radiance_rle.h"
 #include "prism/scene/radiance_hdr.h"
 #include "prism/scene/texture.h"
 #include "prism/scene/texture_file.h"
@@ -90,7 +91,8 @@ ImageRgbF test_image(int width, int height) {
 // encoded pixel.
 TEST(RadianceHdrWriter, WhatItWritesReadsBackInItsSpace) {
   test::ScratchFolder dir;
-  for (const auto& [width, height] : {std::pair{300, 7}, std::pair{37, 5}, std::pair{5, 3}}) {  // 5: flat
+  // 7 and 5: flat; 8: the narrowest run-length scanline (io/radiance_rle.h).
+  for (const auto& [width, height] : {std::pair{300, 7}, std::pair{37, 5}, std::pair{8, 3}, std::pair{7, 3}, std::pair{5, 3}}) {
     SCOPED_TRACE(std::to_string(width) + "x" + std::to_string(height));
     const ImageRgbF image = test_image(width, height);
     const auto file = dir / ("a" + std::to_string(width) + ".hdr");
@@ -118,10 +120,17 @@ TEST(RadianceHdrWriter, WhatItWritesReadsBackInItsSpace) {
     EXPECT_EQ(h, height);
     EXPECT_EQ(std::vector<float>(stb, stb + ours.size()), ours);
     stbi_image_free(stb);
-    // The run-length file is smaller than flat texels would be (the flat half of each row
-    // is runs).
-    if (width >= 8) {
-      EXPECT_LT(bytes.size(), 4u * width * height);
+    // Scanlines from 8 texels wide are run-length encoded: each starts 2, 2, its width (15
+    // bits, big-endian). Where rows are long enough for their runs to outweigh the header,
+    // the file is smaller than flat texels would be (the flat half of each row is runs).
+    const std::string scanline_start{2, 2, static_cast<char>(width >> 8), static_cast<char>(width & 0xff)};
+    if (radiance_scanline_is_run_length(static_cast<std::size_t>(width))) {
+      EXPECT_NE(bytes.find(scanline_start), std::string::npos);
+      if (width >= 32) {
+        EXPECT_LT(bytes.size(), 4u * width * height);
+      }
+    } else {
+      EXPECT_EQ(bytes.find(scanline_start), std::string::npos);
     }
   }
 }

@@ -13,6 +13,7 @@
 
 #include "prism/core/error.h"
 #include "prism/io/atomic_file.h"
+#include "prism/io/radiance_rle.h"
 
 namespace prism {
 namespace {
@@ -100,7 +101,7 @@ RadianceWriteReport write_radiance_hdr(const std::filesystem::path& path, const 
 
   RadianceWriteReport report;
   const auto width = static_cast<std::size_t>(image.width);
-  const bool run_length = width >= 8 && width < 32768;
+  const bool run_length = radiance_scanline_is_run_length(width);
   std::vector<unsigned char> scanline(4 * width);
   for (std::size_t y = 0; y < static_cast<std::size_t>(image.height); ++y) {
     for (std::size_t x = 0; x < width; ++x) {

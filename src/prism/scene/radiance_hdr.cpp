@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "prism/core/error.h"
+#include "prism/io/radiance_rle.h"
 #include "prism/scene/texture.h"
 
 namespace prism {
@@ -181,7 +182,7 @@ std::vector<std::uint8_t> read_scanlines(std::span<const unsigned char> bytes, c
   // marker and, per component, a run (2 bytes) per 127 texels. A header that claims more
   // texels than its file could hold is refused before the texels are allocated (a 40-byte
   // file can claim 32768² texels: 4 GiB).
-  const bool run_length = width >= 8 && width < 32768;
+  const bool run_length = radiance_scanline_is_run_length(width);
   const std::size_t least = run_length ? height * (4 + 8 * ((width + 126) / 127)) : width * height * 4;
   if (bytes.size() < header.data_offset || bytes.size() - header.data_offset < least)
     fail(name, fmt::format("the file is truncated ({} bytes of texels for {}x{}, at least {} needed)",

@@ -23,8 +23,12 @@ constexpr std::uint64_t padded_sobol_pixel_key(std::uint64_t seed, std::uint32_t
   return mix64(mix64(seed ^ 0x736f626f6c5eedull) + pixel_index);
 }
 
+// What each dimension adds to the pixel key before hashing: 2^64 / φ (odd, so distinct
+// dimensions give distinct keys).
+inline constexpr std::uint64_t kPaddedSobolDimensionStep = 0x9e3779b97f4a7c15ull;
+
 constexpr std::uint64_t padded_sobol_request_hash(std::uint64_t pixel_key, std::uint32_t dimension) {
-  return mix64(pixel_key + 0x9e3779b97f4a7c15ull * (dimension + 1ull));
+  return mix64(pixel_key + kPaddedSobolDimensionStep * (dimension + 1ull));
 }
 
 // The seed of the index shuffle, of the first axis' scramble, and of the second axis'.

@@ -100,7 +100,7 @@ PRISM_AVX2 inline __m256i mix64_lanes(__m256i z) {
 // padded_sobol_request_hash of four dimensions `base + offsets[k]` in the four 64-bit
 // lanes, where bit k of `asked` is set; 0 (whose seeds are all 0, as mix64(0) = 0) elsewhere.
 PRISM_AVX2 inline __m256i request_hash_lanes(std::uint64_t pixel_key, std::uint32_t base, __m256i offsets, int asked) {
-  constexpr std::uint64_t kStep = 0x9e3779b97f4a7c15ull;  // padded_sobol_request_hash's
+  constexpr std::uint64_t kStep = kPaddedSobolDimensionStep;
   // key + step·(base + offset + 1) = (key + step·(base + 1)) + step·offset, modulo 2^64.
   const __m256i keys = _mm256_add_epi64(_mm256_set1_epi64x(static_cast<long long>(pixel_key + kStep * (base + 1ull))),
                                         multiply_low64_lanes(offsets, kStep));

@@ -53,6 +53,22 @@ struct Bsdf {
     if (__builtin_expect(!coat.present(), 1)) return base_pdf(wo, wi);
     return coated_pdf(wo, wi, coat_probability(wo, coat.albedo(wo)));
   }
+  // eval, and pdf into `pdf_out` where `want_pdf` and the value is not black (what a light
+  // sample's MIS weight needs; `pdf_out` is left alone otherwise): the same values as the
+  // two calls, and for the plain diffuse lobe one inline pass instead of two out-of-line
+  // dispatches (Callgrind, BENCHMARKS.md "Session 30").
+  [[gnu::always_inline]] color::SampledSpectrum<N> eval_with_pdf(const Vec3f& wo, const Vec3f& wi, bool want_pdf,
+                                                                float& pdf_out) const {
+    if (__builtin_expect(!coat.present() && !sheen.present(), 1))
+      if (const auto* diffuse = std::get_if<Lambertian<N>>(&lobe)) {
+        const color::SampledSpectrum<N> f = diffuse->eval(wo, wi);
+        if (want_pdf && !f.is_black()) pdf_out = diffuse->pdf(wo, wi);
+        return f;
+      }
+    const color::SampledSpectrum<N> f = eval(wo, wi);
+    if (want_pdf && !f.is_black()) pdf_out = pdf(wo, wi);
+    return f;
+  }
   // u_lobe picks among lobes / reflection vs refraction; u drives the direction.
   std::optional<BsdfSample<N>> sample(const Vec3f& wo, float u_lobe, Vec2f u,
                                       TransportMode mode = TransportMode::radiance) const {
@@ -171,7 +187,11 @@ struct Bsdf {
     }
     return with_mixture(std::move(s), eval, pdf);
   }
+  // The diffuse lobe, the commonest, is called directly: std::visit's dispatch and the copy
+  // of its result out of the visitor cost a third of a Lambertian sample's instructions
+  // (Callgrind, BENCHMARKS.md "Session 30"). The same calls as the visitor makes.
   color::SampledSpectrum<N> lobe_eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const {
+    if (const auto* diffuse = std::get_if<Lambertian<N>>(&lobe)) return diffuse->eval(wo, wi);
     return std::visit(
         [&](const auto& l) {
           if constexpr (std::is_same_v<std::decay_t<decltype(l)>, Dielectric<N>>) return l.eval(wo, wi, mode);
@@ -180,9 +200,11 @@ struct Bsdf {
         lobe);
   }
   float lobe_pdf(const Vec3f& wo, const Vec3f& wi) const {
+    if (const auto* diffuse = std::get_if<Lambertian<N>>(&lobe)) return diffuse->pdf(wo, wi);
     return std::visit([&](const auto& l) { return l.pdf(wo, wi); }, lobe);
   }
   std::optional<BsdfSample<N>> lobe_sample(const Vec3f& wo, float u_lobe, Vec2f u, TransportMode mode) const {
+    if (const auto* diffuse = std::get_if<Lambertian<N>>(&lobe)) return diffuse->sample(wo, u_lobe, u);
     return std::visit(
         [&](const auto& l) {
           if constexpr (std::is_same_v<std::decay_t<decltype(l)>, Dielectric<N>>) return l.sample(wo, u_lobe, u, mode);

@@ -462,13 +462,15 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
       // The geometric and the shading side must agree, or light leaks through edges.
       if ((dot(ls->wi, si.geometric_normal) > 0.0f) == (wi_local.z > 0.0f) && ls->pdf > 0.0f) {
         // (the microsurface_* functions are found by argument-dependent lookup, in prism::bsdf)
+        const bool weighted = !ls->is_delta && settings_.estimator == LightEstimator::mis;
+        float bsdf_pdf = 0.0f;
         const Spectrum<Mode> f = on_microsurface ? microsurface_eval(bsdf, *microsurface, wo_local, wi_local)
-                                                 : bsdf.eval(wo_local, wi_local);
+                                                 : bsdf.eval_with_pdf(wo_local, wi_local, weighted, bsdf_pdf);
         if (!f.is_black()) {
           float w = 1.0f;
-          if (!ls->is_delta && settings_.estimator == LightEstimator::mis)
+          if (weighted)
             w = power_heuristic(ls->pdf, on_microsurface ? microsurface_pdf(bsdf, *microsurface, wo_local, wi_local)
-                                                         : bsdf.pdf(wo_local, wi_local));
+                                                         : bsdf_pdf);
           const Vec3f origin = offset_ray_origin(si.position, si.geometric_normal, ls->wi);
           float t_max;
           Vec3f dir = ls->wi;

@@ -29,7 +29,7 @@ inline constexpr std::uint64_t kNormalBytesPerPixel = 3 * sizeof(double);
 inline constexpr std::uint64_t kDepthBytesPerPixel = sizeof(double) + sizeof(std::uint32_t);
 inline constexpr std::uint64_t kCrossSumBytesPerPixel = 3 * sizeof(double);  // variance AOV
 inline constexpr std::uint64_t kAovBytesPerSlot = 32;  // sizeof(AovSample), checked in memory_estimate.cpp
-inline constexpr std::uint64_t kPathPoolBytesPerSlot = 270;  // 4 wavelengths, with the interior medium (σ, flag)
+inline constexpr std::uint64_t kPathPoolBytesPerSlot = 290;  // 4 wavelengths, with the interior medium (σ, flag) and the emission cache
 inline constexpr std::uint64_t kImageBytesPerPixel = 2 * 3 * sizeof(float);
 // Output conversion buffers per AOV channel (one float image per channel, like the beauty).
 inline constexpr std::uint64_t kAovImageBytesPerChannel = sizeof(float);

@@ -28,7 +28,8 @@ struct WavefrontIntegrator<Mode>::Paths {
       : ray(n), throughput(n), radiance(n), wavelengths(n), hit(n), hit_found(n), shadow_ray(n),
         shadow_contribution(n), shadow_pending(n), shadow_blocked(n), prev_position(n), prev_normal(n), prev_pdf(n),
         eta_scale(n), cone_width(n), cone_spread(n), prev_specular(n), depth(n), finished(n), sample_index(n),
-        sample_end(n), inside_absorbing(n), interior_sigma(n), bounce_block(n) {}
+        sample_end(n), inside_absorbing(n), interior_sigma(n), bounce_block(n), cached_emitter(n),
+        cached_emission(n) {}
   std::size_t capacity() const { return ray.size(); }
   std::uint32_t first_pixel = 0;
   std::vector<Ray> ray;
@@ -59,6 +60,10 @@ struct WavefrontIntegrator<Mode>::Paths {
   std::vector<AovSample> first_hit_aovs;
   // Each hit's bounce block, drawn whole before shading where bounce_blocks_ahead_.
   std::vector<BounceSamples> bounce_block;
+  // The untextured emitter whose spectrum at the path's wavelengths is cached_emission
+  // (untextured_emission); kNoCachedEmitter for none yet.
+  std::vector<std::uint32_t> cached_emitter;
+  std::vector<Spectrum<Mode>> cached_emission;
 };
 
 template <class Mode>
@@ -344,6 +349,24 @@ void WavefrontIntegrator<Mode>::generate(Paths& p, std::uint32_t slot, std::uint
   p.finished[slot] = 0;
   p.inside_absorbing[slot] = 0;
   p.sample_index[slot] = sample_index;
+  p.cached_emitter[slot] = kNoCachedEmitter;  // new wavelengths
+}
+
+template <class Mode>
+Spectrum<Mode> WavefrontIntegrator<Mode>::untextured_emission(Paths& p, std::uint32_t slot,
+                                                              std::uint32_t emitter) const {
+  // An untextured emitter's spectrum is a function of the emitter and the path's
+  // wavelengths alone, and a path's light samples mostly land on one emitter (every one,
+  // in a scene with a single lamp): kept per path, it is evaluated about once per path
+  // instead of once per light sample (Callgrind, BENCHMARKS.md "Session 30"). The same
+  // values: a cache, not an approximation. Hero termination changes only the pdfs. RGB
+  // emission is a load already.
+  if constexpr (!Mode::kSpectral) return colors_.emission(emitter, p.wavelengths[slot]);
+  if (p.cached_emitter[slot] != emitter) {
+    p.cached_emission[slot] = colors_.emission(emitter, p.wavelengths[slot]);
+    p.cached_emitter[slot] = emitter;
+  }
+  return p.cached_emission[slot];
 }
 
 template <class Mode>
@@ -413,7 +436,9 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     if (textured && p.prev_specular[slot])
       lod = mip_level_from_ray_cone(textures_[static_cast<std::size_t>(emission_texture)], p.cone_width[slot],
                                     std::abs(si.cos_wo_geometric), si.uv_area, si.world_area);
-    L += beta * emitted_radiance(si.material, textured, si.uv, lod, wl) * w;
+    L += beta * (textured ? textured_emitted_radiance(si.material, si.uv, lod, wl)
+                          : untextured_emission(p, slot, si.material)) *
+         w;
   }
   if (p.depth[slot] + 1 > settings_.max_depth) {
     p.finished[slot] = 1;
@@ -486,7 +511,9 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
           p.shadow_ray[slot] = Ray{origin, dir, 0.0f, t_max};
           const Spectrum<Mode> Le =
               ls->has_rgb ? colors_.environment_radiance(ls->rgb, wl)
-                          : emitted_radiance(ls->emitter, ls->has_uv, ls->uv, 0.0f, wl) * ls->scale;
+                          : (ls->has_uv ? textured_emitted_radiance(ls->emitter, ls->uv, 0.0f, wl)
+                                        : untextured_emission(p, slot, ls->emitter)) *
+                                ls->scale;
           p.shadow_contribution[slot] = beta * f * Le * (std::abs(wi_local.z) * w / ls->pdf);
           // A light inside the same absorbing medium: the shadow ray's whole length runs
           // through it (leaving it needs a crossing, which blocks the shadow ray).

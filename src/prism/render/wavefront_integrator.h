@@ -154,17 +154,15 @@ class WavefrontIntegrator {
   // Roughness and metallic after the metallic-roughness texture (G, B; linear).
   MaterialPoint material_point(const Material& material, const SurfaceInteraction& si, float cone_width,
                                const Ray& ray) const;
-  // Emitted radiance of an emissive material; with an emission texture (and uvs) the
-  // texel at `uv`, filtered at `level_of_detail`, multiplies the emission colour.
-  Spectrum<Mode> emitted_radiance(std::uint32_t material, bool has_uv, Vec2f uv, float level_of_detail,
-                                  const Wavelengths<Mode>& wl) const {
-    // The untextured case inline (every NEE sample of an untextured emitter, and every
-    // non-geometric light), so its spectrum stays in registers.
-    if (!has_uv) return colors_.emission(material, wl);
-    return textured_emitted_radiance(material, uv, level_of_detail, wl);
-  }
+  // Emitted radiance of an emissive material with an emission texture (and uvs): the
+  // texel at `uv`, filtered at `level_of_detail`, multiplies the emission colour. Untextured
+  // emitters go through untextured_emission.
   Spectrum<Mode> textured_emitted_radiance(std::uint32_t material, Vec2f uv, float level_of_detail,
                                            const Wavelengths<Mode>& wl) const;
+  // An untextured emitter's spectrum at the wavelengths of slot's path, through the path's
+  // one-entry cache.
+  static constexpr std::uint32_t kNoCachedEmitter = ~std::uint32_t{0};
+  Spectrum<Mode> untextured_emission(Paths& p, std::uint32_t slot, std::uint32_t emitter) const;
   // Writes the AOVs of a camera ray (wavefront_integrator_aovs.cpp); `hit` is null when the
   // ray escaped.
   void record_first_hit_aovs(AovSample& aovs, const Ray& ray, const Hit* hit, float cone_spread) const;

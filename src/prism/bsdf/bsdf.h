@@ -188,7 +188,7 @@ struct Bsdf {
     return with_mixture(std::move(s), eval, pdf);
   }
   // The diffuse lobe, the commonest, is called directly: std::visit's dispatch and the copy
-  // of its result out of the visitor cost a third of a Lambertian sample's instructions
+  // of its result out of the visitor cost a quarter of a Lambertian sample's instructions
   // (Callgrind, BENCHMARKS.md "Session 30"). The same calls as the visitor makes.
   color::SampledSpectrum<N> lobe_eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const {
     if (const auto* diffuse = std::get_if<Lambertian<N>>(&lobe)) return diffuse->eval(wo, wi);

@@ -129,6 +129,10 @@ template <class Mode>
 bsdf::Bsdf<Mode::kChannels> make_bsdf(const Material& m, std::uint32_t material_index, const Spectrum<Mode>& base,
                                       const MaterialPoint& point, const Wavelengths<Mode>& w,
                                       const MaterialTables& tables, const LayerColors<Mode>& layer_colors) {
+  // The commonest BSDF, a bare diffuse lobe, without the microfacet set-up the other
+  // lobes share (base_bsdf returns the same lobe for it).
+  if (m.type == MaterialType::diffuse && !(point.clearcoat > 0.0f) && !point.has_sheen())
+    return {bsdf::Lambertian<Mode::kChannels>{base}};
   auto b = base_bsdf<Mode>(m, material_index, base, point, w, tables, layer_colors);
   // untextured_point() gives dielectrics no coat and no sheen.
   if (point.clearcoat > 0.0f)

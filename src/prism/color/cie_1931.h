@@ -28,8 +28,12 @@ inline const data::Table& cie1931_table() {
 // x̄, ȳ, z̄ at `wavelength_nm`, linearly interpolated between the 1 nm table entries; zero
 // outside the tabulated 360–830 nm. Inline: the film calls it for every wavelength of
 // every path sample.
-inline Vec3d cie1931_xyz_bar(double wavelength_nm) {
-  const data::Table& table = detail::cie1931_table();
+inline Vec3d cie1931_xyz_bar(const data::Table& table, double wavelength_nm);
+inline Vec3d cie1931_xyz_bar(double wavelength_nm) { return cie1931_xyz_bar(detail::cie1931_table(), wavelength_nm); }
+// The same, from the table detail::cie1931_table() returns, fetched once by a caller that
+// looks up several wavelengths (the film: each call's static-guard check and table loads
+// otherwise repeat for every wavelength of every sample).
+inline Vec3d cie1931_xyz_bar(const data::Table& table, double wavelength_nm) {
   const double first_nm = table.at(0, 0);
   const double offset = wavelength_nm - first_nm;  // the table is at exactly 1 nm steps
   if (!(offset >= 0.0) || offset > table.rows - 1) return {};

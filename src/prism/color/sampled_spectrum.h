@@ -119,10 +119,11 @@ SampledSpectrum<N> sample_spectrum(const Spectrum& s, const SampledWavelengths<N
 // (true for every strategy in wavelength_sampling.h). Accumulated in double.
 template <int N>
 Vec3d to_xyz(const SampledSpectrum<N>& s, const SampledWavelengths<N>& w) {
+  const data::Table& cmf = detail::cie1931_table();
   Vec3d sum{};
   for (int i = 0; i < N; ++i) {
     if (w.pdf[i] == 0.0f) continue;
-    sum += cie1931_xyz_bar(w.wavelength_nm[i]) * (double(s[i]) / double(w.pdf[i]));
+    sum += cie1931_xyz_bar(cmf, w.wavelength_nm[i]) * (double(s[i]) / double(w.pdf[i]));
   }
   return sum / double(N);
 }

@@ -44,27 +44,21 @@ struct Bsdf {
   // Likewise; colour 0: none.
   Sheen<N> sheen{};
 
-  color::SampledSpectrum<N> eval(const Vec3f& wo, const Vec3f& wi,
-                                 TransportMode mode = TransportMode::radiance) const {
+  // eval and pdf, and the layers' and lobe's own, are inlined down to the lobe; what only
+  // coated, sheened or non-diffuse BSDFs run is not (see lobe_eval).
+  [[gnu::always_inline]] color::SampledSpectrum<N> eval(const Vec3f& wo, const Vec3f& wi,
+                                                        TransportMode mode = TransportMode::radiance) const {
     if (__builtin_expect(!coat.present(), 1)) return base_eval(wo, wi, mode);
     return coated_eval(wo, wi, mode, coat.albedo(wo));
   }
-  float pdf(const Vec3f& wo, const Vec3f& wi) const {
+  [[gnu::always_inline]] float pdf(const Vec3f& wo, const Vec3f& wi) const {
     if (__builtin_expect(!coat.present(), 1)) return base_pdf(wo, wi);
     return coated_pdf(wo, wi, coat_probability(wo, coat.albedo(wo)));
   }
   // eval, and pdf into `pdf_out` where `want_pdf` and the value is not black (what a light
-  // sample's MIS weight needs; `pdf_out` is left alone otherwise): the same values as the
-  // two calls, and for the plain diffuse lobe one inline pass instead of two out-of-line
-  // dispatches (Callgrind, BENCHMARKS.md "Session 30").
+  // sample's MIS weight needs; `pdf_out` is left alone otherwise).
   [[gnu::always_inline]] color::SampledSpectrum<N> eval_with_pdf(const Vec3f& wo, const Vec3f& wi, bool want_pdf,
                                                                 float& pdf_out) const {
-    if (__builtin_expect(!coat.present() && !sheen.present(), 1))
-      if (const auto* diffuse = std::get_if<Lambertian<N>>(&lobe)) {
-        const color::SampledSpectrum<N> f = diffuse->eval(wo, wi);
-        if (want_pdf && !f.is_black()) pdf_out = diffuse->pdf(wo, wi);
-        return f;
-      }
     const color::SampledSpectrum<N> f = eval(wo, wi);
     if (want_pdf && !f.is_black()) pdf_out = pdf(wo, wi);
     return f;
@@ -118,18 +112,19 @@ struct Bsdf {
  private:
   // The coated eval and pdf, given what sample() has already computed at wo: the coat's
   // albedo A_c (the base's weight is 1 − A_c) and the mixture probability.
-  color::SampledSpectrum<N> coated_eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode, float a_coat) const {
+  [[gnu::noinline]] color::SampledSpectrum<N> coated_eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode,
+                                                         float a_coat) const {
     return base_eval(wo, wi, mode) * (1.0f - a_coat) + color::SampledSpectrum<N>(coat.eval(wo, wi));
   }
-  float coated_pdf(const Vec3f& wo, const Vec3f& wi, float p_coat) const {
+  [[gnu::noinline]] float coated_pdf(const Vec3f& wo, const Vec3f& wi, float p_coat) const {
     return p_coat * coat.pdf(wo, wi) + (1.0f - p_coat) * base_pdf(wo, wi);
   }
   // The base under the coat: the sheen over the lobe, or the lobe alone.
-  color::SampledSpectrum<N> base_eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const {
+  [[gnu::always_inline]] color::SampledSpectrum<N> base_eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const {
     if (__builtin_expect(!sheen.present(), 1)) return lobe_eval(wo, wi, mode);
     return sheened_eval(wo, wi, mode, sheen.albedo(wo));
   }
-  float base_pdf(const Vec3f& wo, const Vec3f& wi) const {
+  [[gnu::always_inline]] float base_pdf(const Vec3f& wo, const Vec3f& wi) const {
     if (__builtin_expect(!sheen.present(), 1)) return lobe_pdf(wo, wi);
     return sheened_pdf(wo, wi, sheen_probability(wo, sheen.albedo(wo).average()));
   }
@@ -139,11 +134,11 @@ struct Bsdf {
   }
   // The sheened eval and pdf, given the sheen's albedo A_s per channel (the lobe's weight
   // is 1 − A_s) and the mixture probability.
-  color::SampledSpectrum<N> sheened_eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode,
-                                         const color::SampledSpectrum<N>& a_sheen) const {
+  [[gnu::noinline]] color::SampledSpectrum<N> sheened_eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode,
+                                                          const color::SampledSpectrum<N>& a_sheen) const {
     return lobe_eval(wo, wi, mode) * (color::SampledSpectrum<N>(1.0f) - a_sheen) + sheen.eval(wo, wi);
   }
-  float sheened_pdf(const Vec3f& wo, const Vec3f& wi, float p_sheen) const {
+  [[gnu::noinline]] float sheened_pdf(const Vec3f& wo, const Vec3f& wi, float p_sheen) const {
     return p_sheen * sheen.pdf(wo, wi) + (1.0f - p_sheen) * lobe_pdf(wo, wi);
   }
   std::optional<BsdfSample<N>> sheened_sample(const Vec3f& wo, float u_lobe, Vec2f u, TransportMode mode) const {
@@ -188,10 +183,15 @@ struct Bsdf {
     return with_mixture(std::move(s), eval, pdf);
   }
   // The diffuse lobe, the commonest, is called directly: std::visit's dispatch and the copy
-  // of its result out of the visitor cost a quarter of a Lambertian sample's instructions
-  // (Callgrind, BENCHMARKS.md "Session 30"). The same calls as the visitor makes.
-  color::SampledSpectrum<N> lobe_eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const {
+  // of its result out of the visitor cost a quarter of a Lambertian sample's instructions,
+  // and an eval or pdf that kept the visitor inline was too large to inline into the
+  // integrator (Callgrind, BENCHMARKS.md "Session 30"). The same calls as the visitor makes.
+  [[gnu::always_inline]] color::SampledSpectrum<N> lobe_eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const {
     if (const auto* diffuse = std::get_if<Lambertian<N>>(&lobe)) return diffuse->eval(wo, wi);
+    return visited_lobe_eval(wo, wi, mode);
+  }
+  [[gnu::noinline]] color::SampledSpectrum<N> visited_lobe_eval(const Vec3f& wo, const Vec3f& wi,
+                                                               TransportMode mode) const {
     return std::visit(
         [&](const auto& l) {
           if constexpr (std::is_same_v<std::decay_t<decltype(l)>, Dielectric<N>>) return l.eval(wo, wi, mode);
@@ -199,8 +199,11 @@ struct Bsdf {
         },
         lobe);
   }
-  float lobe_pdf(const Vec3f& wo, const Vec3f& wi) const {
+  [[gnu::always_inline]] float lobe_pdf(const Vec3f& wo, const Vec3f& wi) const {
     if (const auto* diffuse = std::get_if<Lambertian<N>>(&lobe)) return diffuse->pdf(wo, wi);
+    return visited_lobe_pdf(wo, wi);
+  }
+  [[gnu::noinline]] float visited_lobe_pdf(const Vec3f& wo, const Vec3f& wi) const {
     return std::visit([&](const auto& l) { return l.pdf(wo, wi); }, lobe);
   }
   std::optional<BsdfSample<N>> lobe_sample(const Vec3f& wo, float u_lobe, Vec2f u, TransportMode mode) const {

@@ -25,14 +25,11 @@ inline const data::Table& cie1931_table() {
 }
 }  // namespace detail
 
-// x̄, ȳ, z̄ at `wavelength_nm`, linearly interpolated between the 1 nm table entries; zero
-// outside the tabulated 360–830 nm. Inline: the film calls it for every wavelength of
-// every path sample.
-inline Vec3d cie1931_xyz_bar(const data::Table& table, double wavelength_nm);
-inline Vec3d cie1931_xyz_bar(double wavelength_nm) { return cie1931_xyz_bar(detail::cie1931_table(), wavelength_nm); }
-// The same, from the table detail::cie1931_table() returns, fetched once by a caller that
-// looks up several wavelengths (the film: each call's static-guard check and table loads
-// otherwise repeat for every wavelength of every sample).
+// x̄, ȳ, z̄ at `wavelength_nm` from `table` (the one detail::cie1931_table() returns),
+// linearly interpolated between its 1 nm entries; zero outside the tabulated 360–830 nm.
+// Inline: the film calls it for every wavelength of every path sample, and fetches the
+// table once per sample (each fetch's static-guard check and loads would otherwise repeat
+// for every wavelength).
 inline Vec3d cie1931_xyz_bar(const data::Table& table, double wavelength_nm) {
   const double first_nm = table.at(0, 0);
   const double offset = wavelength_nm - first_nm;  // the table is at exactly 1 nm steps
@@ -42,6 +39,8 @@ inline Vec3d cie1931_xyz_bar(const data::Table& table, double wavelength_nm) {
   auto row = [&](int r) { return Vec3d{table.at(r, 1), table.at(r, 2), table.at(r, 3)}; };
   return row(i) * (1.0 - t) + row(i + 1) * t;
 }
+// The same, for a caller that looks up one wavelength.
+inline Vec3d cie1931_xyz_bar(double wavelength_nm) { return cie1931_xyz_bar(detail::cie1931_table(), wavelength_nm); }
 double cie1931_y_bar(double wavelength_nm);
 
 // ∫ȳ dλ over [380, 780] nm by the trapezoid rule at 1 nm (≈ 106.857): the Y of a flat

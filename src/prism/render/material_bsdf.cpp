@@ -51,22 +51,33 @@ float channel_wavelength_nm(const Wavelengths<Mode>& w, int channel) {
   else return kRgbRepresentativeWavelengthsNm[static_cast<std::size_t>(channel)];
 }
 
+// Anisotropy stretches a lobe along the frame's s axis (Blinn-Phong stays isotropic); one
+// rule for every lobe, metallic_roughness' own distribution included.
+bool is_anisotropic(const Material& m, const MaterialPoint& point) {
+  return point.anisotropy > 0.0f && microfacet_type(m.microfacet) != bsdf::MicrofacetType::blinn_phong;
+}
+void stretch_anisotropic(bsdf::MicrofacetDistribution& d, float anisotropy) {
+  d.alpha_y = std::max(d.alpha_y, bsdf::kMinAnisotropicAlpha);
+  d.alpha_x = bsdf::anisotropic_alpha_along(d.alpha_y, anisotropy);
+}
+
+// The microfacet distribution of the conductor and dielectric lobes. glTF and pbrt give
+// perceptual roughness r; the microfacet α is r² (Burley 2012).
+bsdf::MicrofacetDistribution lobe_distribution(const Material& m, const MaterialPoint& point) {
+  const float alpha = point.roughness * point.roughness;
+  auto distribution = bsdf::MicrofacetDistribution::isotropic(microfacet_type(m.microfacet), alpha);
+  if (is_anisotropic(m, point)) stretch_anisotropic(distribution, point.anisotropy);
+  return distribution;
+}
+
+// The lobe alone. Each case builds only what its lobe reads: a mirror, a thin slab and a
+// diffuse lobe no microfacet distribution. Not inlined, so that make_bsdf's diffuse return
+// needs no stack frame (see there).
 template <class Mode>
-bsdf::Bsdf<Mode::kChannels> base_bsdf(const Material& m, std::uint32_t material_index, const Spectrum<Mode>& base,
+[[gnu::noinline]] bsdf::Bsdf<Mode::kChannels> base_bsdf(const Material& m, std::uint32_t material_index, const Spectrum<Mode>& base,
                                       const MaterialPoint& point, const Wavelengths<Mode>& w,
                                       const MaterialTables& tables, const LayerColors<Mode>& layer_colors) {
   constexpr int N = Mode::kChannels;
-  // glTF and pbrt give perceptual roughness r; the microfacet α is r² (Burley 2012).
-  const float alpha = point.roughness * point.roughness;
-  auto distribution = bsdf::MicrofacetDistribution::isotropic(microfacet_type(m.microfacet), alpha);
-  // Anisotropy stretches the lobe along the frame's s axis (Blinn-Phong stays isotropic);
-  // one rule for every lobe, metallic_roughness' own distribution included.
-  const bool anisotropic = point.anisotropy > 0.0f && distribution.type != bsdf::MicrofacetType::blinn_phong;
-  const auto stretch = [&](bsdf::MicrofacetDistribution& d) {
-    d.alpha_y = std::max(d.alpha_y, bsdf::kMinAnisotropicAlpha);
-    d.alpha_x = bsdf::anisotropic_alpha_along(d.alpha_y, point.anisotropy);
-  };
-  if (anisotropic) stretch(distribution);
   switch (m.type) {
     case MaterialType::mirror: return {bsdf::SpecularReflection<N>{base}};
     case MaterialType::conductor: {
@@ -77,9 +88,9 @@ bsdf::Bsdf<Mode::kChannels> base_bsdf(const Material& m, std::uint32_t material_
           eta[c] = static_cast<float>(ior->eta(nm));
           k[c] = static_cast<float>(ior->k(nm));
         }
-        return {bsdf::RoughConductor<N>{distribution, bsdf::ConductorFresnel<N>::complex_ior(eta, k)}};
+        return {bsdf::RoughConductor<N>{lobe_distribution(m, point), bsdf::ConductorFresnel<N>::complex_ior(eta, k)}};
       }
-      return {bsdf::RoughConductor<N>{distribution, bsdf::ConductorFresnel<N>::schlick(base)}};
+      return {bsdf::RoughConductor<N>{lobe_distribution(m, point), bsdf::ConductorFresnel<N>::schlick(base)}};
     }
     case MaterialType::dielectric: {
       color::SampledSpectrum<N> eta;
@@ -94,7 +105,7 @@ bsdf::Bsdf<Mode::kChannels> base_bsdf(const Material& m, std::uint32_t material_
       // Thin-walled (glTF transmission without KHR_materials_volume, pbrt's
       // thindielectric): a smooth slab, roughness ignored (bsdf/thin_dielectric.h).
       if (m.thin_walled) return {bsdf::ThinDielectric<N>{eta, tint}};
-      return {bsdf::Dielectric<N>{eta, distribution, tint}};
+      return {bsdf::Dielectric<N>{eta, lobe_distribution(m, point), tint}};
     }
     case MaterialType::metallic_roughness: {
       const Vec3f f0 = tables.dielectric_f0(material_index, point.specular_color);
@@ -104,7 +115,8 @@ bsdf::Bsdf<Mode::kChannels> base_bsdf(const Material& m, std::uint32_t material_
                       ? bsdf::MetallicRoughness<N>::from_roughness(base, metallic, point.roughness,
                                                                   layer_colors.specular_f0, max_component(f0), weight)
                       : bsdf::MetallicRoughness<N>::from_roughness(base, metallic, point.roughness, f0.x, weight);
-      if (anisotropic) stretch(lobe.distribution);  // its own α, which from_roughness keeps above kMinAlpha
+      // Its own α, which from_roughness keeps above kMinAlpha.
+      if (is_anisotropic(m, point)) stretch_anisotropic(lobe.distribution, point.anisotropy);
       if (__builtin_expect(point.iridescence > 0.0f, 0)) {
         bsdf::ThinFilm<N>& film = lobe.film;
         film.weight = std::min(point.iridescence, 1.0f);
@@ -129,8 +141,10 @@ template <class Mode>
 bsdf::Bsdf<Mode::kChannels> make_bsdf(const Material& m, std::uint32_t material_index, const Spectrum<Mode>& base,
                                       const MaterialPoint& point, const Wavelengths<Mode>& w,
                                       const MaterialTables& tables, const LayerColors<Mode>& layer_colors) {
-  // The commonest BSDF, a bare diffuse lobe, without the microfacet set-up the other
-  // lobes share (base_bsdf returns the same lobe for it).
+  // A bare diffuse lobe, the commonest BSDF, is returned before the call that builds the
+  // others: through it, a diffuse make_bsdf took 57 instructions, 6 of them for the stack
+  // frame and saved registers of the other lobes (Callgrind, BENCHMARKS.md "Session 31").
+  // base_bsdf returns the same lobe for it.
   if (m.type == MaterialType::diffuse && !(point.clearcoat > 0.0f) && !point.has_sheen())
     return {bsdf::Lambertian<Mode::kChannels>{base}};
   auto b = base_bsdf<Mode>(m, material_index, base, point, w, tables, layer_colors);

@@ -60,5 +60,44 @@ TEST(MaterialTables, AnyPointTextureMakesThePointVary) {
   }
 }
 
+TEST(MaterialTables, PlainDiffuseIsABareUntexturedLambertianLobe) {
+  Material diffuse;
+  diffuse.type = MaterialType::diffuse;
+  diffuse.base_color = Vec3f(0.2f, 0.5f, 0.7f);
+  EXPECT_TRUE(is_plain_diffuse(diffuse));
+  Material lamp = diffuse;  // untextured emission changes nothing about the lobe
+  lamp.emission.color = Vec3f(1.0f);
+  lamp.emission.luminance_nits = 100.0f;
+  EXPECT_TRUE(is_plain_diffuse(lamp));
+
+  for (const MaterialType t : {MaterialType::mirror, MaterialType::conductor, MaterialType::dielectric,
+                               MaterialType::metallic_roughness}) {
+    Material m = diffuse;
+    m.type = t;
+    EXPECT_FALSE(is_plain_diffuse(m)) << "type " << static_cast<int>(t);
+  }
+  Material coated = diffuse;
+  coated.clearcoat = 0.5f;
+  EXPECT_FALSE(is_plain_diffuse(coated));
+  Material sheened = diffuse;
+  sheened.sheen_color = Vec3f(0.3f);
+  EXPECT_FALSE(is_plain_diffuse(sheened));
+  // Every texture slot, read by the lobe or not: the plain path reads none of them.
+  int Material::*const slots[] = {
+      &Material::base_color_texture,     &Material::normal_texture,          &Material::bump_texture,
+      &Material::clearcoat_normal_texture, &Material::metallic_roughness_texture, &Material::clearcoat_texture,
+      &Material::clearcoat_roughness_texture, &Material::sheen_color_texture, &Material::sheen_roughness_texture,
+      &Material::specular_texture,       &Material::specular_color_texture,  &Material::iridescence_texture,
+      &Material::iridescence_thickness_texture};
+  for (std::size_t k = 0; k < std::size(slots); ++k) {
+    Material m = diffuse;
+    m.*slots[k] = 0;
+    EXPECT_FALSE(is_plain_diffuse(m)) << "texture slot " << k << " of the list";
+  }
+  Material textured_lamp = lamp;
+  textured_lamp.emission.texture = 0;
+  EXPECT_FALSE(is_plain_diffuse(textured_lamp));
+}
+
 }  // namespace
 }  // namespace prism

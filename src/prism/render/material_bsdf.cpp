@@ -4,6 +4,19 @@
 
 namespace prism {
 
+bool has_point_texture(const Material& m) {
+  return m.metallic_roughness_texture >= 0 || m.clearcoat_texture >= 0 || m.clearcoat_roughness_texture >= 0 ||
+         m.sheen_color_texture >= 0 || m.sheen_roughness_texture >= 0 || m.specular_texture >= 0 ||
+         m.specular_color_texture >= 0 || m.iridescence_texture >= 0 || m.iridescence_thickness_texture >= 0;
+}
+
+bool is_plain_diffuse(const Material& m) {
+  // make_bsdf's diffuse return: no coat (clearcoat > 0) and no sheen in untextured_point.
+  return m.type == MaterialType::diffuse && !m.has_clearcoat() && !m.has_sheen() && !has_point_texture(m) &&
+         m.base_color_texture < 0 && m.normal_texture < 0 && m.bump_texture < 0 && m.clearcoat_normal_texture < 0 &&
+         m.emission.texture < 0;
+}
+
 MaterialTables::MaterialTables(const std::vector<Material>& materials) {
   for (const Material& m : materials) {
     // The coat's albedo table (≈ 30 ms) is built here, before the render's threads start,
@@ -11,13 +24,7 @@ MaterialTables::MaterialTables(const std::vector<Material>& materials) {
     if (m.has_clearcoat()) bsdf::coat_directional_albedo(1.0f, m.clearcoat_roughness);
     if (m.has_sheen()) bsdf::sheen_directional_albedo(1.0f, m.sheen_roughness);  // likewise, its table
     points_.push_back(untextured_point(m));
-    // The textures material_point() reads (render/wavefront_integrator.cpp).
-    const bool textured = m.metallic_roughness_texture >= 0 || m.clearcoat_texture >= 0 ||
-                          m.clearcoat_roughness_texture >= 0 || m.sheen_color_texture >= 0 ||
-                          m.sheen_roughness_texture >= 0 || m.specular_texture >= 0 ||
-                          m.specular_color_texture >= 0 || m.iridescence_texture >= 0 ||
-                          m.iridescence_thickness_texture >= 0;
-    point_is_fixed_.push_back(textured ? 0 : 1);
+    point_is_fixed_.push_back(has_point_texture(m) ? 0 : 1);
     const double r = (double(m.ior) - 1.0) / (double(m.ior) + 1.0);
     fresnel_f0_.push_back(r * r);
     if ((m.type == MaterialType::conductor) && m.conductor_fresnel == ConductorFresnel::complex_ior)

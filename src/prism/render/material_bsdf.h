@@ -57,6 +57,17 @@ inline MaterialPoint untextured_point(const Material& m) {
           m.iridescence_thickness_max_nm};
 }
 
+// Whether a texture varies the material's shading point (what material_point() in
+// render/wavefront_integrator.cpp reads beside the base colour and the maps).
+bool has_point_texture(const Material& m);
+
+// Whether every hit on the material shades as a bare Lambertian lobe of its untextured base
+// colour, what make_bsdf gives it: diffuse, without coat or sheen, and without a texture
+// of any kind (base colour, point, normal, bump, emission), so also without anisotropy
+// (which only microfacet lobes have). The integrator shades such hits on a path built for
+// that lobe alone (WavefrontIntegrator::shade_surface), with the same operations.
+bool is_plain_diffuse(const Material& m);
+
 // Per-material data resolved once per render (measured metal tables, fixed shading points).
 class MaterialTables {
  public:

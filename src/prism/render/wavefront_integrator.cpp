@@ -7,6 +7,7 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "prism/bsdf/plain_diffuse_bsdf.h"
 #include "prism/core/frame.h"
 #include "prism/core/parallel.h"
 #include "prism/render/anisotropy.h"
@@ -83,9 +84,12 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
                       m.uvs.size() * sizeof(Vec2f);
   prefetch_geometry_ = geometry_bytes > (std::size_t{512} << 10);
   bounce_blocks_ahead_ = whole_bounce_blocks_are_cheap(settings_.sampler);
+  use_nee_ = settings_.estimator != LightEstimator::bsdf_only && !lights_.empty();
+  weight_bsdf_hits_ = settings_.estimator == LightEstimator::mis;
   if (mip_pyramids.size() != scene.textures.size())
     throw std::invalid_argument("WavefrontIntegrator: one mip pyramid per scene texture expected");
   for (const Material& m : scene.materials) {
+    plain_diffuse_.push_back(is_plain_diffuse(m) ? 1 : 0);
     const bool textured = m.emission.texture >= 0 && static_cast<std::size_t>(m.emission.texture) < scene.textures.size();
     const ColorPickerSpace texel_space =
         textured ? scene.textures[static_cast<std::size_t>(m.emission.texture)].texel_space : ColorPickerSpace::srgb;
@@ -376,8 +380,6 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   Spectrum<Mode>& L = p.radiance[slot];
   Wavelengths<Mode>& wl = p.wavelengths[slot];
   const Ray& ray = p.ray[slot];
-  const bool use_nee = settings_.estimator != LightEstimator::bsdf_only && !lights_.empty();
-  const bool weight_bsdf_hits = settings_.estimator == LightEstimator::mis;
   if (p.depth[slot] == 0 && !p.first_hit_aovs.empty())
     record_first_hit_aovs(p.first_hit_aovs[slot], ray, p.hit_found[slot] ? &p.hit[slot] : nullptr,
                           p.cone_spread[slot]);
@@ -393,7 +395,7 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     // Escaped: only the environment and directional lights with an angular size can be hit.
     lights_.visit_escaped(ray.direction, [&](const LightSampler::EscapedHit& e) {
       float w = 1.0f;
-      if (!p.prev_specular[slot] && use_nee) w = weight_bsdf_hits ? power_heuristic(p.prev_pdf[slot], e.pdf) : 0.0f;
+      if (!p.prev_specular[slot] && use_nee_) w = weight_bsdf_hits_ ? power_heuristic(p.prev_pdf[slot], e.pdf) : 0.0f;
       const Spectrum<Mode> Le = e.has_rgb ? colors_.environment_radiance(e.rgb, wl) : colors_.emission(e.emitter, wl) * e.scale;
       L += beta * Le * w;
     });
@@ -402,23 +404,39 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   }
 
   SurfaceInteraction si = surface_interaction(scene_, p.hit[slot], ray);
+  if (plain_diffuse_[si.material])
+    shade_surface<true>(p, slot, si);
+  else
+    shade_surface<false>(p, slot, si);
+}
+
+template <class Mode>
+template <bool kPlainDiffuse>
+void WavefrontIntegrator<Mode>::shade_surface(Paths& p, std::uint32_t slot, SurfaceInteraction& si) const {
+  Spectrum<Mode>& beta = p.throughput[slot];
+  Spectrum<Mode>& L = p.radiance[slot];
+  Wavelengths<Mode>& wl = p.wavelengths[slot];
+  const Ray& ray = p.ray[slot];
   const Material& material = scene_.materials[si.material];
   p.cone_width[slot] += p.cone_spread[slot] * p.hit[slot].t;  // the ray cone's width at this hit
   std::optional<bsdf::NormalMapMicrosurface> microsurface;
   const Frame unmapped = si.shading;
   std::optional<AnisotropyAtHit> anisotropy;
-  if (__builtin_expect(material.has_anisotropy(), 0)) anisotropy = anisotropy_at_hit(material, si, p.cone_width[slot], ray);
-  if (material.normal_texture >= 0 || material.bump_texture >= 0)
-    microsurface = apply_maps(material, si, p.cone_width[slot], ray, anisotropy ? &anisotropy->direction : nullptr);
-  else if (anisotropy)
-    si.shading = frame_along(si.shading, anisotropy->direction);
+  if constexpr (!kPlainDiffuse) {
+    if (__builtin_expect(material.has_anisotropy(), 0))
+      anisotropy = anisotropy_at_hit(material, si, p.cone_width[slot], ray);
+    if (material.normal_texture >= 0 || material.bump_texture >= 0)
+      microsurface = apply_maps(material, si, p.cone_width[slot], ray, anisotropy ? &anisotropy->direction : nullptr);
+    else if (anisotropy)
+      si.shading = frame_along(si.shading, anisotropy->direction);
+  }
   // Rare (an opt-in mode on mapped materials): told so, GCC keeps the BSDF's own calls
   // inlined on the common path (Cachegrind, BENCHMARKS.md "Session 17").
-  const bool on_microsurface = __builtin_expect(microsurface.has_value(), 0);
+  const bool on_microsurface = !kPlainDiffuse && __builtin_expect(microsurface.has_value(), 0);
   if (material.is_emissive() && (si.front_face || material.emission.two_sided)) {
     float w = 1.0f;
-    if (!p.prev_specular[slot] && use_nee) {
-      if (weight_bsdf_hits) {
+    if (!p.prev_specular[slot] && use_nee_) {
+      if (weight_bsdf_hits_) {
         const float light_pdf = lights_.pdf_triangle(p.hit[slot].mesh, p.hit[slot].triangle, p.prev_position[slot],
                                                      si.position, p.prev_normal[slot]);
         w = power_heuristic(p.prev_pdf[slot], light_pdf);
@@ -432,7 +450,7 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     // techniques estimate one function and MIS stays unbiased.
     float lod = 0.0f;
     const int emission_texture = material.emission.texture;
-    const bool textured = has_texture(emission_texture, si.mesh);
+    const bool textured = !kPlainDiffuse && has_texture(emission_texture, si.mesh);
     if (textured && p.prev_specular[slot])
       lod = mip_level_from_ray_cone(textures_[static_cast<std::size_t>(emission_texture)], p.cone_width[slot],
                                     std::abs(si.cos_wo_geometric), si.uv_area, si.world_area);
@@ -445,24 +463,34 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     return;
   }
 
-  MaterialPoint point = material_point(material, si, p.cone_width[slot], ray);
-  if (anisotropy) point.anisotropy = anisotropy->strength;
-  // A sheen's colour and a tinted specular F0 are upsampled here, where the path's
-  // wavelengths are known (rare: only the materials that have them pay for it).
-  LayerColors<Mode> layer_colors;
-  if (__builtin_expect(point.has_sheen(), 0)) layer_colors.sheen = colors_.reflectance(point.sheen_color, wl);
-  if (__builtin_expect(point.has_tinted_specular(), 0) && material.type == MaterialType::metallic_roughness)
-    layer_colors.specular_f0 = colors_.reflectance(tables_.dielectric_f0(si.material, point.specular_color), wl);
-  auto bsdf = make_bsdf<Mode>(material, si.material, base_color(material, si, p.cone_width[slot], ray, wl), point, wl,
-                              tables_, layer_colors);
   // The coat's own normal map (KHR_materials_clearcoat's clearcoatNormalTexture), in the
   // base's frame; not on a microsurface (microfacet normal mapping shades the base alone).
   // The coat points at the frame, which lives as long as the BSDF here.
   std::optional<Frame> own_coat_frame;
-  if (__builtin_expect(material.clearcoat_normal_texture >= 0, 0) && bsdf.coat.present() && !on_microsurface) {
-    own_coat_frame = coat_frame(material, si, unmapped, p.cone_width[slot], ray);
-    if (own_coat_frame) bsdf.coat.frame = &*own_coat_frame;
-  }
+  using PlainBsdf = bsdf::PlainDiffuseBsdf<Mode::kChannels>;
+  auto bsdf = [&] {
+    // A plain diffuse material's BSDF is make_bsdf's bare Lambertian lobe of its untextured
+    // base colour.
+    if constexpr (kPlainDiffuse) {
+      return PlainBsdf{{colors_.base_color(si.material, wl)}};
+    } else {
+      MaterialPoint point = material_point(material, si, p.cone_width[slot], ray);
+      if (anisotropy) point.anisotropy = anisotropy->strength;
+      // A sheen's colour and a tinted specular F0 are upsampled here, where the path's
+      // wavelengths are known (rare: only the materials that have them pay for it).
+      LayerColors<Mode> layer_colors;
+      if (__builtin_expect(point.has_sheen(), 0)) layer_colors.sheen = colors_.reflectance(point.sheen_color, wl);
+      if (__builtin_expect(point.has_tinted_specular(), 0) && material.type == MaterialType::metallic_roughness)
+        layer_colors.specular_f0 = colors_.reflectance(tables_.dielectric_f0(si.material, point.specular_color), wl);
+      auto b = make_bsdf<Mode>(material, si.material, base_color(material, si, p.cone_width[slot], ray, wl), point, wl,
+                               tables_, layer_colors);
+      if (__builtin_expect(material.clearcoat_normal_texture >= 0, 0) && b.coat.present() && !on_microsurface) {
+        own_coat_frame = coat_frame(material, si, unmapped, p.cone_width[slot], ray);
+        if (own_coat_frame) b.coat.frame = &*own_coat_frame;
+      }
+      return b;
+    }
+  }();
   if constexpr (Mode::kSpectral) {
     // Hero wavelength after a dispersive event (Wilkie et al. 2014): from here on only
     // channel 0 carries an estimate; terminate once (pdf[1] = 0 marks it done).
@@ -471,7 +499,7 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   const Vec3f wo_local = si.shading.to_local(-ray.direction);
   // The bounce's block of dimensions stays reserved whole, so dimensions stay aligned, but
   // only the numbers this vertex reads are drawn (the others cost a hash each).
-  const bool light_sampled = use_nee && !bsdf.is_specular();
+  const bool light_sampled = use_nee_ && !bsdf.is_specular();
   unsigned needs = 0;
   if (light_sampled) needs |= lights_.uses_selection_number() ? kNeedLight : kNeedLightPoint;
   if (bsdf.uses_lobe_sample()) needs |= kNeedLobe;
@@ -489,13 +517,18 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
         // (the microsurface_* functions are found by argument-dependent lookup, in prism::bsdf)
         const bool weighted = !ls->is_delta && settings_.estimator == LightEstimator::mis;
         float bsdf_pdf = 0.0f;
-        const Spectrum<Mode> f = on_microsurface ? microsurface_eval(bsdf, *microsurface, wo_local, wi_local)
-                                                 : bsdf.eval_with_pdf(wo_local, wi_local, weighted, bsdf_pdf);
+        const Spectrum<Mode> f = [&] {
+          if constexpr (!kPlainDiffuse)
+            if (on_microsurface) return microsurface_eval(bsdf, *microsurface, wo_local, wi_local);
+          return bsdf.eval_with_pdf(wo_local, wi_local, weighted, bsdf_pdf);
+        }();
         if (!f.is_black()) {
           float w = 1.0f;
-          if (weighted)
-            w = power_heuristic(ls->pdf, on_microsurface ? microsurface_pdf(bsdf, *microsurface, wo_local, wi_local)
-                                                         : bsdf_pdf);
+          if (weighted) {
+            if constexpr (!kPlainDiffuse)
+              if (on_microsurface) bsdf_pdf = microsurface_pdf(bsdf, *microsurface, wo_local, wi_local);
+            w = power_heuristic(ls->pdf, bsdf_pdf);
+          }
           const Vec3f origin = offset_ray_origin(si.position, si.geometric_normal, ls->wi);
           float t_max;
           Vec3f dir = ls->wi;
@@ -526,9 +559,11 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     }
   }
 
-  const auto bs = on_microsurface ? microsurface_sample(bsdf, *microsurface, wo_local, u.lobe, u.direction,
-                                                       facet_numbers(p, slot))
-                                 : bsdf.sample(wo_local, u.lobe, u.direction);
+  const auto bs = [&] {
+    if constexpr (!kPlainDiffuse)
+      if (on_microsurface) return microsurface_sample(bsdf, *microsurface, wo_local, u.lobe, u.direction, facet_numbers(p, slot));
+    return bsdf.sample(wo_local, u.lobe, u.direction);
+  }();
   if (!bs || bs->pdf <= 0.0f || bs->f.is_black()) {
     p.finished[slot] = 1;
     return;

@@ -103,6 +103,12 @@ class WavefrontIntegrator {
   struct Paths;  // structure of arrays, one slot per pixel of a tile (or of the image)
   void generate(Paths& paths, std::uint32_t slot, std::uint32_t sample_index) const;
   void shade(Paths& paths, std::uint32_t slot) const;
+  // shade() past the hit's geometry. kPlainDiffuse: the material is_plain_diffuse
+  // (material_bsdf.h), and the steps it cannot take (maps, anisotropy, textures, layers,
+  // other lobes) are compiled out; the steps left are the same, in the same order, so a
+  // plain hit shades to the same bits either way.
+  template <bool kPlainDiffuse>
+  void shade_surface(Paths& paths, std::uint32_t slot, SurfaceInteraction& si) const;
   Spectrum<Mode> base_color(const Material& material, const SurfaceInteraction& si, float cone_width,
                             const Ray& ray, const Wavelengths<Mode>& wl) const;
   // Base colour × texel of a textured material, in the material's base_color_space;
@@ -179,6 +185,7 @@ class WavefrontIntegrator {
   std::vector<std::unique_ptr<Paths>> idle_tile_paths_;  // tile path states not in use
   std::unique_ptr<Paths> whole_image_paths_;             // lockstep queue's, made on first use
   MaterialTables tables_;
+  std::vector<std::uint8_t> plain_diffuse_;  // per material: is_plain_diffuse
   const std::vector<MipPyramid>& textures_;  // one per Scene::textures entry
   std::vector<Mat3> textured_emission_;  // per material: texel → radiance in the emission colour's space (scene/emission.h)
   const Scene& scene_;
@@ -196,6 +203,8 @@ class WavefrontIntegrator {
   // independent of one another and overlap, where inside shade() they are a link in each
   // path's chain of dependent work (BENCHMARKS.md "Session 28").
   bool bounce_blocks_ahead_ = false;
+  bool use_nee_ = false;           // light samples at non-specular vertices (not bsdf_only, and lights exist)
+  bool weight_bsdf_hits_ = false;  // MIS: emitters found by BSDF sampling weighted against light sampling
 };
 
 }  // namespace prism

@@ -133,29 +133,29 @@ TEST(PixelSampler, OnlyNeededIsWhatAPartialBlockDraws) {
     }
 }
 
-TEST(PixelSampler, SobolLanesDrawTheScalarBits) {
-  // padded_sobol_lanes.h's AVX2 blocks against the scalar requests (sample_1d/sample_2d,
-  // which never take the lanes), over seeds, pixels, sample indices with every bit in play,
-  // depths and every partial block; the camera block with and without a lens.
-  if (!padded_sobol_lanes_available()) GTEST_SKIP() << "this processor (or PRISM_SAMPLER_SCALAR) runs no AVX2 lanes";
+// padded_sobol_lanes.h's blocks on `lanes` against the scalar requests (sample_1d/sample_2d,
+// which never take the lanes), over seeds, pixels, sample indices with every bit in play,
+// depths and every partial block; the camera block with and without a lens.
+void expect_lanes_draw_the_scalar_bits(SobolLanes lanes) {
+  SCOPED_TRACE(lanes == SobolLanes::avx512 ? "AVX-512 lanes" : "AVX2 lanes");
   std::uint64_t state = 1;
   const auto next = [&] { return static_cast<std::uint32_t>((state = mix64(state)) >> 32); };
   for (int trial = 0; trial < 300; ++trial) {
     const PixelSample s{next() | (std::uint64_t{next()} << 32), next() % 65536, 256, trial < 20 ? next() % 64 : next()};
-    const CameraSamples c = padded_sobol_camera_block_lanes(s, true);
+    const CameraSamples c = padded_sobol_camera_block_lanes(lanes, s, true);
     expect_same(c.pixel_jitter, sample_2d(SamplerKind::sobol, s, kPixelJitterDimension));
     expect_same(c.lens, sample_2d(SamplerKind::sobol, s, kLensDimension));
     EXPECT_NEAR(c.wavelength, sample_1d(SamplerKind::sobol, s, kWavelengthDimension), 0x1p-24);
     EXPECT_EQ(bits_to_unit_float(static_cast<std::uint32_t>(c.wavelength * 0x1p32)),
               sample_1d(SamplerKind::sobol, s, kWavelengthDimension));
-    const CameraSamples pinhole = padded_sobol_camera_block_lanes(s, false);
+    const CameraSamples pinhole = padded_sobol_camera_block_lanes(lanes, s, false);
     expect_same(pinhole.pixel_jitter, c.pixel_jitter);
     expect_same(pinhole.lens, Vec2f(0.0f, 0.0f));
     EXPECT_EQ(pinhole.wavelength, c.wavelength);
     const int depth = static_cast<int>(next() % 12);
     const std::uint32_t base = kFirstBounceDimension + kDimensionsPerBounce * static_cast<std::uint32_t>(depth);
     for (unsigned needs = 0; needs <= kNeedAllBounceSamples; ++needs) {
-      const BounceSamples b = padded_sobol_bounce_block_lanes(s, depth, needs);
+      const BounceSamples b = padded_sobol_bounce_block_lanes(lanes, s, depth, needs);
       EXPECT_EQ(b.light_select, needs & kNeedLightSelect ? sample_1d(SamplerKind::sobol, s, base) : 0.0f);
       expect_same(b.light, needs & kNeedLightPoint ? sample_2d(SamplerKind::sobol, s, base + 1) : Vec2f(0.0f, 0.0f));
       EXPECT_EQ(b.lobe, needs & kNeedLobe ? sample_1d(SamplerKind::sobol, s, base + 3) : 0.0f);
@@ -163,6 +163,26 @@ TEST(PixelSampler, SobolLanesDrawTheScalarBits) {
       EXPECT_EQ(b.roulette, needs & kNeedRoulette ? sample_1d(SamplerKind::sobol, s, base + 6) : 0.0f);
     }
   }
+}
+
+TEST(PixelSampler, SobolLanesDrawTheScalarBits) {
+  bool any = false;
+  for (const SobolLanes lanes : {SobolLanes::avx2, SobolLanes::avx512}) {
+    if (!padded_sobol_lanes_supported(lanes)) continue;
+    expect_lanes_draw_the_scalar_bits(lanes);
+    any = true;
+  }
+  if (!any) GTEST_SKIP() << "this processor runs no lanes";
+}
+
+TEST(PixelSampler, SobolLanesAreTheWidestSupported) {
+  // What the renderer takes, where the environment says nothing (the tests run without
+  // PRISM_SAMPLER_SCALAR and PRISM_SAMPLER_AVX2).
+  const SobolLanes widest = padded_sobol_lanes_supported(SobolLanes::avx512) ? SobolLanes::avx512
+                            : padded_sobol_lanes_supported(SobolLanes::avx2) ? SobolLanes::avx2
+                                                                             : SobolLanes::none;
+  EXPECT_EQ(padded_sobol_lanes(), widest);
+  EXPECT_EQ(padded_sobol_lanes_available(), widest != SobolLanes::none);
 }
 
 TEST(PixelSampler, SobolRunsOfSamplesArePerPixelNetsWhateverTheirLength) {

@@ -1,12 +1,13 @@
 #pragma once
 // The padded Owen-scrambled Sobol' sampler's camera and bounce blocks (pixel_sampler.h,
 // "sobol"; Burley 2020) with their requests side by side in the eight 32-bit lanes of one
-// AVX2 register. A bounce block's five requests need five index shuffles and seven axis
+// 256-bit register. A bounce block's five requests need five index shuffles and seven axis
 // scrambles, each a Laine–Karras permutation and a bit reversal: twelve scalar chains of
 // about 25 instructions, here two passes over one register (a bit reversal is a byte
-// shuffle and two nibble-table lookups; Sobol' dimension 1 is computed in closed form
-// instead of through byte tables). The request hashes stay scalar (padded_sobol.h), and
-// only the requests a vertex asks for are hashed.
+// shuffle and two nibble-table lookups, or with GFNI one affine transform; Sobol'
+// dimension 1 is computed in closed form instead of through byte tables). The request
+// hashes run in four 64-bit lanes (AVX2 builds each 64-bit multiply from three 32-bit
+// ones, AVX-512DQ has it), and only the requests a vertex asks for are hashed.
 //
 // The bits are exactly those of the scalar path (pixel_sampler_test compares them, and
 // renders are bitwise the same). Chosen at run time: a build for plain x86-64 also runs on
@@ -15,12 +16,25 @@
 
 namespace prism {
 
-// Whether this build and processor run the lanes (decided once, before main).
-bool padded_sobol_lanes_available();
+enum class SobolLanes : unsigned char {
+  none,    // the scalar path
+  avx2,    // AVX2
+  avx512,  // AVX2 with AVX-512F/DQ/VL and GFNI, on the same 256-bit registers
+};
 
-// camera_samples / bounce_samples of SamplerKind::sobol; only where
-// padded_sobol_lanes_available().
+// The lanes this build and processor run (decided once, before main): the widest the
+// processor has, or less where the environment says (PRISM_SAMPLER_SCALAR=1: none,
+// PRISM_SAMPLER_AVX2=1: at most avx2).
+SobolLanes padded_sobol_lanes();
+bool padded_sobol_lanes_available();  // padded_sobol_lanes() != none
+// Whether the processor runs `lanes`, whatever the environment says (tests).
+bool padded_sobol_lanes_supported(SobolLanes lanes);
+
+// camera_samples / bounce_samples of SamplerKind::sobol on padded_sobol_lanes(), which
+// must be available; and on given lanes, which the processor must run (not none).
 CameraSamples padded_sobol_camera_block_lanes(const PixelSample& sample, bool lens);
 BounceSamples padded_sobol_bounce_block_lanes(const PixelSample& sample, int depth, unsigned needs);
+CameraSamples padded_sobol_camera_block_lanes(SobolLanes lanes, const PixelSample& sample, bool lens);
+BounceSamples padded_sobol_bounce_block_lanes(SobolLanes lanes, const PixelSample& sample, int depth, unsigned needs);
 
 }  // namespace prism

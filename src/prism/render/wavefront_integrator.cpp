@@ -16,6 +16,7 @@
 #include "prism/render/normal_mapping.h"
 #include "prism/render/surface_interaction.h"
 #include "prism/render/volume_absorption.h"
+#include "prism/sampling/padded_sobol_lanes.h"
 #include "prism/scene/emission.h"
 #include "prism/sampling/warps.h"
 
@@ -83,6 +84,8 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
                       (m.positions.size() + m.normals.size() + m.tangents.size()) * sizeof(Vec3f) +
                       m.uvs.size() * sizeof(Vec2f);
   prefetch_geometry_ = geometry_bytes > (std::size_t{512} << 10);
+  // (Only the padded Sobol' lanes are: shading's loop calls them directly, without
+  // bounce_samples' dispatch.)
   bounce_blocks_ahead_ = whole_bounce_blocks_are_cheap(settings_.sampler);
   use_nee_ = settings_.estimator != LightEstimator::bsdf_only && !lights_.empty();
   weight_bsdf_hits_ = settings_.estimator == LightEstimator::mis;
@@ -751,7 +754,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
       if (bounce_blocks_ahead_)
         for (std::size_t i = b; i < e; ++i)
           if (const std::uint32_t s = live[i]; p.hit_found[s])
-            p.bounce_block[s] = bounce_samples(settings_.sampler, pixel_sample(p, s), p.depth[s]);
+            p.bounce_block[s] = padded_sobol_bounce_block_lanes(pixel_sample(p, s), p.depth[s], kNeedAllBounceSamples);
       if (!prefetch_geometry_) {
         for (std::size_t i = b; i < e; ++i) shade(p, live[i]);
         return;

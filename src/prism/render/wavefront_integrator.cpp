@@ -84,8 +84,8 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
                       (m.positions.size() + m.normals.size() + m.tangents.size()) * sizeof(Vec3f) +
                       m.uvs.size() * sizeof(Vec2f);
   prefetch_geometry_ = geometry_bytes > (std::size_t{512} << 10);
-  // (Only the padded Sobol' lanes are: shading's loop calls them directly, without
-  // bounce_samples' dispatch.)
+  // Cheap only on the padded Sobol' lanes, which the shading loop then calls directly,
+  // without bounce_samples' dispatch.
   bounce_blocks_ahead_ = whole_bounce_blocks_are_cheap(settings_.sampler);
   use_nee_ = settings_.estimator != LightEstimator::bsdf_only && !lights_.empty();
   weight_bsdf_hits_ = settings_.estimator == LightEstimator::mis;

@@ -46,6 +46,9 @@ struct Emission {
   bool operator==(const Emission&) const = default;
 };
 
+// A member that changes how a diffuse material shades must also disqualify it in
+// is_plain_diffuse (render/material_bsdf.cpp), or the integrator's plain diffuse path
+// ignores it.
 struct Material {
   std::string name;
   MaterialType type = MaterialType::diffuse;

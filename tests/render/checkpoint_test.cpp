@@ -13,6 +13,7 @@
 #include "prism/render/merge_partial_renders.h"
 #include "prism/render/renderer.h"
 #include "prism/scene/builtin_scenes.h"
+#include "support/film_statistics.h"
 
 namespace prism {
 namespace {
@@ -32,9 +33,7 @@ fs::path temp_file(const std::string& name) {
   return fs::temp_directory_path() / ("prism-checkpoint-test-" + std::to_string(::getpid()) + "-" + name);
 }
 
-bool films_identical(const Film& a, const Film& b) {
-  return a.sums() == b.sums() && a.sum_squares() == b.sum_squares() && a.counts() == b.counts();
-}
+using test::films_identical;
 
 TEST(Checkpoint, ResumedRenderIsBitwiseIdenticalToUninterrupted) {
   const Scene scene = make_cornell_box();

@@ -10,13 +10,12 @@
 #include "prism/render/material_bsdf.h"
 #include "prism/render/renderer.h"
 #include "prism/scene/builtin_scenes.h"
+#include "support/film_statistics.h"
 
 namespace prism {
 namespace {
 
-bool films_identical(const Film& a, const Film& b) {
-  return a.sums() == b.sums() && a.sum_squares() == b.sum_squares() && a.counts() == b.counts();
-}
+using test::films_identical;
 
 // A grey 1×1 texture: where it were read it would halve roughness and metallic.
 TextureImage grey_texel() {

@@ -29,9 +29,7 @@ RenderSettings cornell_settings(SamplerKind sampler, int size, int spp, std::uin
   return s;
 }
 
-bool films_identical(const Film& a, const Film& b) {
-  return a.sums() == b.sums() && a.sum_squares() == b.sum_squares() && a.counts() == b.counts();
-}
+using test::films_identical;
 
 TEST(SamplerRender, ImagesDoNotDependOnThreadCount) {
   const Scene scene = make_cornell_box();

@@ -1,6 +1,7 @@
 #pragma once
 // Means and their estimated variances over blocks of a film, for tests that compare
-// renders within noise bounds derived from the film's own per-pixel variance.
+// renders within noise bounds derived from the film's own per-pixel variance; and the
+// bitwise comparison of two films.
 #include "prism/render/film.h"
 
 namespace prism::test {
@@ -23,6 +24,12 @@ inline BlockEstimate block_estimate(const Film& film, int x0, int y0, int x1, in
   e.mean /= n;
   e.variance /= n * n;
   return e;
+}
+
+// Two films hold the same sums, squares and counts, bit for bit: the same image, and the
+// same image to every later sample added.
+inline bool films_identical(const Film& a, const Film& b) {
+  return a.sums() == b.sums() && a.sum_squares() == b.sum_squares() && a.counts() == b.counts();
 }
 
 }  // namespace prism::test

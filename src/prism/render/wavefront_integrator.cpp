@@ -518,7 +518,7 @@ void WavefrontIntegrator<Mode>::shade_surface(Paths& p, std::uint32_t slot, Surf
       // The geometric and the shading side must agree, or light leaks through edges.
       if ((dot(ls->wi, si.geometric_normal) > 0.0f) == (wi_local.z > 0.0f) && ls->pdf > 0.0f) {
         // (the microsurface_* functions are found by argument-dependent lookup, in prism::bsdf)
-        const bool weighted = !ls->is_delta && settings_.estimator == LightEstimator::mis;
+        const bool weighted = !ls->is_delta && weight_bsdf_hits_;
         float bsdf_pdf = 0.0f;
         const Spectrum<Mode> f = [&] {
           if constexpr (!kPlainDiffuse)

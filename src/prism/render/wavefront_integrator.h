@@ -204,7 +204,7 @@ class WavefrontIntegrator {
   // path's chain of dependent work (BENCHMARKS.md "Session 28").
   bool bounce_blocks_ahead_ = false;
   bool use_nee_ = false;           // light samples at non-specular vertices (not bsdf_only, and lights exist)
-  bool weight_bsdf_hits_ = false;  // MIS: emitters found by BSDF sampling weighted against light sampling
+  bool weight_bsdf_hits_ = false;  // MIS: light samples and emitters found by BSDF sampling weighted against each other
 };
 
 }  // namespace prism

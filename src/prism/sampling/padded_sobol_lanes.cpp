@@ -38,17 +38,13 @@ inline __m256i multiply_low64_lanes(__m256i a, std::uint64_t c) {
   return _mm256_add_epi64(_mm256_mul_epu32(a, c_low), _mm256_slli_epi64(cross, 32));
 }
 
-// sobol.h's reverse_bits_32 in every lane: the lane's bytes in reverse order (one byte
-// shuffle), then each byte's bits, a nibble at a time through a 16-entry table.
-inline __m256i reverse_bits_lanes(__m256i x) {
-  const __m256i byte_order = _mm256_setr_epi8(3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12,  //
-                                              3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12);
+// Each byte's bits in reverse order, a nibble at a time through a 16-entry table.
+inline __m256i reverse_bits_in_bytes(__m256i x) {
   const __m256i nibble_reversed = _mm256_setr_epi8(0x0, 0x8, 0x4, 0xc, 0x2, 0xa, 0x6, 0xe, 0x1, 0x9, 0x5, 0xd, 0x3,
                                                    0xb, 0x7, 0xf,  //
                                                    0x0, 0x8, 0x4, 0xc, 0x2, 0xa, 0x6, 0xe, 0x1, 0x9, 0x5, 0xd, 0x3,
                                                    0xb, 0x7, 0xf);
   const __m256i low_nibbles = _mm256_set1_epi8(0x0f);
-  x = _mm256_shuffle_epi8(x, byte_order);
   const __m256i low = _mm256_and_si256(x, low_nibbles);
   const __m256i high = _mm256_and_si256(_mm256_srli_epi16(x, 4), low_nibbles);
   // A byte's reversed low nibble becomes its high nibble: the table's values are below 16,
@@ -75,14 +71,11 @@ inline __m256i multiply_low64_lanes(__m256i a, std::uint64_t c) {
   return _mm256_mullo_epi64(a, _mm256_set1_epi64x(static_cast<long long>(c)));
 }
 
-// The lane's bytes in reverse order, then each byte's bits by an affine transform over
-// GF(2) whose matrix has row i = bit (7 − i): the bytes 0x01, 0x02, …, 0x80 from the low
-// byte of the 64-bit constant up (Intel SDM, GF2P8AFFINEQB).
-inline __m256i reverse_bits_lanes(__m256i x) {
-  const __m256i byte_order = _mm256_setr_epi8(3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12,  //
-                                              3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12);
-  return _mm256_gf2p8affine_epi64_epi8(_mm256_shuffle_epi8(x, byte_order),
-                                       _mm256_set1_epi64x(static_cast<long long>(0x8040201008040201ull)), 0);
+// Each byte's bits in reverse order, by an affine transform over GF(2) whose matrix has
+// row i = bit (7 − i): the bytes 0x01, 0x02, …, 0x80 from the low byte of the 64-bit
+// constant up (Intel SDM, GF2P8AFFINEQB).
+inline __m256i reverse_bits_in_bytes(__m256i x) {
+  return _mm256_gf2p8affine_epi64_epi8(x, _mm256_set1_epi64x(static_cast<long long>(0x8040201008040201ull)), 0);
 }
 
 #include "prism/sampling/padded_sobol_lane_blocks.inc"
@@ -137,14 +130,6 @@ BounceSamples padded_sobol_bounce_block_lanes(SobolLanes lanes, const PixelSampl
   return avx2::bounce_block(s, depth, needs);
 }
 
-CameraSamples padded_sobol_camera_block_lanes(const PixelSample& s, bool lens) {
-  return padded_sobol_camera_block_lanes(kLanes, s, lens);
-}
-
-BounceSamples padded_sobol_bounce_block_lanes(const PixelSample& s, int depth, unsigned needs) {
-  return padded_sobol_bounce_block_lanes(kLanes, s, depth, needs);
-}
-
 #else
 
 SobolLanes padded_sobol_lanes() { return SobolLanes::none; }
@@ -158,11 +143,15 @@ CameraSamples padded_sobol_camera_block_lanes(SobolLanes, const PixelSample& s, 
 BounceSamples padded_sobol_bounce_block_lanes(SobolLanes, const PixelSample& s, int depth, unsigned needs) {
   return bounce_samples(SamplerKind::sobol, s, depth, needs);
 }
-CameraSamples padded_sobol_camera_block_lanes(const PixelSample& s, bool lens) { return camera_samples(SamplerKind::sobol, s, lens); }
-BounceSamples padded_sobol_bounce_block_lanes(const PixelSample& s, int depth, unsigned needs) {
-  return bounce_samples(SamplerKind::sobol, s, depth, needs);
-}
 
 #endif
+
+CameraSamples padded_sobol_camera_block_lanes(const PixelSample& s, bool lens) {
+  return padded_sobol_camera_block_lanes(padded_sobol_lanes(), s, lens);
+}
+
+BounceSamples padded_sobol_bounce_block_lanes(const PixelSample& s, int depth, unsigned needs) {
+  return padded_sobol_bounce_block_lanes(padded_sobol_lanes(), s, depth, needs);
+}
 
 }  // namespace prism

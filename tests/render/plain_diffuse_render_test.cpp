@@ -2,14 +2,18 @@
 // its general path: the Cornell box, whose materials are all plain diffuse, rendered as it
 // is and with every material made to take the general path by a texture its lobe does not
 // read (a metallic-roughness texture: a Lambertian lobe has no roughness and no metal).
-// The two images must be the same bits, in every transport mode and estimator.
+// The two images must be the same bits, in every transport mode and estimator. And the
+// plain path's hits shaded several at a time (shade_plain_lanes) against the same hits
+// shaded one by one: the same bits again.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <string>
 
 #include "prism/render/material_bsdf.h"
 #include "prism/render/renderer.h"
 #include "prism/scene/builtin_scenes.h"
+#include "prism/scene/loaders/sphere_mesh.h"
 #include "support/film_statistics.h"
 
 namespace prism {
@@ -28,6 +32,34 @@ TextureImage grey_texel() {
   return t;
 }
 
+struct Case {
+  TransportKind kind;
+  int wavelengths;
+  LightEstimator estimator;
+};
+constexpr Case kCases[] = {{TransportKind::spectral, 4, LightEstimator::mis},
+                           {TransportKind::spectral, 8, LightEstimator::nee_only},
+                           {TransportKind::spectral, 3, LightEstimator::bsdf_only},
+                           {TransportKind::rgb, 3, LightEstimator::mis}};
+
+RenderSettings settings_for(const Case& c) {
+  RenderSettings s;
+  s.width = 24;
+  s.height = 20;
+  s.samples_per_pixel = 6;
+  s.seed = 5;
+  s.threads = 1;
+  s.transport.kind = c.kind;
+  s.transport.wavelengths = c.wavelengths;
+  s.path.estimator = c.estimator;
+  return s;
+}
+
+std::string label_of(const Case& c) {
+  return std::string(c.kind == TransportKind::rgb ? "rgb" : "spectral") + " " + std::to_string(c.wavelengths) +
+         ", estimator " + std::to_string(static_cast<int>(c.estimator));
+}
+
 TEST(PlainDiffuseRender, SameImageAsTheGeneralPath) {
   const Scene plain = make_cornell_box();
   for (const Material& m : plain.materials) ASSERT_TRUE(is_plain_diffuse(m)) << m.name;
@@ -38,31 +70,56 @@ TEST(PlainDiffuseRender, SameImageAsTheGeneralPath) {
     ASSERT_FALSE(is_plain_diffuse(m)) << m.name;
   }
 
-  struct Case {
-    TransportKind kind;
-    int wavelengths;
-    LightEstimator estimator;
-  };
-  for (const Case c : {Case{TransportKind::spectral, 4, LightEstimator::mis},
-                       Case{TransportKind::spectral, 8, LightEstimator::nee_only},
-                       Case{TransportKind::spectral, 3, LightEstimator::bsdf_only},
-                       Case{TransportKind::rgb, 3, LightEstimator::mis}}) {
-    RenderSettings s;
-    s.width = 24;
-    s.height = 20;
-    s.samples_per_pixel = 6;
-    s.seed = 5;
-    s.threads = 1;
-    s.transport.kind = c.kind;
-    s.transport.wavelengths = c.wavelengths;
-    s.path.estimator = c.estimator;
-    const std::string label = std::string(c.kind == TransportKind::rgb ? "rgb" : "spectral") + " " +
-                              std::to_string(c.wavelengths) + ", estimator " +
-                              std::to_string(static_cast<int>(c.estimator));
+  for (const Case c : kCases) {
+    const RenderSettings s = settings_for(c);
+    const std::string label = label_of(c);
     const RenderResult a = render(plain, s);
     const RenderResult b = render(general, s);
     EXPECT_GT(a.film.counts()[0], 0u) << label;
     EXPECT_TRUE(films_identical(a.film, b.film)) << label << ": the plain and the general path differ";
+  }
+}
+
+// The Cornell box with a smooth sphere (per-vertex normals and uvs, no tangents) of its
+// white, and a point and a directional light besides its lamp: delta and infinitely distant
+// light samples.
+Scene cornell_box_with_smooth_sphere_and_delta_lights() {
+  Scene scene = make_cornell_box();
+  TriangleMesh sphere = loaders::make_uv_sphere(Vec3f(380.0f, 90.0f, 120.0f), 90.0f, 10);
+  sphere.material = 0;
+  EXPECT_EQ(scene.materials[0].name, "white");
+  EXPECT_FALSE(sphere.normals.empty());
+  scene.meshes.push_back(sphere);
+  Light point;
+  point.type = LightType::point;
+  point.position = Vec3f(150.0f, 400.0f, 200.0f);
+  point.intensity = 2e5f;
+  scene.lights.push_back(point);
+  Light sun;
+  sun.type = LightType::directional;
+  sun.direction = Vec3f(0.3f, -0.8f, 0.52f);
+  sun.intensity = 2.0f;
+  scene.lights.push_back(sun);
+  return scene;
+}
+
+// Hits shaded in lanes (WavefrontIntegrator::shade_plain_lanes) against the same hits
+// shaded alone (PRISM_SHADE_SCALAR=1): the same bits, in every transport mode and
+// estimator, on flat and smooth meshes, with area, point and directional lights.
+TEST(PlainDiffuseLanes, SameImageAsShadingAlone) {
+  for (const Scene& scene : {make_cornell_box(), cornell_box_with_smooth_sphere_and_delta_lights()}) {
+    for (const Case c : kCases) {
+      const RenderSettings s = settings_for(c);
+      const RenderResult lanes = render(scene, s);
+      ASSERT_EQ(setenv("PRISM_SHADE_SCALAR", "1", 1), 0);
+      const RenderResult alone = render(scene, s);
+      unsetenv("PRISM_SHADE_SCALAR");
+      const std::string label = label_of(c) + (scene.lights.empty() ? "" : ", sphere and delta lights");
+      // Most hits are on the walls, blocks and sphere, all plain diffuse.
+      EXPECT_GT(lanes.lane_shaded_hits, lanes.rays / 2) << label;
+      EXPECT_EQ(alone.lane_shaded_hits, 0u) << label;
+      EXPECT_TRUE(films_identical(lanes.film, alone.film)) << label << ": lanes and shading alone differ";
+    }
   }
 }
 

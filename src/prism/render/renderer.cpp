@@ -297,6 +297,7 @@ void render_passes(const PreparedScene& prepared, const RenderSettings& settings
     result.pass_live_paths.push_back(stats.live_paths_per_step);
     result.rays += stats.rays;
     result.shadow_rays += stats.shadow_rays;
+    result.lane_shaded_hits += stats.lane_shaded_hits;
     result.invalid_samples += stats.invalid_samples;
     next_sample += count;
     if (settings.samples_per_pass == 0) {

@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
 
 #include "prism/bsdf/plain_diffuse_bsdf.h"
+#include "prism/core/float_lanes.h"
 #include "prism/core/frame.h"
 #include "prism/core/parallel.h"
 #include "prism/render/anisotropy.h"
@@ -16,57 +18,12 @@
 #include "prism/render/normal_mapping.h"
 #include "prism/render/surface_interaction.h"
 #include "prism/render/volume_absorption.h"
+#include "prism/render/wavefront_paths.h"
 #include "prism/sampling/padded_sobol_lanes.h"
 #include "prism/scene/emission.h"
 #include "prism/sampling/warps.h"
 
 namespace prism {
-
-// A queue's path state, one slot per pixel of a run of pixels starting at first_pixel:
-// slot s holds pixel first_pixel + s.
-template <class Mode>
-struct WavefrontIntegrator<Mode>::Paths {
-  explicit Paths(std::size_t n)
-      : ray(n), throughput(n), radiance(n), wavelengths(n), hit(n), hit_found(n), shadow_ray(n),
-        shadow_contribution(n), shadow_pending(n), shadow_blocked(n), prev_position(n), prev_normal(n), prev_pdf(n),
-        eta_scale(n), cone_width(n), cone_spread(n), prev_specular(n), depth(n), finished(n), sample_index(n),
-        sample_end(n), inside_absorbing(n), interior_sigma(n), bounce_block(n), cached_emitter(n),
-        cached_emission(n) {}
-  std::size_t capacity() const { return ray.size(); }
-  std::uint32_t first_pixel = 0;
-  std::vector<Ray> ray;
-  std::vector<Spectrum<Mode>> throughput, radiance;
-  std::vector<Wavelengths<Mode>> wavelengths;
-  std::vector<Hit> hit;
-  std::vector<std::uint8_t> hit_found;
-  std::vector<Ray> shadow_ray;
-  std::vector<Spectrum<Mode>> shadow_contribution;
-  std::vector<std::uint8_t> shadow_pending;
-  std::vector<std::uint8_t> shadow_blocked;  // the pending shadow ray hit something
-  std::vector<Vec3f> prev_position;
-  std::vector<Vec3f> prev_normal;          // its shading normal (triangle light pdfs depend on it)
-  std::vector<float> prev_pdf;             // solid-angle pdf of the direction that led here
-  std::vector<float> eta_scale;            // product of η² over refractions (for roulette)
-  std::vector<float> cone_width, cone_spread;  // ray cone for texture LOD (Akenine-Möller et al. 2021)
-  std::vector<std::uint8_t> prev_specular; // that direction came from a delta lobe
-  std::vector<std::int32_t> depth;
-  std::vector<std::uint8_t> finished;
-  std::vector<std::uint32_t> sample_index, sample_end;
-  // The path travels inside an absorbing dielectric (volume_absorption.h), whose σ per scene
-  // unit at the path's wavelengths is interior_sigma: set on refracting in through a front
-  // face, cleared on refracting out through a back face.
-  std::vector<std::uint8_t> inside_absorbing;
-  std::vector<Spectrum<Mode>> interior_sigma;
-  // The AOVs of each slot's current sample, written by shade() at depth 0 and added to the
-  // film with the sample. Empty unless the film keeps AOVs.
-  std::vector<AovSample> first_hit_aovs;
-  // Each hit's bounce block, drawn whole before shading where bounce_blocks_ahead_.
-  std::vector<BounceSamples> bounce_block;
-  // The untextured emitter whose spectrum at the path's wavelengths is cached_emission
-  // (untextured_emission); kNoCachedEmitter for none yet.
-  std::vector<std::uint32_t> cached_emitter;
-  std::vector<Spectrum<Mode>> cached_emission;
-};
 
 template <class Mode>
 WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeAccel& accel,
@@ -98,6 +55,13 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
         textured ? scene.textures[static_cast<std::size_t>(m.emission.texture)].texel_space : ColorPickerSpace::srgb;
     textured_emission_.push_back(
         textured_emission_matrix(m.emission, picker_color_space(m.emission.color_space), texel_space));
+  }
+  const char* scalar = std::getenv("PRISM_SHADE_SCALAR");
+  shade_in_lanes_ = !(scalar && *scalar && *scalar != '0');
+  for (const TriangleMesh& mesh : scene.meshes) {
+    const bool plain = mesh.material < scene.materials.size() && plain_diffuse_[mesh.material] &&
+                       !scene.materials[mesh.material].is_emissive();
+    lane_mesh_.push_back(shade_in_lanes_ && plain && mesh.tangents.empty() ? 1 : 0);
   }
 }
 
@@ -411,6 +375,12 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
     shade_surface<true>(p, slot, si);
   else
     shade_surface<false>(p, slot, si);
+}
+
+template <class Mode>
+bool WavefrontIntegrator<Mode>::shades_in_lanes(const Paths& p, std::uint32_t slot) const {
+  return p.hit_found[slot] && lane_mesh_[p.hit[slot].mesh] && !p.inside_absorbing[slot] &&
+         p.depth[slot] < settings_.max_depth && (p.depth[slot] != 0 || p.first_hit_aovs.empty());
 }
 
 template <class Mode>
@@ -736,7 +706,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
                                                     bool parallel, int bounces_per_pass,
                                                     const std::function<void()>* after_bounces) {
   PassStatistics stats;
-  std::atomic<std::uint64_t> shadow_rays{0}, invalid{0}, completed{0};
+  std::atomic<std::uint64_t> shadow_rays{0}, invalid{0}, completed{0}, lane_shaded{0};
   constexpr std::size_t kGrain = 1024;
   std::vector<std::uint32_t> survivor_counts;  // per compaction chunk, reused every step
   while (!live.empty()) {
@@ -755,18 +725,36 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
         for (std::size_t i = b; i < e; ++i)
           if (const std::uint32_t s = live[i]; p.hit_found[s])
             p.bounce_block[s] = padded_sobol_bounce_block_lanes(pixel_sample(p, s), p.depth[s], kNeedAllBounceSamples);
+      // Hits that shade_in_lanes wait for lanes::kWidth of their kind and are shaded
+      // together; the last few, alone. Each slot's bits are the same either way.
+      std::array<std::uint32_t, lanes::kWidth> waiting;
+      std::size_t waiting_count = 0, lane_shaded_count = 0;
+      const auto shade_slot = [&](std::uint32_t s) {
+        if (!shades_in_lanes(p, s)) {
+          shade(p, s);
+          return;
+        }
+        waiting[waiting_count++] = s;
+        if (waiting_count == waiting.size()) {
+          shade_plain_lanes(p, waiting.data());
+          waiting_count = 0;
+          lane_shaded_count += waiting.size();
+        }
+      };
       if (!prefetch_geometry_) {
-        for (std::size_t i = b; i < e; ++i) shade(p, live[i]);
-        return;
+        for (std::size_t i = b; i < e; ++i) shade_slot(live[i]);
+      } else {
+        constexpr std::size_t kIndicesAhead = 8, kVerticesAhead = 4;
+        for (std::size_t i = b; i < e; ++i) {
+          if (i + kIndicesAhead < e && p.hit_found[live[i + kIndicesAhead]])
+            prefetch_hit_indices(scene_, p.hit[live[i + kIndicesAhead]]);
+          if (i + kVerticesAhead < e && p.hit_found[live[i + kVerticesAhead]])
+            prefetch_hit_vertices(scene_, p.hit[live[i + kVerticesAhead]]);
+          shade_slot(live[i]);
+        }
       }
-      constexpr std::size_t kIndicesAhead = 8, kVerticesAhead = 4;
-      for (std::size_t i = b; i < e; ++i) {
-        if (i + kIndicesAhead < e && p.hit_found[live[i + kIndicesAhead]])
-          prefetch_hit_indices(scene_, p.hit[live[i + kIndicesAhead]]);
-        if (i + kVerticesAhead < e && p.hit_found[live[i + kVerticesAhead]])
-          prefetch_hit_vertices(scene_, p.hit[live[i + kVerticesAhead]]);
-        shade(p, live[i]);
-      }
+      for (std::size_t k = 0; k < waiting_count; ++k) shade(p, waiting[k]);
+      lane_shaded += lane_shaded_count;
     });
     // Stages 3 and 4 in one walk over the queue, per chunk: the chunk's shadow rays (one
     // stream), then finished paths go to the film and their slot restarts with the pixel's
@@ -833,6 +821,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
   stats.shadow_rays = shadow_rays.load();
   stats.invalid_samples = invalid.load();
   stats.completed_samples = completed.load();
+  stats.lane_shaded_hits = lane_shaded.load();
   return stats;
 }
 

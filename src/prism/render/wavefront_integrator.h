@@ -66,6 +66,7 @@ struct PassStatistics {
   std::uint64_t shadow_rays = 0;
   std::uint64_t invalid_samples = 0;  // NaN/Inf radiance discarded
   std::uint64_t completed_samples = 0;
+  std::uint64_t lane_shaded_hits = 0;  // hits shaded several at a time (shade_plain_lanes)
   int steps = 0;
   std::vector<std::uint32_t> live_paths_per_step;
   // Adds another queue's ray and sample counts (the per-step figures are the caller's).
@@ -74,6 +75,7 @@ struct PassStatistics {
     shadow_rays += other.shadow_rays;
     invalid_samples += other.invalid_samples;
     completed_samples += other.completed_samples;
+    lane_shaded_hits += other.lane_shaded_hits;
   }
 };
 
@@ -109,6 +111,15 @@ class WavefrontIntegrator {
   // plain hit shades to the same bits either way.
   template <bool kPlainDiffuse>
   void shade_surface(Paths& paths, std::uint32_t slot, SurfaceInteraction& si) const;
+  // Whether shade() of the slot's hit may run in lanes (shade_plain_lanes): a hit on a mesh
+  // of lane_mesh_, on the path's first segment outside a medium, with a bounce left, and
+  // no AOVs to record.
+  bool shades_in_lanes(const Paths& paths, std::uint32_t slot) const;
+  // shade() of lanes::kWidth such hits at once (wavefront_plain_lanes.cpp): the same steps
+  // in the same order, the geometry and direction arithmetic of all the lanes in one
+  // instruction each (core/float_lanes.h), the spectra and the light sampler lane by lane.
+  // Each slot gets the bits shade() gives it.
+  void shade_plain_lanes(Paths& paths, const std::uint32_t* slots) const;
   Spectrum<Mode> base_color(const Material& material, const SurfaceInteraction& si, float cone_width,
                             const Ray& ray, const Wavelengths<Mode>& wl) const;
   // Base colour × texel of a textured material, in the material's base_color_space;
@@ -186,6 +197,10 @@ class WavefrontIntegrator {
   std::unique_ptr<Paths> whole_image_paths_;             // lockstep queue's, made on first use
   MaterialTables tables_;
   std::vector<std::uint8_t> plain_diffuse_;  // per material: is_plain_diffuse
+  // Per mesh: a plain diffuse material that does not emit, and no tangents (whose frames
+  // the lanes do not build), so shade_plain_lanes can shade its hits. All zero where
+  // shade_in_lanes_ is off.
+  std::vector<std::uint8_t> lane_mesh_;
   const std::vector<MipPyramid>& textures_;  // one per Scene::textures entry
   std::vector<Mat3> textured_emission_;  // per material: texel → radiance in the emission colour's space (scene/emission.h)
   const Scene& scene_;
@@ -205,6 +220,10 @@ class WavefrontIntegrator {
   bool bounce_blocks_ahead_ = false;
   bool use_nee_ = false;           // light samples at non-specular vertices (not bsdf_only, and lights exist)
   bool weight_bsdf_hits_ = false;  // MIS: light samples and emitters found by BSDF sampling weighted against each other
+  // Hits on lane_mesh_ meshes are shaded lanes::kWidth at a time (shade_plain_lanes); off
+  // with PRISM_SHADE_SCALAR=1, which shades every hit alone (for comparisons: the image is
+  // the same).
+  bool shade_in_lanes_ = false;
 };
 
 }  // namespace prism

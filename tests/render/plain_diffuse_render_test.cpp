@@ -107,18 +107,27 @@ Scene cornell_box_with_smooth_sphere_and_delta_lights() {
 // shaded alone (PRISM_SHADE_SCALAR=1): the same bits, in every transport mode and
 // estimator, on flat and smooth meshes, with area, point and directional lights.
 TEST(PlainDiffuseLanes, SameImageAsShadingAlone) {
+  // The lanes sample area-sampled triangle lights themselves and leave the other
+  // strategies (and every other emitter) to the light sampler.
+  LightSamplerOptions solid_angle;
+  solid_angle.triangle = TriangleLightSampling::solid_angle;
+  solid_angle.reuse_selection_sample = false;
   for (const Scene& scene : {make_cornell_box(), cornell_box_with_smooth_sphere_and_delta_lights()}) {
     for (const Case c : kCases) {
-      const RenderSettings s = settings_for(c);
-      const RenderResult lanes = render(scene, s);
-      ASSERT_EQ(setenv("PRISM_SHADE_SCALAR", "1", 1), 0);
-      const RenderResult alone = render(scene, s);
-      unsetenv("PRISM_SHADE_SCALAR");
-      const std::string label = label_of(c) + (scene.lights.empty() ? "" : ", sphere and delta lights");
-      // Most hits are on the walls, blocks and sphere, all plain diffuse.
-      EXPECT_GT(lanes.lane_shaded_hits, lanes.rays / 2) << label;
-      EXPECT_EQ(alone.lane_shaded_hits, 0u) << label;
-      EXPECT_TRUE(films_identical(lanes.film, alone.film)) << label << ": lanes and shading alone differ";
+      for (const LightSamplerOptions& light : {LightSamplerOptions{}, solid_angle}) {
+        RenderSettings s = settings_for(c);
+        s.path.light = light;
+        const RenderResult lanes = render(scene, s);
+        ASSERT_EQ(setenv("PRISM_SHADE_SCALAR", "1", 1), 0);
+        const RenderResult alone = render(scene, s);
+        unsetenv("PRISM_SHADE_SCALAR");
+        const std::string label = label_of(c) + (scene.lights.empty() ? "" : ", sphere and delta lights") +
+                                  (light == solid_angle ? ", solid-angle triangles" : "");
+        // Most hits are on the walls, blocks and sphere, all plain diffuse.
+        EXPECT_GT(lanes.lane_shaded_hits, lanes.rays / 2) << label;
+        EXPECT_EQ(alone.lane_shaded_hits, 0u) << label;
+        EXPECT_TRUE(films_identical(lanes.film, alone.film)) << label << ": lanes and shading alone differ";
+      }
     }
   }
 }

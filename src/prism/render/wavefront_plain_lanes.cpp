@@ -20,6 +20,7 @@
 #include "prism/render/wavefront_integrator.h"
 #include "prism/render/wavefront_paths.h"
 #include "prism/sampling/warps.h"
+#include "prism/scene/triangle_light_sampling.h"
 
 namespace prism {
 namespace {
@@ -117,10 +118,16 @@ void WavefrontIntegrator<Mode>::shade_plain_lanes(Paths& p, const std::uint32_t*
   const FrameLanes shading = FrameLanes::from_normal(ns);
   const lanes::Vec3 wo = shading.to_local(-direction);
 
-  // Lane by lane: the base colour, the bounce's numbers and the light sample.
+  // Lane by lane: the base colour, the bounce's numbers and the light sampler's choice of
+  // emitter. An untextured triangle sampled by area is sampled below, in lanes; any other
+  // emitter by the sampler (LightSampler::select, area_sampled_triangle, sample_selected).
   std::array<Spectrum<Mode>, kLanes> reflectance;  // the bare Lambertian lobe's R (PlainDiffuseBsdf)
   std::array<BounceSamples, kLanes> numbers;
-  std::array<std::optional<LightSample>, kLanes> light;
+  std::array<const TriangleLight*, kLanes> light_triangle{};  // lanes sampled here
+  std::array<LightSampler::Selection, kLanes> selection{};
+  std::array<std::uint32_t, kLanes> light_emitter{};
+  std::array<std::optional<LightSample>, kLanes> light;  // lanes the sampler sampled
+  bool sampler_sampled = false;
   for (int k = 0; k < kLanes; ++k) {
     const std::uint32_t s = slots[k];
     reflectance[k] = colors_.base_color(material[k], p.wavelengths[s]);
@@ -129,20 +136,70 @@ void WavefrontIntegrator<Mode>::shade_plain_lanes(Paths& p, const std::uint32_t*
     if (p.depth[s] + 1 >= settings_.russian_roulette_depth) needs |= kNeedRoulette;
     numbers[k] = bounce_blocks_ahead_ ? only_needed(p.bounce_block[s], needs)
                                       : bounce_samples(settings_.sampler, pixel_sample(p, s), p.depth[s], needs);
-    if (use_nee_)
-      light[k] = lights_.sample(lane(position, k), numbers[k].light_select, numbers[k].light, lane(shading.n, k));
+    if (!use_nee_) continue;
+    const std::optional<LightSampler::Selection> chosen = lights_.select(numbers[k].light_select, numbers[k].light);
+    if (!chosen) continue;
+    selection[k] = *chosen;
+    light_triangle[k] = lights_.area_sampled_triangle(chosen->emitter_index, light_emitter[k]);
+    if (light_triangle[k]) continue;
+    light[k] = lights_.sample_selected(*chosen, lane(position, k), lane(shading.n, k));
+    sampler_sampled = true;
   }
 
   if (use_nee_) {
+    // sample_triangle_light_by_area (scene/triangle_light_sampling.h), the pdf times the
+    // selection's pmf as LightSampler::sample_emitter.
+    static const TriangleLight kNoTriangle;  // area 0: draws nothing
+    static const LightSample kNoLight;        // and LightSample's defaults
+    const auto triangle = [&](int k) -> const TriangleLight& {
+      return light_triangle[k] ? *light_triangle[k] : kNoTriangle;
+    };
+    const lanes::Vec3 t0{gather([&](int k) { return triangle(k).p0.x; }), gather([&](int k) { return triangle(k).p0.y; }),
+                         gather([&](int k) { return triangle(k).p0.z; })};
+    const lanes::Vec3 t1{gather([&](int k) { return triangle(k).e1.x; }), gather([&](int k) { return triangle(k).e1.y; }),
+                         gather([&](int k) { return triangle(k).e1.z; })};
+    const lanes::Vec3 t2{gather([&](int k) { return triangle(k).e2.x; }), gather([&](int k) { return triangle(k).e2.y; }),
+                         gather([&](int k) { return triangle(k).e2.z; })};
+    lanes::Vec3 light_normal{gather([&](int k) { return triangle(k).normal.x; }),
+                             gather([&](int k) { return triangle(k).normal.y; }),
+                             gather([&](int k) { return triangle(k).normal.z; })};
+    const Float area = gather([&](int k) { return triangle(k).area; });
+    const Mask two_sided = gather_mask([&](int k) { return triangle(k).two_sided; });
+    const Float pmf = gather([&](int k) { return selection[k].pmf; });
+    const Float point_x = gather([&](int k) { return selection[k].u_point.x; });
+    const Float point_y = gather([&](int k) { return selection[k].u_point.y; });
+    const Float half = 0.5f * lanes::min(point_x, point_y);  // sample_uniform_triangle (warps.h)
+    lanes::Vec3 light_position = t0 + t1 * (point_x - half) + t2 * (point_y - half);
+    const lanes::Vec3 to_light = light_position - position;
+    const Float d2 = dot(to_light, to_light);
+    Float distance = lanes::sqrt(d2);
+    lanes::Vec3 wi = to_light * (1.0f / distance);
+    const Float facing = -dot(light_normal, wi);
+    const Float cos_light = lanes::select(two_sided, lanes::abs(facing), facing);
+    Float light_pdf = d2 / (cos_light * area) * pmf;
+    Mask drawn = (area > 0.0f) & (d2 > 0.0f) & ~(cos_light <= 0.0f);
+    Mask delta = lanes::all_lanes(false);
+    if (sampler_sampled) {
+      // The lanes the sampler sampled, from its LightSamples.
+      const auto sample = [&](int k) -> const LightSample& { return light[k] ? *light[k] : kNoLight; };
+      const Mask by_sampler = gather_mask([&](int k) { return light[k].has_value(); });
+      const auto take = [&](Float& mine, Float theirs) { mine = lanes::select(by_sampler, theirs, mine); };
+      take(wi.x, gather([&](int k) { return sample(k).wi.x; }));
+      take(wi.y, gather([&](int k) { return sample(k).wi.y; }));
+      take(wi.z, gather([&](int k) { return sample(k).wi.z; }));
+      take(light_pdf, gather([&](int k) { return sample(k).pdf; }));
+      take(distance, gather([&](int k) { return sample(k).distance; }));
+      take(light_position.x, gather([&](int k) { return sample(k).position.x; }));
+      take(light_position.y, gather([&](int k) { return sample(k).position.y; }));
+      take(light_position.z, gather([&](int k) { return sample(k).position.z; }));
+      take(light_normal.x, gather([&](int k) { return sample(k).normal.x; }));
+      take(light_normal.y, gather([&](int k) { return sample(k).normal.y; }));
+      take(light_normal.z, gather([&](int k) { return sample(k).normal.z; }));
+      delta = gather_mask([&](int k) { return sample(k).is_delta; });
+      drawn |= by_sampler;  // their triangle is kNoTriangle, drawn nowhere above
+    }
+
     // The light sample's direction on both sides, its MIS weight, and the shadow ray.
-    static const LightSample kNoLight;
-    const auto sample = [&](int k) -> const LightSample& { return light[k] ? *light[k] : kNoLight; };
-    const Mask drawn = gather_mask([&](int k) { return light[k].has_value(); });
-    const Mask delta = gather_mask([&](int k) { return sample(k).is_delta; });
-    const lanes::Vec3 wi{gather([&](int k) { return sample(k).wi.x; }), gather([&](int k) { return sample(k).wi.y; }),
-                         gather([&](int k) { return sample(k).wi.z; })};
-    const Float light_pdf = gather([&](int k) { return sample(k).pdf; });
-    const Float distance = gather([&](int k) { return sample(k).distance; });
     const lanes::Vec3 wi_local = shading.to_local(wi);
     // The geometric and the shading side must agree, or light leaks through edges.
     const Mask lit = drawn & ((dot(wi, ng) > 0.0f) == (wi_local.z > 0.0f)) & (light_pdf > 0.0f);
@@ -152,12 +209,6 @@ void WavefrontIntegrator<Mode>::shade_plain_lanes(Paths& p, const std::uint32_t*
     const Float heuristic = lanes::select(a2 + b2 > 0.0f, a2 / (a2 + b2), lanes::splat(0.0f));
     const Float w = lanes::select(~delta & lanes::all_lanes(weight_bsdf_hits_), heuristic, lanes::splat(1.0f));
     const lanes::Vec3 origin = offset_ray_origin(position, ng, wi);
-    const lanes::Vec3 light_position{gather([&](int k) { return sample(k).position.x; }),
-                                     gather([&](int k) { return sample(k).position.y; }),
-                                     gather([&](int k) { return sample(k).position.z; })};
-    const lanes::Vec3 light_normal{gather([&](int k) { return sample(k).normal.x; }),
-                                   gather([&](int k) { return sample(k).normal.y; }),
-                                   gather([&](int k) { return sample(k).normal.z; })};
     const lanes::Vec3 target =
         lanes::select(delta, light_position, offset_ray_origin(light_position, light_normal, -wi));
     const lanes::Vec3 segment = target - origin;
@@ -173,12 +224,13 @@ void WavefrontIntegrator<Mode>::shade_plain_lanes(Paths& p, const std::uint32_t*
       if (f.is_black()) continue;
       const std::uint32_t s = slots[k];
       const Wavelengths<Mode>& wl = p.wavelengths[s];
-      const LightSample& ls = *light[k];
       p.shadow_ray[s] = Ray{lane(origin, k), lane(shadow_direction, k), 0.0f, t_max[k]};
+      // A triangle sampled here has LightSample's defaults: no rgb, no uv, scale 1.
+      const LightSample& ls = light[k] ? *light[k] : kNoLight;
       const Spectrum<Mode> Le =
           ls.has_rgb ? colors_.environment_radiance(ls.rgb, wl)
                      : (ls.has_uv ? textured_emitted_radiance(ls.emitter, ls.uv, 0.0f, wl)
-                                  : untextured_emission(p, s, ls.emitter)) *
+                                  : untextured_emission(p, s, light[k] ? ls.emitter : light_emitter[k])) *
                            ls.scale;
       p.shadow_contribution[s] = p.throughput[s] * f * Le * weight[k];
       p.shadow_pending[s] = 1;

@@ -335,6 +335,26 @@ Vec3f LightSampler::map_direction(const Emitter& e, const Vec3f& world_direction
 
 std::optional<LightSample> LightSampler::sample(const Vec3f& reference, float u_select, Vec2f u_point,
                                                 const Vec3f& receiver_normal) const {
+  const std::optional<Selection> chosen = select(u_select, u_point);
+  if (!chosen) return std::nullopt;
+  return sample_selected(*chosen, reference, receiver_normal);
+}
+
+std::optional<LightSample> LightSampler::sample_selected(const Selection& chosen, const Vec3f& reference,
+                                                         const Vec3f& receiver_normal) const {
+  // One LightSample object from here to the caller: returned as a prvalue here and as
+  // the single named result in sample_emitter (copy elision), not copied at each level.
+  return sample_emitter(chosen.emitter_index, reference, chosen.u_point, receiver_normal, chosen.pmf);
+}
+
+const TriangleLight* LightSampler::area_sampled_triangle(std::size_t emitter_index, std::uint32_t& emitter) const {
+  const Emitter& e = emitters_[emitter_index];
+  if (e.kind != Kind::triangle || e.textured || options_.triangle != TriangleLightSampling::area) return nullptr;
+  emitter = e.emitter;
+  return &e.triangle;
+}
+
+std::optional<LightSampler::Selection> LightSampler::select(float u_select, Vec2f u_point) const {
   if (empty()) return std::nullopt;
   const float u_choice = options_.reuse_selection_sample ? u_point.x : u_select;
   // Which light is a coin flip per sample among lights of like power: the search without
@@ -351,9 +371,7 @@ std::optional<LightSample> LightSampler::sample(const Vec3f& reference, float u_
                     ? std::clamp((u_point.x - cdf_before) / pmf, 0.0f, 0x1.fffffep-1f)
                     : u_select;
   }
-  // One LightSample object from here to the caller: returned as a prvalue here and as
-  // the single named result in sample_emitter (copy elision), not copied at each level.
-  return sample_emitter(index, reference, u_point, receiver_normal, pmf);
+  return Selection{index, pmf, u_point};
 }
 
 std::optional<LightSample> LightSampler::sample_emitter(std::size_t index, const Vec3f& reference, Vec2f u,

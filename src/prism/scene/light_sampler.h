@@ -77,6 +77,25 @@ class LightSampler {
   // the receiver's cosine; pdf_triangle must be given the same one.
   std::optional<LightSample> sample(const Vec3f& reference, float u_select, Vec2f u_point,
                                     const Vec3f& receiver_normal = Vec3f(0.0f)) const;
+  // sample() in two halves, for a caller that samples some emitters itself (the
+  // integrator's lanes, render/wavefront_plain_lanes.cpp): select() picks the emitter as
+  // sample() does, with its selection probability and u_point as that emitter's own sample
+  // reads it, or nothing where sample() gives nothing before asking an emitter;
+  // sample_selected() is the rest of sample(), the same bits.
+  struct Selection {
+    std::size_t emitter_index;  // the sampler's own numbering
+    float pmf;
+    Vec2f u_point;
+  };
+  std::optional<Selection> select(float u_select, Vec2f u_point) const;
+  std::optional<LightSample> sample_selected(const Selection& chosen, const Vec3f& reference,
+                                             const Vec3f& receiver_normal) const;
+  // The selected emitter where sample_selected() would sample it with
+  // sample_triangle_light_by_area (an untextured triangle, with the area strategy): its
+  // triangle, and its emitter id in `emitter`, for LightSample::emitter; null otherwise.
+  // Such a sample has LightSample's defaults but for position, normal (the triangle's),
+  // wi, distance, pdf (pdf_sr × the selection's pmf) and emitter.
+  const TriangleLight* area_sampled_triangle(std::size_t emitter_index, std::uint32_t& emitter) const;
   // Whether sample() can read u_select at all: false when the selection number is reused
   // (options) and every emitter is chosen with probability ≥ kMinReusedSelectionPmf; the
   // caller may then skip drawing it.

@@ -103,7 +103,8 @@ Scene cornell_box_with_smooth_sphere_and_delta_lights() {
   return scene;
 }
 
-// Hits shaded in lanes (WavefrontIntegrator::shade_plain_lanes) against the same hits
+// Hits shaded in lanes (WavefrontIntegrator::shade_plain_lanes: eight AVX2 lanes where the
+// processor has them, four SSE2 lanes with PRISM_SHADE_SSE2=1) against the same hits
 // shaded alone (PRISM_SHADE_SCALAR=1): the same bits, in every transport mode and
 // estimator, on flat and smooth meshes, with area, point and directional lights.
 TEST(PlainDiffuseLanes, SameImageAsShadingAlone) {
@@ -117,7 +118,10 @@ TEST(PlainDiffuseLanes, SameImageAsShadingAlone) {
       for (const LightSamplerOptions& light : {LightSamplerOptions{}, solid_angle}) {
         RenderSettings s = settings_for(c);
         s.path.light = light;
-        const RenderResult lanes = render(scene, s);
+        const RenderResult lanes = render(scene, s);  // eight lanes where the processor has AVX2
+        ASSERT_EQ(setenv("PRISM_SHADE_SSE2", "1", 1), 0);
+        const RenderResult four = render(scene, s);
+        unsetenv("PRISM_SHADE_SSE2");
         ASSERT_EQ(setenv("PRISM_SHADE_SCALAR", "1", 1), 0);
         const RenderResult alone = render(scene, s);
         unsetenv("PRISM_SHADE_SCALAR");
@@ -125,8 +129,10 @@ TEST(PlainDiffuseLanes, SameImageAsShadingAlone) {
                                   (light == solid_angle ? ", solid-angle triangles" : "");
         // Most hits are on the walls, blocks and sphere, all plain diffuse.
         EXPECT_GT(lanes.lane_shaded_hits, lanes.rays / 2) << label;
+        EXPECT_GT(four.lane_shaded_hits, four.rays / 2) << label;
         EXPECT_EQ(alone.lane_shaded_hits, 0u) << label;
         EXPECT_TRUE(films_identical(lanes.film, alone.film)) << label << ": lanes and shading alone differ";
+        EXPECT_TRUE(films_identical(four.film, alone.film)) << label << ": four lanes and shading alone differ";
       }
     }
   }

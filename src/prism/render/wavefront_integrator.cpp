@@ -56,8 +56,17 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
     textured_emission_.push_back(
         textured_emission_matrix(m.emission, picker_color_space(m.emission.color_space), texel_space));
   }
-  const char* scalar = std::getenv("PRISM_SHADE_SCALAR");
-  shade_in_lanes_ = !(scalar && *scalar && *scalar != '0');
+  const auto env_set = [](const char* name) {
+    const char* value = std::getenv(name);
+    return value && *value && *value != '0';
+  };
+  shade_in_lanes_ = !env_set("PRISM_SHADE_SCALAR");
+  lane_width_ = shade_in_lanes_ ? lanes::sse2::kWidth : 0;
+#if PRISM_FLOAT_LANES_AVX2
+  if (shade_in_lanes_ && lanes::avx2_supported() && !env_set("PRISM_SHADE_SSE2")) lane_width_ = lanes::avx2::kWidth;
+  static_assert(lanes::avx2::kWidth <= kMaxLaneWidth);
+#endif
+  static_assert(lanes::sse2::kWidth <= kMaxLaneWidth);
   for (const TriangleMesh& mesh : scene.meshes) {
     const bool plain = mesh.material < scene.materials.size() && plain_diffuse_[mesh.material] &&
                        !scene.materials[mesh.material].is_emissive();
@@ -725,9 +734,9 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
         for (std::size_t i = b; i < e; ++i)
           if (const std::uint32_t s = live[i]; p.hit_found[s])
             p.bounce_block[s] = padded_sobol_bounce_block_lanes(pixel_sample(p, s), p.depth[s], kNeedAllBounceSamples);
-      // Hits that shade_in_lanes wait for lanes::kWidth of their kind and are shaded
+      // Hits that shade_in_lanes wait for lane_width_ of their kind and are shaded
       // together; the last few, alone. Each slot's bits are the same either way.
-      std::array<std::uint32_t, lanes::kWidth> waiting;
+      std::array<std::uint32_t, kMaxLaneWidth> waiting;
       std::size_t waiting_count = 0, lane_shaded_count = 0;
       const auto shade_slot = [&](std::uint32_t s) {
         if (!shades_in_lanes(p, s)) {
@@ -735,10 +744,15 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
           return;
         }
         waiting[waiting_count++] = s;
-        if (waiting_count == waiting.size()) {
-          shade_plain_lanes(p, waiting.data());
+        if (waiting_count == static_cast<std::size_t>(lane_width_)) {
+#if PRISM_FLOAT_LANES_AVX2
+          if (lane_width_ == lanes::avx2::kWidth)
+            shade_plain_lanes_avx2(p, waiting.data());
+          else
+#endif
+            shade_plain_lanes(p, waiting.data());
+          lane_shaded_count += waiting_count;
           waiting_count = 0;
-          lane_shaded_count += waiting.size();
         }
       };
       if (!prefetch_geometry_) {

@@ -115,11 +115,15 @@ class WavefrontIntegrator {
   // of lane_mesh_, on the path's first segment outside a medium, with a bounce left, and
   // no AOVs to record.
   bool shades_in_lanes(const Paths& paths, std::uint32_t slot) const;
-  // shade() of lanes::kWidth such hits at once (wavefront_plain_lanes.cpp): the same steps
+  // shade() of four such hits at once (wavefront_plain_lanes.cpp): the same steps
   // in the same order, the geometry and direction arithmetic of all the lanes in one
   // instruction each (core/float_lanes.h), the spectra and the light sampler lane by lane.
   // Each slot gets the bits shade() gives it.
   void shade_plain_lanes(Paths& paths, const std::uint32_t* slots) const;
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+  // The same for eight hits, in AVX2 (lanes::avx2): only where the processor has AVX2.
+  [[gnu::target("avx2")]] void shade_plain_lanes_avx2(Paths& paths, const std::uint32_t* slots) const;
+#endif
   Spectrum<Mode> base_color(const Material& material, const SurfaceInteraction& si, float cone_width,
                             const Ray& ray, const Wavelengths<Mode>& wl) const;
   // Base colour × texel of a textured material, in the material's base_color_space;
@@ -220,10 +224,13 @@ class WavefrontIntegrator {
   bool bounce_blocks_ahead_ = false;
   bool use_nee_ = false;           // light samples at non-specular vertices (not bsdf_only, and lights exist)
   bool weight_bsdf_hits_ = false;  // MIS: light samples and emitters found by BSDF sampling weighted against each other
-  // Hits on lane_mesh_ meshes are shaded lanes::kWidth at a time (shade_plain_lanes); off
-  // with PRISM_SHADE_SCALAR=1, which shades every hit alone (for comparisons: the image is
-  // the same).
+  // Hits on lane_mesh_ meshes are shaded lane_width_ at a time: eight with AVX2
+  // (shade_plain_lanes_avx2), else four (shade_plain_lanes). For comparisons (the image is
+  // the same): PRISM_SHADE_SSE2=1 takes four lanes where AVX2 would run, and
+  // PRISM_SHADE_SCALAR=1 shades every hit alone (shade_in_lanes_ off, lane_width_ 0).
   bool shade_in_lanes_ = false;
+  int lane_width_ = 0;
+  static constexpr int kMaxLaneWidth = 8;
 };
 
 }  // namespace prism

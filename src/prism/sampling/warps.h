@@ -17,22 +17,18 @@ namespace prism {
 // rounding of a few operations (tests/sampling/warps_test.cpp checks ≤ 2.5e-7 absolute
 // against double std::cos/std::sin). The concentric map needs no other angles, and this
 // replaces a libm sincosf call per diffuse bounce.
-// For float, or for floats in lanes (core/float_lanes.h), which then get the scalar bits.
-template <class T>
-struct CosSinOf {
-  T cos, sin;
+struct CosSin {
+  float cos, sin;
 };
-using CosSin = CosSinOf<float>;
-template <class T>
-inline CosSinOf<T> cos_sin_quarter_pi(T t) {
-  const T x = std::numbers::pi_v<float> / 4.0f * t;
-  const T x2 = x * x;
+inline CosSin cos_sin_quarter_pi(float t) {
+  const float x = std::numbers::pi_v<float> / 4.0f * t;
+  const float x2 = x * x;
   // 1/k! for k = 2 … 10
   constexpr float c2 = 1.0f / 2.0f, c4 = 1.0f / 24.0f, c6 = 1.0f / 720.0f, c8 = 1.0f / 40320.0f,
                   c10 = 1.0f / 3628800.0f;
   constexpr float s3 = 1.0f / 6.0f, s5 = 1.0f / 120.0f, s7 = 1.0f / 5040.0f, s9 = 1.0f / 362880.0f;
-  const T c = 1.0f - x2 * (c2 - x2 * (c4 - x2 * (c6 - x2 * (c8 - x2 * c10))));
-  const T s = x * (1.0f - x2 * (s3 - x2 * (s5 - x2 * (s7 - x2 * s9))));
+  const float c = 1.0f - x2 * (c2 - x2 * (c4 - x2 * (c6 - x2 * (c8 - x2 * c10))));
+  const float s = x * (1.0f - x2 * (s3 - x2 * (s5 - x2 * (s7 - x2 * s9))));
   return {c, s};
 }
 

@@ -15,11 +15,13 @@
 // so both techniques estimate the same function and MIS stays unbiased. Radiance
 // values come from the transport mode (render/color_context.h) by emitter id; this class
 // only handles geometry and densities.
+#include <algorithm>
 #include <cstdint>
 #include <optional>
 #include <vector>
 
 #include "prism/core/bounds.h"
+#include "prism/core/branch_free.h"
 #include "prism/core/vec.h"
 #include "prism/sampling/piecewise_constant.h"
 #include "prism/scene/scene.h"
@@ -174,5 +176,34 @@ class LightSampler {
   std::vector<std::uint32_t> escapable_emitters_;
   bool uses_selection_number_ = true;
 };
+
+// Inline: the integrator's lanes call these once per light sample
+// (render/wavefront_plain_lanes.cpp).
+inline std::optional<LightSampler::Selection> LightSampler::select(float u_select, Vec2f u_point) const {
+  if (empty()) return std::nullopt;
+  const float u_choice = options_.reuse_selection_sample ? u_point.x : u_select;
+  // Which light is a coin flip per sample among lights of like power: the search without
+  // branches (core/branch_free.h).
+  const std::size_t index =
+      std::min(upper_bound_index(selection_cdf_.data(), selection_cdf_.size(), u_choice), selection_cdf_.size() - 1);
+  const float pmf = selection_pmf_[index];
+  if (pmf == 0.0f) return std::nullopt;  // float ties at the top of the CDF
+  if (options_.reuse_selection_sample) {
+    // u_point.x ∈ [cdf_before, cdf_before + pmf): uniform there, so its position in that
+    // interval is a uniform number, stratified as u_point.x was.
+    const float cdf_before = keep_if(index != 0, selection_cdf_[index - (index != 0)]);
+    u_point.x = pmf >= kMinReusedSelectionPmf
+                    ? std::clamp((u_point.x - cdf_before) / pmf, 0.0f, 0x1.fffffep-1f)
+                    : u_select;
+  }
+  return Selection{index, pmf, u_point};
+}
+
+inline const TriangleLight* LightSampler::area_sampled_triangle(std::size_t emitter_index, std::uint32_t& emitter) const {
+  const Emitter& e = emitters_[emitter_index];
+  if (e.kind != Kind::triangle || e.textured || options_.triangle != TriangleLightSampling::area) return nullptr;
+  emitter = e.emitter;
+  return &e.triangle;
+}
 
 }  // namespace prism

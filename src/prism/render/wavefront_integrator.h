@@ -4,11 +4,13 @@
 // intersect, shade (emission, next-event estimation with MIS, BSDF sampling, Russian
 // roulette), shadow rays, then completion. A finished path is regenerated at once with its
 // pixel's next sample, so the queue stays full and step times stay steady; queues are
-// compacted every step, so only live paths are traced. The image is cut into tiles of
-// kWavefrontTilePixels pixels, one queue each, and each thread runs whole tiles: a tile's path
-// state stays in cache across the stages (1.07× at 256², 1.13× at 512², one thread;
-// BENCHMARKS.md "Session 6"). Only a pass that reports every few bounces keeps one queue
-// for the whole image, stepped in lockstep with each stage split across the threads.
+// compacted every step, so only live paths are traced. Hits on plain diffuse materials are
+// shaded several at a time, in SIMD lanes (shade_plain_lanes), to the same bits. The image
+// is cut into tiles of kWavefrontTilePixels pixels, one queue each, and each thread runs
+// whole tiles: a tile's path state stays in cache across the stages (1.07× at 256²,
+// 1.13× at 512², one thread; BENCHMARKS.md "Session 6"). Only a pass that reports every
+// few bounces keeps one queue for the whole image, stepped in lockstep with each stage
+// split across the threads.
 //
 // Determinism: every pixel owns one path slot and renders its samples in order; a
 // sample's random numbers depend only on (seed, pixel, sample index, dimension)

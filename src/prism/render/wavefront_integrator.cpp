@@ -3,12 +3,12 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
 
 #include "prism/bsdf/plain_diffuse_bsdf.h"
+#include "prism/core/env_flag.h"
 #include "prism/core/float_lanes.h"
 #include "prism/core/frame.h"
 #include "prism/core/parallel.h"
@@ -56,21 +56,16 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
     textured_emission_.push_back(
         textured_emission_matrix(m.emission, picker_color_space(m.emission.color_space), texel_space));
   }
-  const auto env_set = [](const char* name) {
-    const char* value = std::getenv(name);
-    return value && *value && *value != '0';
-  };
-  shade_in_lanes_ = !env_set("PRISM_SHADE_SCALAR");
-  lane_width_ = shade_in_lanes_ ? lanes::sse2::kWidth : 0;
+  lane_width_ = env_flag("PRISM_SHADE_SCALAR") ? 0 : lanes::sse2::kWidth;
 #if PRISM_FLOAT_LANES_AVX2
-  if (shade_in_lanes_ && lanes::avx2_supported() && !env_set("PRISM_SHADE_SSE2")) lane_width_ = lanes::avx2::kWidth;
+  if (lane_width_ > 0 && lanes::avx2_supported() && !env_flag("PRISM_SHADE_SSE2")) lane_width_ = lanes::avx2::kWidth;
   static_assert(lanes::avx2::kWidth <= kMaxLaneWidth);
 #endif
   static_assert(lanes::sse2::kWidth <= kMaxLaneWidth);
   for (const TriangleMesh& mesh : scene.meshes) {
     const bool plain = mesh.material < scene.materials.size() && plain_diffuse_[mesh.material] &&
                        !scene.materials[mesh.material].is_emissive();
-    lane_mesh_.push_back(shade_in_lanes_ && plain && mesh.tangents.empty() ? 1 : 0);
+    lane_mesh_.push_back(lane_width_ > 0 && plain && mesh.tangents.empty() ? 1 : 0);
   }
 }
 
@@ -487,9 +482,7 @@ void WavefrontIntegrator<Mode>::shade_surface(Paths& p, std::uint32_t slot, Surf
   if (bsdf.uses_lobe_sample()) needs |= kNeedLobe;
   if (bsdf.uses_direction_sample()) needs |= kNeedDirection;
   if (p.depth[slot] + 1 >= settings_.russian_roulette_depth) needs |= kNeedRoulette;
-  const BounceSamples u = bounce_blocks_ahead_
-                              ? only_needed(p.bounce_block[slot], needs)
-                              : bounce_samples(settings_.sampler, pixel_sample(p, slot), p.depth[slot], needs);
+  const BounceSamples u = bounce_numbers(p, slot, needs);
 
   if (light_sampled) {
     if (const auto ls = lights_.sample(si.position, u.light_select, u.light, si.shading.n)) {

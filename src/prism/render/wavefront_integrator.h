@@ -170,6 +170,9 @@ class WavefrontIntegrator {
                                                     const Frame& unmapped, float cone_width, const Ray& ray) const;
   // Microfacet normal mapping's two numbers for the slot's current bounce (pixel_sampler.h).
   Vec2f facet_numbers(const Paths& paths, std::uint32_t slot) const;
+  // The numbers `needs` asks for of the slot's current bounce block: from the block drawn
+  // ahead of shading (Paths::bounce_block) where bounce_blocks_ahead_, else drawn now.
+  BounceSamples bounce_numbers(const Paths& paths, std::uint32_t slot, unsigned needs) const;
   // The sampler's key of the slot's current sample.
   PixelSample pixel_sample(const Paths& paths, std::uint32_t slot) const;
   // Replaces si.shading by the material's bump-mapped frame, where it has a bump map.
@@ -205,7 +208,7 @@ class WavefrontIntegrator {
   std::vector<std::uint8_t> plain_diffuse_;  // per material: is_plain_diffuse
   // Per mesh: a plain diffuse material that does not emit, and no tangents (whose frames
   // the lanes do not build), so shade_plain_lanes can shade its hits. All zero where
-  // shade_in_lanes_ is off.
+  // the lanes are off (lane_width_ 0).
   std::vector<std::uint8_t> lane_mesh_;
   const std::vector<MipPyramid>& textures_;  // one per Scene::textures entry
   std::vector<Mat3> textured_emission_;  // per material: texel → radiance in the emission colour's space (scene/emission.h)
@@ -229,8 +232,7 @@ class WavefrontIntegrator {
   // Hits on lane_mesh_ meshes are shaded lane_width_ at a time: eight with AVX2
   // (shade_plain_lanes_avx2), else four (shade_plain_lanes). For comparisons (the image is
   // the same): PRISM_SHADE_SSE2=1 takes four lanes where AVX2 would run, and
-  // PRISM_SHADE_SCALAR=1 shades every hit alone (shade_in_lanes_ off, lane_width_ 0).
-  bool shade_in_lanes_ = false;
+  // PRISM_SHADE_SCALAR=1 shades every hit alone (lane_width_ 0).
   int lane_width_ = 0;
   static constexpr int kMaxLaneWidth = 8;
 };

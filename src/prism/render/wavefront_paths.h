@@ -54,4 +54,12 @@ struct WavefrontIntegrator<Mode>::Paths {
   std::vector<Spectrum<Mode>> cached_emission;
 };
 
+// Here, not in wavefront_integrator.cpp: both shading paths call it for every hit, the
+// lanes from their own translation unit.
+template <class Mode>
+BounceSamples WavefrontIntegrator<Mode>::bounce_numbers(const Paths& p, std::uint32_t slot, unsigned needs) const {
+  return bounce_blocks_ahead_ ? only_needed(p.bounce_block[slot], needs)
+                              : bounce_samples(settings_.sampler, pixel_sample(p, slot), p.depth[slot], needs);
+}
+
 }  // namespace prism

@@ -1,7 +1,6 @@
 #include "prism/sampling/padded_sobol_lanes.h"
 
-#include <cstdlib>
-
+#include "prism/core/env_flag.h"
 #include "prism/sampling/padded_sobol.h"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
@@ -87,11 +86,6 @@ inline __m256i reverse_bits_in_bytes(__m256i x) {
 #pragma GCC pop_options
 #endif
 
-bool env_set(const char* name) {
-  const char* value = std::getenv(name);
-  return value && *value && *value != '0';
-}
-
 bool supported(SobolLanes lanes) {
   __builtin_cpu_init();  // this may run before any other static initialiser
   switch (lanes) {
@@ -107,8 +101,8 @@ bool supported(SobolLanes lanes) {
 SobolLanes detect_lanes() {
   // PRISM_SAMPLER_SCALAR=1 takes the scalar path, PRISM_SAMPLER_AVX2=1 the AVX2 lanes where
   // the processor has more (to compare them on one machine).
-  if (env_set("PRISM_SAMPLER_SCALAR")) return SobolLanes::none;
-  if (!env_set("PRISM_SAMPLER_AVX2") && supported(SobolLanes::avx512)) return SobolLanes::avx512;
+  if (env_flag("PRISM_SAMPLER_SCALAR")) return SobolLanes::none;
+  if (!env_flag("PRISM_SAMPLER_AVX2") && supported(SobolLanes::avx512)) return SobolLanes::avx512;
   return supported(SobolLanes::avx2) ? SobolLanes::avx2 : SobolLanes::none;
 }
 

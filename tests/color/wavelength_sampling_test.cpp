@@ -210,6 +210,31 @@ TEST(WavelengthSampling, CoshTupleEqualsTheSlotBySlotDefinition) {
   }
 }
 
+// AVX2 takes eight slots at a time (two tuples of four, or one of eight) with the same
+// operations as SSE2's four: the same bits, and two tuples in one call are two calls'.
+TEST(WavelengthSampling, CoshTuplesAreTheSameInEveryWidthAndBatch) {
+  Pcg32 rng(4, 11);
+  for (int count = 1; count <= 8; ++count) {
+    for (int t = 0; t < 500; ++t) {
+      const double u[2] = {t == 0 ? 0.0 : rng.next_double(), t == 0 ? std::nextafter(1.0, 0.0) : rng.next_double()};
+      std::array<float, 8> nm_sse2{}, pdf_sse2{}, nm_widest{}, pdf_widest{};
+      sample_cosh_wavelengths(u[0], count, nm_sse2.data(), pdf_sse2.data(), CoshVectorWidth::sse2);
+      sample_cosh_wavelengths(u[0], count, nm_widest.data(), pdf_widest.data());
+      EXPECT_EQ(nm_widest, nm_sse2) << count << " " << u[0];
+      EXPECT_EQ(pdf_widest, pdf_sse2) << count << " " << u[0];
+      std::array<std::array<float, 8>, 2> nm_pair{}, pdf_pair{}, nm_alone{}, pdf_alone{};
+      float* const nm[2] = {nm_pair[0].data(), nm_pair[1].data()};
+      float* const pdf[2] = {pdf_pair[0].data(), pdf_pair[1].data()};
+      sample_cosh_wavelengths(u, count, nm, pdf);
+      for (int k = 0; k < 2; ++k) {
+        sample_cosh_wavelengths(u[k], count, nm_alone[k].data(), pdf_alone[k].data(), CoshVectorWidth::sse2);
+        EXPECT_EQ(nm_pair[k], nm_alone[k]) << count << " " << u[k];
+        EXPECT_EQ(pdf_pair[k], pdf_alone[k]) << count << " " << u[k];
+      }
+    }
+  }
+}
+
 TEST(WavelengthSampling, HeroPartnersAreEvenlyRotated) {
   const SampledWavelengths<4> w = sample_wavelengths<4>(WavelengthStrategy::hero, 0.9);
   EXPECT_NEAR(w.wavelength_nm[0], 740.0f, 1e-3);

@@ -1,5 +1,5 @@
 // core/log4.h: four logarithms at once, against double-precision std::log, and its SSE2
-// path against the lane-by-lane code it must match bit for bit.
+// path and its eight AVX2 lanes against the lane-by-lane code they must match bit for bit.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -53,6 +53,27 @@ TEST(Log4, VectorPathMatchesTheLanewiseCodeBitForBit) {
     for (std::size_t k = 0; k < 4; ++k) ASSERT_EQ(a[k], b[k]) << in[k];
   }
 }
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+[[gnu::target("avx2")]] std::array<float, 8> log8(const std::array<float, 8>& x) {
+  std::array<float, 8> out;
+  _mm256_storeu_ps(out.data(), log8_ps(_mm256_loadu_ps(x.data())));
+  return out;
+}
+
+TEST(Log4, EightLanesMatchTheLanewiseCodeBitForBit) {
+  if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "this processor has no AVX2";
+  const std::vector<float> x = inputs();
+  for (std::size_t i = 0; i + 8 <= x.size(); i += 8) {
+    const std::array<float, 8> out = log8({x[i], x[i + 1], x[i + 2], x[i + 3], x[i + 4], x[i + 5], x[i + 6], x[i + 7]});
+    for (std::size_t half = 0; half < 2; ++half) {
+      const std::array<float, 4> in{x[i + 4 * half], x[i + 4 * half + 1], x[i + 4 * half + 2], x[i + 4 * half + 3]};
+      const std::array<float, 4> expected = log4_lanewise(in);
+      for (std::size_t k = 0; k < 4; ++k) ASSERT_EQ(out[4 * half + k], expected[k]) << in[k];
+    }
+  }
+}
+#endif
 
 }  // namespace
 }  // namespace prism

@@ -9,6 +9,7 @@
 
 #include "prism/core/sample_stream.h"
 #include "prism/sampling/owen_scrambling.h"
+#include "prism/sampling/padded_sobol.h"
 #include "prism/sampling/padded_sobol_lanes.h"
 #include "prism/sampling/sobol.h"
 #include "prism/sampling/zsobol_index.h"
@@ -171,6 +172,42 @@ TEST(PixelSampler, SobolLanesDrawTheScalarBits) {
     if (!padded_sobol_lanes_supported(lanes)) continue;
     expect_lanes_draw_the_scalar_bits(lanes);
     any = true;
+  }
+  if (!any) GTEST_SKIP() << "this processor runs no lanes";
+}
+
+// padded_sobol_bounce_blocks_lanes against the scalar requests: batches of every length
+// up to nine (AVX-512 pairs the blocks, so an odd one is left over), each block with its
+// own seed, pixel, sample index and depth, so that a pair's halves never share a key.
+TEST(PixelSampler, SobolBounceBlockBatchesDrawTheScalarBits) {
+  bool any = false;
+  std::uint64_t state = 7;
+  const auto next = [&] { return static_cast<std::uint32_t>((state = mix64(state)) >> 32); };
+  for (const SobolLanes lanes : {SobolLanes::avx2, SobolLanes::avx512}) {
+    if (!padded_sobol_lanes_supported(lanes)) continue;
+    SCOPED_TRACE(lanes == SobolLanes::avx512 ? "AVX-512 lanes" : "AVX2 lanes");
+    any = true;
+    for (int trial = 0; trial < 60; ++trial) {
+      const std::size_t count = static_cast<std::size_t>(trial % 10);
+      std::vector<PixelSample> samples(count);
+      std::vector<BounceSamples> blocks(count);
+      std::vector<BounceBlockRequest> requests(count);
+      for (std::size_t k = 0; k < count; ++k) {
+        samples[k] = {next() | (std::uint64_t{next()} << 32), next() % 65536, 256, k % 2 == 0 ? next() % 64 : next()};
+        requests[k] = {padded_sobol_pixel_key(samples[k].seed, samples[k].pixel_index), samples[k].sample_index,
+                       static_cast<std::int32_t>(next() % 12), &blocks[k]};
+      }
+      padded_sobol_bounce_blocks_lanes(lanes, requests);
+      for (std::size_t k = 0; k < count; ++k) {
+        const PixelSample& s = samples[k];
+        const std::uint32_t base = kFirstBounceDimension + kDimensionsPerBounce * static_cast<std::uint32_t>(requests[k].depth);
+        EXPECT_EQ(blocks[k].light_select, sample_1d(SamplerKind::sobol, s, base));
+        expect_same(blocks[k].light, sample_2d(SamplerKind::sobol, s, base + 1));
+        EXPECT_EQ(blocks[k].lobe, sample_1d(SamplerKind::sobol, s, base + 3));
+        expect_same(blocks[k].direction, sample_2d(SamplerKind::sobol, s, base + 4));
+        EXPECT_EQ(blocks[k].roulette, sample_1d(SamplerKind::sobol, s, base + 6));
+      }
+    }
   }
   if (!any) GTEST_SKIP() << "this processor runs no lanes";
 }

@@ -15,6 +15,7 @@
 
 #include "prism/core/branch_free.h"
 #include "prism/core/error.h"
+#include "prism/core/float_lanes.h"
 #include "prism/core/log4.h"
 #include "prism/sampling/piecewise_constant.h"
 
@@ -302,7 +303,79 @@ void cosh_tuple_slots(const PreparedLobe& lobe, double u, double slot_step, int 
 
 }  // namespace
 
-void sample_cosh_wavelengths(double u, int count, float* wavelength_nm, float* pdf) {
+namespace {
+
+// Four slots (fewer at a tuple's end) of a cosh tuple, for cosh_tuple_slots.
+struct CoshQuad {
+  double u;
+  int first, n;
+  float* wavelength_nm;
+  float* pdf;
+};
+
+#if PRISM_FLOAT_LANES_AVX2
+PRISM_TARGET_REGION_BEGIN("avx2")
+
+// cosh_tuple_slots of two quads at once: each quad's four slots in a register of four
+// doubles instead of two of two, the eight ratios' logarithms in one log8. The same
+// operations on the same operands in every slot, so the same bits.
+void cosh_quad_pair_avx2(const PreparedLobe& lobe, double slot_step, const CoshQuad& a, const CoshQuad& b) {
+  const __m256d one = _mm256_set1_pd(1.0);
+  const CoshQuad* quad[2] = {&a, &b};
+  __m256d ratio[2], density[2];
+  for (int h = 0; h < 2; ++h) {
+    const int i = quad[h]->first;
+    __m256d along = _mm256_add_pd(_mm256_set1_pd(quad[h]->u),
+                                  _mm256_mul_pd(_mm256_setr_pd(i, i + 1, i + 2, i + 3), _mm256_set1_pd(slot_step)));
+    along = _mm256_sub_pd(along, _mm256_and_pd(_mm256_cmp_pd(along, one, _CMP_GE_OS), one));
+    const __m256d t = _mm256_add_pd(_mm256_set1_pd(lobe.tanh_low), _mm256_mul_pd(along, _mm256_set1_pd(lobe.tanh_range)));
+    ratio[h] = _mm256_div_pd(_mm256_add_pd(one, t), _mm256_sub_pd(one, t));
+    density[h] = _mm256_mul_pd(_mm256_set1_pd(lobe.pdf_per_one_minus_t2), _mm256_sub_pd(one, _mm256_mul_pd(t, t)));
+  }
+  const __m256 ln = log8_ps(_mm256_set_m128(_mm256_cvtpd_ps(ratio[1]), _mm256_cvtpd_ps(ratio[0])));
+  const __m256d low = _mm256_set1_pd(kVisibleMinNm), high = _mm256_set1_pd(kVisibleMaxNm);
+  for (int h = 0; h < 2; ++h) {
+    const __m256d ln_pd = _mm256_cvtps_pd(h == 0 ? _mm256_castps256_ps128(ln) : _mm256_extractf128_ps(ln, 1));
+    __m256d nm = _mm256_add_pd(_mm256_set1_pd(lobe.center_nm), _mm256_mul_pd(ln_pd, _mm256_set1_pd(lobe.nm_per_ln_ratio)));
+    nm = _mm256_min_pd(_mm256_max_pd(nm, low), high);
+    const CoshQuad& q = *quad[h];
+    if (q.n == 4) {
+      _mm_storeu_ps(q.wavelength_nm + q.first, _mm256_cvtpd_ps(nm));
+      _mm_storeu_ps(q.pdf + q.first, _mm256_cvtpd_ps(density[h]));
+      continue;
+    }
+    alignas(16) std::array<float, 4> nm_out, pdf_out;
+    _mm_store_ps(nm_out.data(), _mm256_cvtpd_ps(nm));
+    _mm_store_ps(pdf_out.data(), _mm256_cvtpd_ps(density[h]));
+    for (int k = 0; k < q.n; ++k) {
+      q.wavelength_nm[q.first + k] = nm_out[static_cast<std::size_t>(k)];
+      q.pdf[q.first + k] = pdf_out[static_cast<std::size_t>(k)];
+    }
+  }
+}
+
+PRISM_TARGET_REGION_END
+#endif
+
+const bool kCoshAvx2 = lanes::avx2_supported();
+
+// The quads' slots: two at a time in AVX2 where `width` and the processor allow, else one
+// at a time in SSE2 (the same bits either way).
+void cosh_quads(const PreparedLobe& lobe, double slot_step, const CoshQuad* quads, int count, CoshVectorWidth width) {
+  int k = 0;
+#if PRISM_FLOAT_LANES_AVX2
+  if (width == CoshVectorWidth::widest && kCoshAvx2)
+    for (; k + 1 < count; k += 2) cosh_quad_pair_avx2(lobe, slot_step, quads[k], quads[k + 1]);
+#else
+  (void)width;
+#endif
+  for (; k < count; ++k)
+    cosh_tuple_slots(lobe, quads[k].u, slot_step, quads[k].first, quads[k].n, quads[k].wavelength_nm, quads[k].pdf);
+}
+
+}  // namespace
+
+void sample_cosh_wavelengths(double u, int count, float* wavelength_nm, float* pdf, CoshVectorWidth width) {
   // The generic loop's slot_u and inverse CDF, with the pdf taken from the tanh the
   // inversion starts from instead of a cosh of the result: λ = B + atanh(t)/A with
   // t = tanh(A(λ − B)), and 1/cosh²(x) = 1 − tanh²(x), so p(λ) = A (1 − t²) / (tanh(A(780 − B))
@@ -310,11 +383,26 @@ void sample_cosh_wavelengths(double u, int count, float* wavelength_nm, float* p
   // a double atanh and a double cosh (BM_SampleWavelengths: cosh 216–245 → 66–79 ns).
   // atanh(t) = ½ ln((1 + t)/(1 − t)), the logarithm in float: |t| ≤ 0.94 here, so the ratio
   // stays in [0.1, 33], and log4's error there (< 1e-6) moves λ by < 1e-4 nm. Four slots at
-  // a time (BENCHMARKS.md "Session 22").
+  // a time (BENCHMARKS.md "Session 22"), eight in AVX2.
+  sample_cosh_wavelengths({&u, 1}, count, {&wavelength_nm, 1}, {&pdf, 1}, width);
+}
+
+void sample_cosh_wavelengths(std::span<const double> u, int count, std::span<float* const> wavelength_nm,
+                             std::span<float* const> pdf, CoshVectorWidth width) {
   const PreparedLobe& lobe = radziszewski_lobe();
   const double slot_step = 1.0 / count;  // exact for 1, 2, 4 and 8 wavelengths
-  for (int first = 0; first < count; first += 4)
-    cosh_tuple_slots(lobe, u, slot_step, first, std::min(4, count - first), wavelength_nm, pdf);
+  std::array<CoshQuad, 4> quads;
+  int queued = 0;
+  for (std::size_t tuple = 0; tuple < u.size(); ++tuple)
+    for (int first = 0; first < count; first += 4) {
+      quads[static_cast<std::size_t>(queued++)] = {u[tuple], first, std::min(4, count - first), wavelength_nm[tuple],
+                                                   pdf[tuple]};
+      if (queued == static_cast<int>(quads.size())) {
+        cosh_quads(lobe, slot_step, quads.data(), queued, width);
+        queued = 0;
+      }
+    }
+  cosh_quads(lobe, slot_step, quads.data(), queued, width);
 }
 
 }  // namespace prism::color

@@ -31,6 +31,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -98,7 +99,17 @@ void sample_three_cosh_wavelengths(double u, int count, float* wavelength_nm, fl
 // logarithm, each pdf from the tanh its inversion starts from (1/cosh² = 1 − tanh²)
 // instead of a cosh of λ; within 1e-4 nm and float rounding of the loop's
 // (wavelength_sampling_test), in a third of its time.
-void sample_cosh_wavelengths(double u, int count, float* wavelength_nm, float* pdf);
+// In SSE2, four slots at a time, or in AVX2 where the processor has it, eight (two tuples
+// of four, or one of eight): the same bits (wavelength_sampling_test). `sse2` keeps to SSE2,
+// for that comparison.
+enum class CoshVectorWidth { widest, sse2 };
+void sample_cosh_wavelengths(double u, int count, float* wavelength_nm, float* pdf,
+                             CoshVectorWidth width = CoshVectorWidth::widest);
+// Several tuples in one call, tuple i from u[i] into wavelength_nm[i][0 … count) and
+// pdf[i][0 … count): the same values as a call per tuple, tuples of four two at a time in
+// AVX2.
+void sample_cosh_wavelengths(std::span<const double> u, int count, std::span<float* const> wavelength_nm,
+                             std::span<float* const> pdf, CoshVectorWidth width = CoshVectorWidth::widest);
 
 template <int N>
 SampledWavelengths<N> sample_wavelengths(WavelengthStrategy strategy, double u) {
@@ -117,6 +128,20 @@ SampledWavelengths<N> sample_wavelengths(WavelengthStrategy strategy, double u) 
     w.pdf[i] = static_cast<float>(wavelength_pdf(strategy, N, nm));
   }
   return w;
+}
+
+// sample_wavelengths of two samples: the same values, the cosh tuples in one call.
+template <int N>
+void sample_wavelength_pair(WavelengthStrategy strategy, const double (&u)[2], SampledWavelengths<N>& first,
+                            SampledWavelengths<N>& second) {
+  if (strategy != WavelengthStrategy::cosh) {
+    first = sample_wavelengths<N>(strategy, u[0]);
+    second = sample_wavelengths<N>(strategy, u[1]);
+    return;
+  }
+  float* const nm[2] = {first.wavelength_nm.data(), second.wavelength_nm.data()};
+  float* const pdf[2] = {first.pdf.data(), second.pdf.data()};
+  sample_cosh_wavelengths(u, N, nm, pdf);
 }
 
 // Stratified first samples: the primary number of sample `sample_index` of a pixel is

@@ -16,7 +16,11 @@
 #include <cstddef>
 #include <cstdint>
 
-#if defined(__SSE2__)
+#include "prism/core/target_region.h"
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#include <immintrin.h>
+#elif defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 
@@ -70,6 +74,33 @@ inline __m128 log4_ps(__m128 x) {
   const __m128 ln_m = _mm_mul_ps(_mm_add_ps(s, s), series);
   return _mm_add_ps(_mm_mul_ps(_mm_cvtepi32_ps(exponent), _mm_set1_ps(kLn2)), ln_m);
 }
+#endif
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+PRISM_TARGET_REGION_BEGIN("avx2")
+// log4_ps in eight lanes, for AVX2 code (a caller that has checked the processor): the same
+// operations in the same order, so the same bits (log4_test).
+inline __m256 log8_ps(__m256 x) {
+  using namespace log4_detail;
+  const __m256i bits = _mm256_castps_si256(x);
+  __m256i exponent = _mm256_sub_epi32(_mm256_srli_epi32(bits, 23), _mm256_set1_epi32(127));
+  __m256 m = _mm256_castsi256_ps(
+      _mm256_or_si256(_mm256_and_si256(bits, _mm256_set1_epi32(0x007fffff)), _mm256_set1_epi32(0x3f800000)));
+  const __m256 high = _mm256_cmp_ps(m, _mm256_set1_ps(2.0f * kSqrtHalf), _CMP_GE_OS);
+  m = _mm256_or_ps(_mm256_and_ps(high, _mm256_mul_ps(m, _mm256_set1_ps(0.5f))), _mm256_andnot_ps(high, m));
+  exponent = _mm256_sub_epi32(exponent, _mm256_castps_si256(high));
+  const __m256 one = _mm256_set1_ps(1.0f);
+  const __m256 s = _mm256_div_ps(_mm256_sub_ps(m, one), _mm256_add_ps(m, one));
+  const __m256 z = _mm256_mul_ps(s, s);
+  __m256 series = _mm256_add_ps(_mm256_mul_ps(z, _mm256_set1_ps(1.0f / 9.0f)), _mm256_set1_ps(1.0f / 7.0f));
+  series = _mm256_add_ps(_mm256_mul_ps(z, series), _mm256_set1_ps(1.0f / 5.0f));
+  series = _mm256_add_ps(_mm256_mul_ps(z, series), _mm256_set1_ps(1.0f / 3.0f));
+  series = _mm256_add_ps(_mm256_mul_ps(z, series), one);
+  const __m256 ln_m = _mm256_mul_ps(_mm256_add_ps(s, s), series);
+  return _mm256_add_ps(_mm256_mul_ps(_mm256_cvtepi32_ps(exponent), _mm256_set1_ps(kLn2)), ln_m);
+}
+
+PRISM_TARGET_REGION_END
 #endif
 
 inline std::array<float, 4> log4(const std::array<float, 4>& x) {

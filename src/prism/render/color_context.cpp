@@ -138,6 +138,15 @@ Wavelengths<SpectralMode<N>> ColorContext<SpectralMode<N>>::sample_wavelengths(s
 }
 
 template <int N>
+void ColorContext<SpectralMode<N>>::sample_wavelength_pair(const std::uint64_t (&sample_index)[2], const double (&jitter)[2],
+                                                           Wavelengths<Mode>& first, Wavelengths<Mode>& second) const {
+  double u[2] = {jitter[0], jitter[1]};
+  if (settings_.stratify_first_wavelengths)
+    for (int k = 0; k < 2; ++k) u[k] = color::stratified_wavelength_u(sample_index[k], jitter[k]);
+  color::sample_wavelength_pair<N>(settings_.wavelength_strategy, u, first, second);
+}
+
+template <int N>
 Spectrum<SpectralMode<N>> ColorContext<SpectralMode<N>>::reflectance(const Vec3f& rgb, const Wavelengths<Mode>& w,
                                                                       ColorPickerSpace space) const {
   Spectrum<Mode> s;

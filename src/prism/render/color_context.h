@@ -62,6 +62,9 @@ class ColorContext<SpectralMode<N>> {
 
   // `u` is the sample's primary number of wavelength sampling, uniform in [0, 1).
   Wavelengths<Mode> sample_wavelengths(std::uint64_t sample_index, double u) const;
+  // Two samples' (the same values as two calls, in less time).
+  void sample_wavelength_pair(const std::uint64_t (&sample_index)[2], const double (&u)[2], Wavelengths<Mode>& first,
+                              Wavelengths<Mode>& second) const;
   // A reflectance given in `space` (sRGB: textures, tints, sheens) upsampled with that
   // space's table.
   Spectrum<Mode> reflectance(const Vec3f& rgb, const Wavelengths<Mode>& w,
@@ -157,6 +160,10 @@ class ColorContext<RgbMode> {
   ColorContext(const Scene& scene, const TransportSettings& settings);
 
   Wavelengths<Mode> sample_wavelengths(std::uint64_t, double) const { return {}; }
+  void sample_wavelength_pair(const std::uint64_t (&)[2], const double (&)[2], Wavelengths<Mode>& first,
+                              Wavelengths<Mode>& second) const {
+    first = second = {};
+  }
   Spectrum<Mode> reflectance(const Vec3f& rgb, const Wavelengths<Mode>& w,
                              ColorPickerSpace space = ColorPickerSpace::srgb) const;
   Spectrum<Mode> base_color(std::uint32_t material, const Wavelengths<Mode>&) const { return base_colors_[material]; }

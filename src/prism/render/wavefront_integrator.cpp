@@ -19,6 +19,7 @@
 #include "prism/render/surface_interaction.h"
 #include "prism/render/volume_absorption.h"
 #include "prism/render/wavefront_paths.h"
+#include "prism/sampling/padded_sobol.h"
 #include "prism/sampling/padded_sobol_lanes.h"
 #include "prism/scene/emission.h"
 #include "prism/sampling/warps.h"
@@ -304,27 +305,48 @@ Vec2f WavefrontIntegrator<Mode>::facet_numbers(const Paths& p, std::uint32_t slo
 }
 
 template <class Mode>
-void WavefrontIntegrator<Mode>::generate(Paths& p, std::uint32_t slot, std::uint32_t sample_index) const {
-  const std::uint32_t pixel = p.first_pixel + slot;
-  const std::uint32_t x = pixel % static_cast<std::uint32_t>(width_), y = pixel / static_cast<std::uint32_t>(width_);
-  const CameraSamples u =
-      camera_samples(settings_.sampler, PixelSample{seed_, pixel, static_cast<std::uint32_t>(width_), sample_index},
-                     camera_.has_lens());
-  p.wavelengths[slot] = colors_.sample_wavelengths(sample_index, u.wavelength);
-  p.ray[slot] = camera_.generate_ray(static_cast<float>(x) + u.pixel_jitter.x, static_cast<float>(y) + u.pixel_jitter.y,
-                                     u.lens);
-  p.throughput[slot] = Spectrum<Mode>(1.0f);
-  p.radiance[slot] = Spectrum<Mode>(0.0f);
-  p.depth[slot] = 0;
-  p.prev_pdf[slot] = 0.0f;
-  p.eta_scale[slot] = 1.0f;
-  p.cone_width[slot] = 0.0f;
-  p.cone_spread[slot] = camera_.pixel_spread_angle();
-  p.prev_specular[slot] = 1;  // camera rays see emitters directly, unweighted
-  p.finished[slot] = 0;
-  p.inside_absorbing[slot] = 0;
-  p.sample_index[slot] = sample_index;
-  p.cached_emitter[slot] = kNoCachedEmitter;  // new wavelengths
+void WavefrontIntegrator<Mode>::generate(Paths& p, const std::uint32_t* slots, const std::uint32_t* sample_indices,
+                                         std::size_t count) const {
+  // In runs of kGenerateRun slots, one stage at a time for the whole run: the camera
+  // numbers, then the wavelengths, then the rays. Each stage is a loop of independent
+  // iterations, short dependency chains that the processor overlaps, where one slot's
+  // stages in a row were a single long chain (the sampler's hashes, then a division and a
+  // logarithm per wavelength); each slot's numbers are the same (BENCHMARKS.md "Session 34").
+  constexpr std::size_t kGenerateRun = 32;
+  const bool lens = camera_.has_lens();
+  const auto width = static_cast<std::uint32_t>(width_);
+  std::array<CameraSamples, kGenerateRun> u;
+  for (std::size_t first = 0; first < count; first += kGenerateRun) {
+    const std::size_t n = std::min(kGenerateRun, count - first);
+    const std::uint32_t* run = slots + first;
+    const std::uint32_t* run_samples = sample_indices + first;
+    for (std::size_t k = 0; k < n; ++k)
+      u[k] = camera_samples(settings_.sampler, PixelSample{seed_, p.first_pixel + run[k], width, run_samples[k]}, lens);
+    std::size_t k = 0;
+    for (; k + 1 < n; k += 2)
+      colors_.sample_wavelength_pair({run_samples[k], run_samples[k + 1]}, {u[k].wavelength, u[k + 1].wavelength},
+                                     p.wavelengths[run[k]], p.wavelengths[run[k + 1]]);
+    if (k < n) p.wavelengths[run[k]] = colors_.sample_wavelengths(run_samples[k], u[k].wavelength);
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::uint32_t slot = run[k];
+      const std::uint32_t pixel = p.first_pixel + slot;
+      const std::uint32_t x = pixel % width, y = pixel / width;
+      p.ray[slot] = camera_.generate_ray(static_cast<float>(x) + u[k].pixel_jitter.x,
+                                         static_cast<float>(y) + u[k].pixel_jitter.y, u[k].lens);
+      p.throughput[slot] = Spectrum<Mode>(1.0f);
+      p.radiance[slot] = Spectrum<Mode>(0.0f);
+      p.depth[slot] = 0;
+      p.prev_pdf[slot] = 0.0f;
+      p.eta_scale[slot] = 1.0f;
+      p.cone_width[slot] = 0.0f;
+      p.cone_spread[slot] = camera_.pixel_spread_angle();
+      p.prev_specular[slot] = 1;  // camera rays see emitters directly, unweighted
+      p.finished[slot] = 0;
+      p.inside_absorbing[slot] = 0;
+      p.sample_index[slot] = run_samples[k];
+      p.cached_emitter[slot] = kNoCachedEmitter;  // new wavelengths
+    }
+  }
 }
 
 template <class Mode>
@@ -622,10 +644,20 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
                                                    int bounces_per_pass, const std::function<void()>* after_bounces) {
   const auto pixels = static_cast<std::uint32_t>(film.pixel_count());
   const bool aovs = film.aovs().first_hit();
-  // Slots [0, n) of `p` start pixels p.first_pixel … + n with sample first_sample.
-  const auto start = [&](Paths& p, std::uint32_t slot) {
-    generate(p, slot, first_sample);
-    p.sample_end[slot] = first_sample + count;
+  // Slots [begin, end) of `p` start pixels p.first_pixel + begin … with sample first_sample.
+  const auto start = [&](Paths& p, std::uint32_t begin, std::uint32_t end) {
+    constexpr std::uint32_t kRun = 256;
+    std::array<std::uint32_t, kRun> slots, samples;
+    samples.fill(first_sample);
+    for (std::uint32_t first = begin; first < end; first += kRun) {
+      const std::uint32_t n = std::min(kRun, end - first);
+      for (std::uint32_t k = 0; k < n; ++k) {
+        slots[k] = first + k;
+        p.sample_end[first + k] = first_sample + count;
+        if (bounce_blocks_ahead_) p.sobol_pixel_key[first + k] = padded_sobol_pixel_key(seed_, p.first_pixel + first + k);
+      }
+      generate(p, slots.data(), samples.data(), n);
+    }
   };
 
   // Lockstep: one queue for the whole image, each stage split across the threads, so that
@@ -638,7 +670,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
     std::vector<std::uint32_t> live(pixels);
     for (std::uint32_t s = 0; s < pixels; ++s) live[s] = s;
     parallel_for(pixels, 4096, [&](std::size_t b, std::size_t e) {
-      for (std::size_t s = b; s < e; ++s) start(p, static_cast<std::uint32_t>(s));
+      start(p, static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(e));
     });
     return run_queue(film, p, live, /*parallel=*/true, bounces_per_pass, after_bounces);
   }
@@ -660,10 +692,8 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
       p->first_pixel = begin;
       p->first_hit_aovs.resize(aovs ? kWavefrontTilePixels : 0u);
       std::vector<std::uint32_t> live(end - begin);
-      for (std::uint32_t s = 0; s < end - begin; ++s) {
-        live[s] = s;
-        start(*p, s);
-      }
+      for (std::uint32_t s = 0; s < end - begin; ++s) live[s] = s;
+      start(*p, 0, end - begin);
       per_tile[t] = run_queue(film, *p, live, /*parallel=*/false, 0, nullptr);
       release_tile_paths(std::move(p));
     }
@@ -723,10 +753,20 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
     // a few slots ahead prefetched (surface_interaction.h) where it is too big for the caches,
     // and the hits' bounce blocks drawn first where that is cheap (bounce_blocks_ahead_).
     for_range(parallel, live.size(), kGrain, [&](std::size_t b, std::size_t e) {
-      if (bounce_blocks_ahead_)
-        for (std::size_t i = b; i < e; ++i)
-          if (const std::uint32_t s = live[i]; p.hit_found[s])
-            p.bounce_block[s] = padded_sobol_bounce_block_lanes(pixel_sample(p, s), p.depth[s], kNeedAllBounceSamples);
+      if (bounce_blocks_ahead_) {
+        std::array<BounceBlockRequest, 64> requests;
+        std::size_t n = 0;
+        for (std::size_t i = b; i < e; ++i) {
+          const std::uint32_t s = live[i];
+          if (!p.hit_found[s]) continue;
+          requests[n++] = {p.sobol_pixel_key[s], p.sample_index[s], p.depth[s], &p.bounce_block[s]};
+          if (n == requests.size()) {
+            padded_sobol_bounce_blocks_lanes({requests.data(), n});
+            n = 0;
+          }
+        }
+        padded_sobol_bounce_blocks_lanes({requests.data(), n});
+      }
       // Hits that shade_in_lanes wait for lane_width_ of their kind and are shaded
       // together; the last few, alone. Each slot's bits are the same either way.
       std::array<std::uint32_t, kMaxLaneWidth> waiting;
@@ -776,7 +816,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
       // wavelength tables and the sampler stay in the L1 cache for the whole run of slots
       // instead of taking turns with the path state. Each slot's numbers are its own, so
       // the order changes nothing.
-      std::array<std::uint32_t, kGrain> finished, restarted;
+      std::array<std::uint32_t, kGrain> finished, restarted, next_sample;
       for (std::size_t c = cb; c < ce; ++c) {
         std::uint64_t local_invalid = 0, traced = 0;
         std::size_t finished_count = 0, restarted_count = 0;
@@ -807,7 +847,8 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
             ++local_invalid;  // never written to the film; reported at the end
           }
         }
-        for (std::size_t k = 0; k < restarted_count; ++k) generate(p, restarted[k], p.sample_index[restarted[k]] + 1);
+        for (std::size_t k = 0; k < restarted_count; ++k) next_sample[k] = p.sample_index[restarted[k]] + 1;
+        generate(p, restarted.data(), next_sample.data(), restarted_count);
         survivor_counts[c] = static_cast<std::uint32_t>(kept - c * kGrain);
         invalid += local_invalid;
         completed += finished_count;

@@ -105,7 +105,10 @@ class WavefrontIntegrator {
 
  private:
   struct Paths;  // structure of arrays, one slot per pixel of a tile (or of the image)
-  void generate(Paths& paths, std::uint32_t slot, std::uint32_t sample_index) const;
+  // Starts sample sample_indices[k] of slot slots[k]'s pixel, for k < count: its camera ray
+  // and wavelengths, and a fresh path state.
+  void generate(Paths& paths, const std::uint32_t* slots, const std::uint32_t* sample_indices,
+                std::size_t count) const;
   void shade(Paths& paths, std::uint32_t slot) const;
   // shade() past the hit's geometry. kPlainDiffuse: the material is_plain_diffuse
   // (material_bsdf.h), and the steps it cannot take (maps, anisotropy, textures, layers,

@@ -16,7 +16,7 @@ struct WavefrontIntegrator<Mode>::Paths {
       : ray(n), throughput(n), radiance(n), wavelengths(n), hit(n), hit_found(n), shadow_ray(n),
         shadow_contribution(n), shadow_pending(n), shadow_blocked(n), prev_position(n), prev_normal(n), prev_pdf(n),
         eta_scale(n), cone_width(n), cone_spread(n), prev_specular(n), depth(n), finished(n), sample_index(n),
-        sample_end(n), inside_absorbing(n), interior_sigma(n), bounce_block(n), cached_emitter(n),
+        sample_end(n), inside_absorbing(n), interior_sigma(n), bounce_block(n), sobol_pixel_key(n), cached_emitter(n),
         cached_emission(n) {}
   std::size_t capacity() const { return ray.size(); }
   std::uint32_t first_pixel = 0;
@@ -48,6 +48,8 @@ struct WavefrontIntegrator<Mode>::Paths {
   std::vector<AovSample> first_hit_aovs;
   // Each hit's bounce block, drawn whole before shading where bounce_blocks_ahead_.
   std::vector<BounceSamples> bounce_block;
+  // padded_sobol_pixel_key of the slot's pixel, where bounce_blocks_ahead_ (set as a wave starts).
+  std::vector<std::uint64_t> sobol_pixel_key;
   // The untextured emitter whose spectrum at the path's wavelengths is cached_emission
   // (untextured_emission); kNoCachedEmitter for none yet.
   std::vector<std::uint32_t> cached_emitter;

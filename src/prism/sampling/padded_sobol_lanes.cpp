@@ -1,5 +1,7 @@
 #include "prism/sampling/padded_sobol_lanes.h"
 
+#include <stdexcept>
+
 #include "prism/core/env_flag.h"
 #include "prism/sampling/padded_sobol.h"
 
@@ -17,7 +19,8 @@ namespace {
 // each: for AVX2, and for AVX-512 (DQ and VL: a 64-bit multiply in one instruction) with
 // GFNI (a byte's bits reversed in one affine transform). The AVX-512 blocks run the same
 // integer operations on the same 256-bit registers, so their bits are the AVX2 blocks'
-// (pixel_sampler_test compares both with the scalar requests). GCC takes a target pragma,
+// (pixel_sampler_test compares both with the scalar requests); two bounce blocks at once
+// run them on the two halves of 512-bit registers (BW: byte shuffles of 512 bits). GCC takes a target pragma,
 // Clang (the sanitizer builds) a target attribute applied to every function of the region.
 #if defined(__clang__)
 #pragma clang attribute push(__attribute__((target("avx2"))), apply_to = function)
@@ -57,11 +60,11 @@ inline __m256i reverse_bits_in_bytes(__m256i x) {
 }  // namespace avx2
 #if defined(__clang__)
 #pragma clang attribute pop
-#pragma clang attribute push(__attribute__((target("avx2,avx512f,avx512dq,avx512vl,gfni"))), apply_to = function)
+#pragma clang attribute push(__attribute__((target("avx2,avx512f,avx512dq,avx512vl,avx512bw,gfni"))), apply_to = function)
 #else
 #pragma GCC pop_options
 #pragma GCC push_options
-#pragma GCC target("avx2,avx512f,avx512dq,avx512vl,gfni")
+#pragma GCC target("avx2,avx512f,avx512dq,avx512vl,avx512bw,gfni")
 #endif
 namespace avx512 {
 
@@ -79,6 +82,94 @@ inline __m256i reverse_bits_in_bytes(__m256i x) {
 
 #include "prism/sampling/padded_sobol_lane_blocks.inc"
 
+// Two bounce blocks at once, every number asked for: block a in the low 256 bits of each
+// 512-bit register (the low eight 32-bit lanes, the low four 64-bit ones), block b in the
+// high, each half taking bounce_block_of_key's operations on its own lanes, in its order;
+// so the same bits, in half the instructions.
+inline __m512i halves_of(std::uint64_t a, std::uint64_t b) {
+  return _mm512_inserti64x4(_mm512_castsi256_si512(_mm256_set1_epi64x(static_cast<long long>(a))),
+                            _mm256_set1_epi64x(static_cast<long long>(b)), 1);
+}
+inline __m512i mix64_pair(__m512i z) {
+  z = _mm512_mullo_epi64(_mm512_xor_si512(z, _mm512_srli_epi64(z, 30)), _mm512_set1_epi64(static_cast<long long>(0xbf58476d1ce4e5b9ull)));
+  z = _mm512_mullo_epi64(_mm512_xor_si512(z, _mm512_srli_epi64(z, 27)), _mm512_set1_epi64(static_cast<long long>(0x94d049bb133111ebull)));
+  return _mm512_xor_si512(z, _mm512_srli_epi64(z, 31));
+}
+inline __m512i reverse_bits_pair(__m512i x) {
+  const __m512i byte_order = _mm512_broadcast_i32x4(_mm_setr_epi8(3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12));
+  return _mm512_gf2p8affine_epi64_epi8(_mm512_shuffle_epi8(x, byte_order),
+                                       _mm512_set1_epi64(static_cast<long long>(0x8040201008040201ull)), 0);
+}
+inline __m512i laine_karras_pair(__m512i x, __m512i seed) {
+  x = _mm512_add_epi32(x, seed);
+  x = _mm512_xor_si512(x, _mm512_mullo_epi32(x, _mm512_set1_epi32(0x6c50b47c)));
+  x = _mm512_xor_si512(x, _mm512_mullo_epi32(x, _mm512_set1_epi32(static_cast<int>(0xb82f1e52u))));
+  x = _mm512_xor_si512(x, _mm512_mullo_epi32(x, _mm512_set1_epi32(static_cast<int>(0xc7afe638u))));
+  x = _mm512_xor_si512(x, _mm512_mullo_epi32(x, _mm512_set1_epi32(static_cast<int>(0x8d22f6e6u))));
+  return x;
+}
+inline __m512i superset_step_pair(__m512i v, unsigned shift, std::uint32_t positions) {
+  return _mm512_xor_si512(v, _mm512_and_si512(_mm512_srli_epi32(v, shift), _mm512_set1_epi32(static_cast<int>(positions))));
+}
+inline __m512i sobol_dimension1_reversed_pair(__m512i i) {
+  i = superset_step_pair(i, 1, 0x55555555u);
+  i = superset_step_pair(i, 2, 0x33333333u);
+  i = superset_step_pair(i, 4, 0x0f0f0f0fu);
+  i = superset_step_pair(i, 8, 0x00ff00ffu);
+  return superset_step_pair(i, 16, 0x0000ffffu);
+}
+void bounce_block_pair(const BounceBlockRequest& a, const BounceBlockRequest& b) {
+  constexpr std::uint64_t kStep = kPaddedSobolDimensionStep;
+  const auto block_key = [](const BounceBlockRequest& r) {
+    const std::uint32_t base = kFirstBounceDimension + kDimensionsPerBounce * static_cast<std::uint32_t>(r.depth);
+    return r.pixel_key + kStep * (base + 1ull);
+  };
+  const __m512i keys = halves_of(block_key(a), block_key(b));
+  // request_hash_lanes' dimension offsets, times the step: first select 0, light 1, lobe 3,
+  // direction 4; second roulette 6, light 1, direction 4, and a lane asked for nothing (0).
+  const auto steps = [](std::uint64_t o0, std::uint64_t o1, std::uint64_t o2, std::uint64_t o3) {
+    return _mm512_setr_epi64(static_cast<long long>(o0 * kStep), static_cast<long long>(o1 * kStep),
+                             static_cast<long long>(o2 * kStep), static_cast<long long>(o3 * kStep),
+                             static_cast<long long>(o0 * kStep), static_cast<long long>(o1 * kStep),
+                             static_cast<long long>(o2 * kStep), static_cast<long long>(o3 * kStep));
+  };
+  const __m512i first = mix64_pair(_mm512_add_epi64(keys, steps(0, 1, 3, 4)));
+  const __m512i second = _mm512_maskz_mov_epi64(0b01110111, mix64_pair(_mm512_add_epi64(keys, steps(6, 1, 4, 0))));
+  const __m512i second_axes = _mm512_mask_blend_epi32(0x3c3c, second, mix64_pair(second));
+  // halves_lanes in each half: the low (shuffle) or high (scramble) 32 bits of first's four
+  // 64-bit lanes, then of the other operand's four.
+  const __m512i low_halves = _mm512_setr_epi32(0, 2, 4, 6, 16, 18, 20, 22, 8, 10, 12, 14, 24, 26, 28, 30);
+  const __m512i high_halves = _mm512_add_epi32(low_halves, _mm512_set1_epi32(1));
+  const __m512i shuffle_seeds = _mm512_permutex2var_epi32(first, low_halves, second);
+  const __m512i scramble_seeds = _mm512_permutex2var_epi32(first, high_halves, second_axes);
+  // scrambled_points<0b1100000> of each half's sample index.
+  const __m512i sample_index = _mm512_inserti32x8(_mm512_set1_epi32(static_cast<int>(a.sample_index)),
+                                                  _mm256_set1_epi32(static_cast<int>(b.sample_index)), 1);
+  const __m512i index = reverse_bits_pair(laine_karras_pair(reverse_bits_pair(sample_index), shuffle_seeds));
+  const __m512i point = _mm512_mask_blend_epi32(0x6060, index, sobol_dimension1_reversed_pair(index));
+  const __m512i bits = reverse_bits_pair(laine_karras_pair(point, scramble_seeds));
+  alignas(64) float u[16];
+  _mm512_store_ps(u, _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_srli_epi32(bits, 8)), _mm512_set1_ps(0x1p-24f)));
+  for (int h = 0; h < 2; ++h) {
+    const float* v = u + 8 * h;
+    BounceSamples& out = *(h == 0 ? a : b).out;
+    out.light_select = v[0];
+    out.light = {v[1], v[5]};
+    out.lobe = v[2];
+    out.direction = {v[3], v[6]};
+    out.roulette = v[4];
+  }
+}
+
+void bounce_blocks(std::span<const BounceBlockRequest> requests) {
+  std::size_t k = 0;
+  for (; k + 1 < requests.size(); k += 2) bounce_block_pair(requests[k], requests[k + 1]);
+  if (k < requests.size()) {
+    const BounceBlockRequest& r = requests[k];
+    *r.out = bounce_block_of_key(r.pixel_key, r.sample_index, r.depth, kNeedAllBounceSamples);
+  }
+}
+
 }  // namespace avx512
 #if defined(__clang__)
 #pragma clang attribute pop
@@ -93,7 +184,8 @@ bool supported(SobolLanes lanes) {
     case SobolLanes::avx2: return __builtin_cpu_supports("avx2");
     case SobolLanes::avx512:
       return __builtin_cpu_supports("avx2") && __builtin_cpu_supports("avx512f") &&
-             __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("gfni");
+             __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl") &&
+             __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("gfni");
   }
   return false;
 }
@@ -124,6 +216,12 @@ BounceSamples padded_sobol_bounce_block_lanes(SobolLanes lanes, const PixelSampl
   return avx2::bounce_block(s, depth, needs);
 }
 
+void padded_sobol_bounce_blocks_lanes(SobolLanes lanes, std::span<const BounceBlockRequest> requests) {
+  if (lanes == SobolLanes::avx512) return avx512::bounce_blocks(requests);
+  for (const BounceBlockRequest& r : requests)
+    *r.out = avx2::bounce_block_of_key(r.pixel_key, r.sample_index, r.depth, kNeedAllBounceSamples);
+}
+
 #else
 
 SobolLanes padded_sobol_lanes() { return SobolLanes::none; }
@@ -137,6 +235,9 @@ CameraSamples padded_sobol_camera_block_lanes(SobolLanes, const PixelSample& s, 
 BounceSamples padded_sobol_bounce_block_lanes(SobolLanes, const PixelSample& s, int depth, unsigned needs) {
   return bounce_samples(SamplerKind::sobol, s, depth, needs);
 }
+void padded_sobol_bounce_blocks_lanes(SobolLanes, std::span<const BounceBlockRequest>) {
+  throw std::logic_error("padded_sobol_bounce_blocks_lanes: no lanes in this build");
+}
 
 #endif
 
@@ -146,6 +247,10 @@ CameraSamples padded_sobol_camera_block_lanes(const PixelSample& s, bool lens) {
 
 BounceSamples padded_sobol_bounce_block_lanes(const PixelSample& s, int depth, unsigned needs) {
   return padded_sobol_bounce_block_lanes(padded_sobol_lanes(), s, depth, needs);
+}
+
+void padded_sobol_bounce_blocks_lanes(std::span<const BounceBlockRequest> requests) {
+  padded_sobol_bounce_blocks_lanes(padded_sobol_lanes(), requests);
 }
 
 }  // namespace prism

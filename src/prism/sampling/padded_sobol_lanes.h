@@ -12,6 +12,9 @@
 // The bits are exactly those of the scalar path (pixel_sampler_test compares them, and
 // renders are bitwise the same). Chosen at run time: a build for plain x86-64 also runs on
 // processors without AVX2, which take the scalar path.
+#include <cstdint>
+#include <span>
+
 #include "prism/sampling/pixel_sampler.h"
 
 namespace prism {
@@ -19,7 +22,8 @@ namespace prism {
 enum class SobolLanes : unsigned char {
   none,    // the scalar path
   avx2,    // AVX2
-  avx512,  // AVX2 with AVX-512F/DQ/VL and GFNI, on the same 256-bit registers
+  avx512,  // AVX2 with AVX-512F/DQ/VL/BW and GFNI, on the same 256-bit registers (and
+           // 512-bit ones for two bounce blocks at once, padded_sobol_bounce_blocks_lanes)
 };
 
 // The lanes this build and processor run (decided once, before main): the widest the
@@ -36,5 +40,20 @@ CameraSamples padded_sobol_camera_block_lanes(const PixelSample& sample, bool le
 BounceSamples padded_sobol_bounce_block_lanes(const PixelSample& sample, int depth, unsigned needs);
 CameraSamples padded_sobol_camera_block_lanes(SobolLanes lanes, const PixelSample& sample, bool lens);
 BounceSamples padded_sobol_bounce_block_lanes(SobolLanes lanes, const PixelSample& sample, int depth, unsigned needs);
+
+// Whole bounce blocks of several path vertices, each written to *out: the block
+// padded_sobol_bounce_block_lanes(PixelSample{seed, pixel, …, sample_index}, depth,
+// kNeedAllBounceSamples) gives, for the seed and pixel whose padded_sobol_pixel_key
+// (padded_sobol.h) is pixel_key. The same bits; with AVX-512, two blocks per pass, one in
+// each half of 512-bit registers. On padded_sobol_lanes(), which must be available, or on
+// given lanes, which the processor must run.
+struct BounceBlockRequest {
+  std::uint64_t pixel_key;
+  std::uint32_t sample_index;
+  std::int32_t depth;
+  BounceSamples* out;
+};
+void padded_sobol_bounce_blocks_lanes(std::span<const BounceBlockRequest> requests);
+void padded_sobol_bounce_blocks_lanes(SobolLanes lanes, std::span<const BounceBlockRequest> requests);
 
 }  // namespace prism

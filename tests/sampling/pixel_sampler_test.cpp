@@ -176,10 +176,12 @@ TEST(PixelSampler, SobolLanesDrawTheScalarBits) {
   if (!any) GTEST_SKIP() << "this processor runs no lanes";
 }
 
-// padded_sobol_bounce_blocks_lanes against the scalar requests: batches of every length
-// up to nine (AVX-512 pairs the blocks, so an odd one is left over), each block with its
-// own seed, pixel, sample index and depth, so that a pair's halves never share a key.
-TEST(PixelSampler, SobolBounceBlockBatchesDrawTheScalarBits) {
+// padded_sobol_camera_blocks_lanes and padded_sobol_bounce_blocks_lanes against the scalar
+// requests (the wavelength number against the single camera block, which the test above
+// ties to them): batches of every length up to nine (AVX-512 pairs the blocks, so an odd
+// one is left over), each block with its own seed, pixel, sample index and depth, so that
+// a pair's halves never share a key.
+TEST(PixelSampler, SobolBlockBatchesDrawTheScalarBits) {
   bool any = false;
   std::uint64_t state = 7;
   const auto next = [&] { return static_cast<std::uint32_t>((state = mix64(state)) >> 32); };
@@ -198,6 +200,18 @@ TEST(PixelSampler, SobolBounceBlockBatchesDrawTheScalarBits) {
                        static_cast<std::int32_t>(next() % 12), &blocks[k]};
       }
       padded_sobol_bounce_blocks_lanes(lanes, requests);
+      for (const bool lens : {true, false}) {
+        std::vector<CameraSamples> cameras(count);
+        std::vector<CameraBlockRequest> camera_requests(count);
+        for (std::size_t k = 0; k < count; ++k) camera_requests[k] = {requests[k].pixel_key, samples[k].sample_index, &cameras[k]};
+        padded_sobol_camera_blocks_lanes(lanes, camera_requests, lens);
+        for (std::size_t k = 0; k < count; ++k) {
+          expect_same(cameras[k].pixel_jitter, sample_2d(SamplerKind::sobol, samples[k], kPixelJitterDimension));
+          expect_same(cameras[k].lens,
+                      lens ? sample_2d(SamplerKind::sobol, samples[k], kLensDimension) : Vec2f(0.0f, 0.0f));
+          EXPECT_EQ(cameras[k].wavelength, padded_sobol_camera_block_lanes(lanes, samples[k], lens).wavelength);
+        }
+      }
       for (std::size_t k = 0; k < count; ++k) {
         const PixelSample& s = samples[k];
         const std::uint32_t base = kFirstBounceDimension + kDimensionsPerBounce * static_cast<std::uint32_t>(requests[k].depth);

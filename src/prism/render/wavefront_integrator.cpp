@@ -320,8 +320,14 @@ void WavefrontIntegrator<Mode>::generate(Paths& p, const std::uint32_t* slots, c
     const std::size_t n = std::min(kGenerateRun, count - first);
     const std::uint32_t* run = slots + first;
     const std::uint32_t* run_samples = sample_indices + first;
-    for (std::size_t k = 0; k < n; ++k)
-      u[k] = camera_samples(settings_.sampler, PixelSample{seed_, p.first_pixel + run[k], width, run_samples[k]}, lens);
+    if (bounce_blocks_ahead_) {  // the padded Sobol' sampler's lanes: whole runs at once
+      std::array<CameraBlockRequest, kGenerateRun> requests;
+      for (std::size_t k = 0; k < n; ++k) requests[k] = {p.sobol_pixel_key[run[k]], run_samples[k], &u[k]};
+      padded_sobol_camera_blocks_lanes({requests.data(), n}, lens);
+    } else {
+      for (std::size_t k = 0; k < n; ++k)
+        u[k] = camera_samples(settings_.sampler, PixelSample{seed_, p.first_pixel + run[k], width, run_samples[k]}, lens);
+    }
     std::size_t k = 0;
     for (; k + 1 < n; k += 2)
       colors_.sample_wavelength_pair({run_samples[k], run_samples[k + 1]}, {u[k].wavelength, u[k + 1].wavelength},

@@ -161,6 +161,46 @@ void bounce_block_pair(const BounceBlockRequest& a, const BounceBlockRequest& b)
   }
 }
 
+// camera_block_of_key for two samples at once, in the halves of 512-bit registers as
+// bounce_block_pair.
+void camera_block_pair(const CameraBlockRequest& a, const CameraBlockRequest& b, bool lens) {
+  constexpr std::uint64_t kStep = kPaddedSobolDimensionStep;
+  static_assert(kPixelJitterDimension == 0 && kLensDimension == 2 && kWavelengthDimension == 4);
+  // request_hash_lanes: jitter, lens, wavelength and a lane asked for nothing, in each half.
+  const __m512i offsets = _mm512_setr_epi64(0, static_cast<long long>(2 * kStep), static_cast<long long>(4 * kStep), 0, 0,
+                                            static_cast<long long>(2 * kStep), static_cast<long long>(4 * kStep), 0);
+  const __m512i keys = _mm512_add_epi64(halves_of(a.pixel_key + kStep, b.pixel_key + kStep), offsets);
+  const __m512i hash = _mm512_maskz_mov_epi64(lens ? 0b01110111 : 0b01010101, mix64_pair(keys));
+  const __m512i rehash = mix64_pair(hash);
+  const __m512i shuffle_seeds =
+      _mm512_permutexvar_epi32(_mm512_setr_epi32(0, 2, 4, 0, 2, 6, 6, 6, 8, 10, 12, 8, 10, 14, 14, 14), hash);
+  const __m512i scramble_seeds = _mm512_mask_blend_epi32(
+      0x1818, _mm512_permutexvar_epi32(_mm512_setr_epi32(1, 3, 5, 7, 7, 7, 7, 7, 9, 11, 13, 15, 15, 15, 15, 15), hash),
+      _mm512_permutexvar_epi32(_mm512_setr_epi32(7, 7, 7, 1, 3, 7, 7, 7, 15, 15, 15, 9, 11, 15, 15, 15), rehash));
+  const __m512i sample_index = _mm512_inserti32x8(_mm512_set1_epi32(static_cast<int>(a.sample_index)),
+                                                  _mm256_set1_epi32(static_cast<int>(b.sample_index)), 1);
+  const __m512i index = reverse_bits_pair(laine_karras_pair(reverse_bits_pair(sample_index), shuffle_seeds));
+  const __m512i point = _mm512_mask_blend_epi32(0x1818, index, sobol_dimension1_reversed_pair(index));
+  const __m512i bits = reverse_bits_pair(laine_karras_pair(point, scramble_seeds));
+  alignas(64) float u[16];
+  alignas(64) std::uint32_t raw[16];
+  _mm512_store_ps(u, _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_srli_epi32(bits, 8)), _mm512_set1_ps(0x1p-24f)));
+  _mm512_store_si512(raw, bits);
+  for (int h = 0; h < 2; ++h) {
+    const float* v = u + 8 * h;
+    CameraSamples& out = *(h == 0 ? a : b).out;
+    out.pixel_jitter = {v[0], v[3]};
+    out.lens = lens ? Vec2f(v[1], v[4]) : Vec2f(0.0f, 0.0f);
+    out.wavelength = raw[8 * h + 2] * 0x1p-32;  // all 32 bits
+  }
+}
+
+void camera_blocks(std::span<const CameraBlockRequest> requests, bool lens) {
+  std::size_t k = 0;
+  for (; k + 1 < requests.size(); k += 2) camera_block_pair(requests[k], requests[k + 1], lens);
+  if (k < requests.size()) *requests[k].out = camera_block_of_key(requests[k].pixel_key, requests[k].sample_index, lens);
+}
+
 void bounce_blocks(std::span<const BounceBlockRequest> requests) {
   std::size_t k = 0;
   for (; k + 1 < requests.size(); k += 2) bounce_block_pair(requests[k], requests[k + 1]);
@@ -216,6 +256,11 @@ BounceSamples padded_sobol_bounce_block_lanes(SobolLanes lanes, const PixelSampl
   return avx2::bounce_block(s, depth, needs);
 }
 
+void padded_sobol_camera_blocks_lanes(SobolLanes lanes, std::span<const CameraBlockRequest> requests, bool lens) {
+  if (lanes == SobolLanes::avx512) return avx512::camera_blocks(requests, lens);
+  for (const CameraBlockRequest& r : requests) *r.out = avx2::camera_block_of_key(r.pixel_key, r.sample_index, lens);
+}
+
 void padded_sobol_bounce_blocks_lanes(SobolLanes lanes, std::span<const BounceBlockRequest> requests) {
   if (lanes == SobolLanes::avx512) return avx512::bounce_blocks(requests);
   for (const BounceBlockRequest& r : requests)
@@ -235,6 +280,9 @@ CameraSamples padded_sobol_camera_block_lanes(SobolLanes, const PixelSample& s, 
 BounceSamples padded_sobol_bounce_block_lanes(SobolLanes, const PixelSample& s, int depth, unsigned needs) {
   return bounce_samples(SamplerKind::sobol, s, depth, needs);
 }
+void padded_sobol_camera_blocks_lanes(SobolLanes, std::span<const CameraBlockRequest>, bool) {
+  throw std::logic_error("padded_sobol_camera_blocks_lanes: no lanes in this build");
+}
 void padded_sobol_bounce_blocks_lanes(SobolLanes, std::span<const BounceBlockRequest>) {
   throw std::logic_error("padded_sobol_bounce_blocks_lanes: no lanes in this build");
 }
@@ -247,6 +295,10 @@ CameraSamples padded_sobol_camera_block_lanes(const PixelSample& s, bool lens) {
 
 BounceSamples padded_sobol_bounce_block_lanes(const PixelSample& s, int depth, unsigned needs) {
   return padded_sobol_bounce_block_lanes(padded_sobol_lanes(), s, depth, needs);
+}
+
+void padded_sobol_camera_blocks_lanes(std::span<const CameraBlockRequest> requests, bool lens) {
+  padded_sobol_camera_blocks_lanes(padded_sobol_lanes(), requests, lens);
 }
 
 void padded_sobol_bounce_blocks_lanes(std::span<const BounceBlockRequest> requests) {

@@ -41,12 +41,20 @@ BounceSamples padded_sobol_bounce_block_lanes(const PixelSample& sample, int dep
 CameraSamples padded_sobol_camera_block_lanes(SobolLanes lanes, const PixelSample& sample, bool lens);
 BounceSamples padded_sobol_bounce_block_lanes(SobolLanes lanes, const PixelSample& sample, int depth, unsigned needs);
 
-// Whole bounce blocks of several path vertices, each written to *out: the block
-// padded_sobol_bounce_block_lanes(PixelSample{seed, pixel, …, sample_index}, depth,
-// kNeedAllBounceSamples) gives, for the seed and pixel whose padded_sobol_pixel_key
-// (padded_sobol.h) is pixel_key. The same bits; with AVX-512, two blocks per pass, one in
-// each half of 512-bit registers. On padded_sobol_lanes(), which must be available, or on
-// given lanes, which the processor must run.
+// Camera blocks of several samples and whole bounce blocks of several path vertices, each
+// written to *out: the block padded_sobol_camera_block_lanes(PixelSample{seed, pixel, …,
+// sample_index}, lens) or padded_sobol_bounce_block_lanes(…, depth, kNeedAllBounceSamples)
+// gives, for the seed and pixel whose padded_sobol_pixel_key (padded_sobol.h) is
+// pixel_key. The same bits; with AVX-512, two blocks per pass, one in each half of 512-bit
+// registers. On padded_sobol_lanes(), which must be available, or on given lanes, which
+// the processor must run.
+struct CameraBlockRequest {
+  std::uint64_t pixel_key;
+  std::uint32_t sample_index;
+  CameraSamples* out;
+};
+void padded_sobol_camera_blocks_lanes(std::span<const CameraBlockRequest> requests, bool lens);
+void padded_sobol_camera_blocks_lanes(SobolLanes lanes, std::span<const CameraBlockRequest> requests, bool lens);
 struct BounceBlockRequest {
   std::uint64_t pixel_key;
   std::uint32_t sample_index;

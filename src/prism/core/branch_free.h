@@ -10,9 +10,11 @@
 // value with and/andnot/or, and the binary search moves its base by a masked step, so the
 // compiler sees no condition to branch on. Results are exactly those of the branching
 // forms.
+#include <array>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <type_traits>
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -43,6 +45,19 @@ inline double select_less(double x, double y, double a, double b) {
 // infinity that is not kept becomes +0 too).
 inline float keep_if(bool keep, float value) {
   return std::bit_cast<float>(std::bit_cast<std::uint32_t>(value) & (std::uint32_t{0} - static_cast<std::uint32_t>(keep)));
+}
+
+// a where take, else b, for any trivially copyable value a word at a time: its bits are one
+// or the other's (for spectra: a running sum that takes a term or not).
+template <class T>
+T select_bits(bool take, const T& a, const T& b) {
+  static_assert(std::is_trivially_copyable_v<T> && sizeof(T) % sizeof(std::uint32_t) == 0);
+  using Words = std::array<std::uint32_t, sizeof(T) / sizeof(std::uint32_t)>;
+  Words x = std::bit_cast<Words>(a);
+  const Words y = std::bit_cast<Words>(b);
+  const std::uint32_t mask = std::uint32_t{0} - static_cast<std::uint32_t>(take);
+  for (std::size_t i = 0; i < x.size(); ++i) x[i] = (x[i] & mask) | (y[i] & ~mask);
+  return std::bit_cast<T>(x);
 }
 
 // std::upper_bound's answer as an index: the first of the sorted values[0, n) that is

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "prism/bsdf/plain_diffuse_bsdf.h"
+#include "prism/core/branch_free.h"
 #include "prism/core/env_flag.h"
 #include "prism/core/float_lanes.h"
 #include "prism/core/frame.h"
@@ -68,6 +69,7 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
                        !scene.materials[mesh.material].is_emissive();
     lane_mesh_.push_back(lane_width_ > 0 && plain && mesh.tangents.empty() ? 1 : 0);
   }
+  if (lane_mesh_.empty()) lane_mesh_.push_back(0);  // shades_in_lanes reads entry 0 for misses
 }
 
 template <class Mode>
@@ -411,8 +413,13 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
 
 template <class Mode>
 bool WavefrontIntegrator<Mode>::shades_in_lanes(const Paths& p, std::uint32_t slot) const {
-  return p.hit_found[slot] && lane_mesh_[p.hit[slot].mesh] && !p.inside_absorbing[slot] &&
-         p.depth[slot] < settings_.max_depth && (p.depth[slot] != 0 || p.first_hit_aovs.empty());
+  // Without branches (the stage-2 split calls it for every slot): a miss looks up mesh 0's
+  // entry, which lane_mesh_ always has, and is not taken whatever it says.
+  const bool found = p.hit_found[slot] != 0;
+  const std::uint32_t mesh = found ? p.hit[slot].mesh : 0u;
+  const std::int32_t depth = p.depth[slot];
+  return found & (lane_mesh_[mesh] != 0) & (p.inside_absorbing[slot] == 0) & (depth < settings_.max_depth) &
+         ((depth != 0) | p.first_hit_aovs.empty());
 }
 
 template <class Mode>
@@ -764,8 +771,8 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
         std::size_t n = 0;
         for (std::size_t i = b; i < e; ++i) {
           const std::uint32_t s = live[i];
-          if (!p.hit_found[s]) continue;
-          requests[n++] = {p.sobol_pixel_key[s], p.sample_index[s], p.depth[s], &p.bounce_block[s]};
+          requests[n] = {p.sobol_pixel_key[s], p.sample_index[s], p.depth[s], &p.bounce_block[s]};
+          n += p.hit_found[s] != 0;  // a miss, a coin flip too, is overwritten by the next slot
           if (n == requests.size()) {
             padded_sobol_bounce_blocks_lanes({requests.data(), n});
             n = 0;
@@ -773,41 +780,52 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
         }
         padded_sobol_bounce_blocks_lanes({requests.data(), n});
       }
-      // Hits that shade_in_lanes wait for lane_width_ of their kind and are shaded
-      // together; the last few, alone. Each slot's bits are the same either way.
-      std::array<std::uint32_t, kMaxLaneWidth> waiting;
-      std::size_t waiting_count = 0, lane_shaded_count = 0;
-      const auto shade_slot = [&](std::uint32_t s) {
-        if (!shades_in_lanes(p, s)) {
-          shade(p, s);
-          return;
+      // The chunk's slots split without branches (whether a ray hit, and what, is a coin
+      // flip to a branch predictor): the hits that shades_in_lanes, shaded lane_width_ at a
+      // time, the last few alone; then every other slot alone. Each slot's bits are the
+      // same in any order. Where the geometry is too big for the caches, the hits a few
+      // slots ahead have their indices and then their vertices prefetched
+      // (surface_interaction.h).
+      // Before shading slots[at … at + step): the indices of those twice as far on (at
+      // least 8), the vertices of those as far on (at least 4).
+      const auto prefetch_ahead = [&](const std::uint32_t* slots, std::size_t at, std::size_t count, std::size_t step) {
+        const std::size_t indices_at = at + std::max<std::size_t>(8, 2 * step);
+        const std::size_t vertices_at = at + std::max<std::size_t>(4, step);
+        for (std::size_t k = indices_at; k < std::min(count, indices_at + step); ++k)
+          if (p.hit_found[slots[k]]) prefetch_hit_indices(scene_, p.hit[slots[k]]);
+        for (std::size_t k = vertices_at; k < std::min(count, vertices_at + step); ++k)
+          if (p.hit_found[slots[k]]) prefetch_hit_vertices(scene_, p.hit[slots[k]]);
+      };
+      const auto width = static_cast<std::size_t>(lane_width_);
+      std::array<std::uint32_t, kGrain> in_lanes, alone;
+      for (std::size_t run = b; run < e; run += kGrain) {  // a tile's queue is one range
+        const std::size_t run_end = std::min(e, run + kGrain);
+        std::size_t in_lanes_count = 0, alone_count = 0;
+        for (std::size_t i = run; i < run_end; ++i) {
+          const std::uint32_t s = live[i];
+          const bool together = shades_in_lanes(p, s);
+          in_lanes[in_lanes_count] = s;
+          alone[alone_count] = s;
+          in_lanes_count += together;
+          alone_count += !together;
         }
-        waiting[waiting_count++] = s;
-        if (waiting_count == static_cast<std::size_t>(lane_width_)) {
+        std::size_t lane_shaded_count = 0;
+        for (; width > 0 && lane_shaded_count + width <= in_lanes_count; lane_shaded_count += width) {
+          if (prefetch_geometry_) prefetch_ahead(in_lanes.data(), lane_shaded_count, in_lanes_count, width);
 #if PRISM_FLOAT_LANES_AVX2
           if (lane_width_ == lanes::avx2::kWidth)
-            shade_plain_lanes_avx2(p, waiting.data());
+            shade_plain_lanes_avx2(p, in_lanes.data() + lane_shaded_count);
           else
 #endif
-            shade_plain_lanes(p, waiting.data());
-          lane_shaded_count += waiting_count;
-          waiting_count = 0;
+            shade_plain_lanes(p, in_lanes.data() + lane_shaded_count);
         }
-      };
-      if (!prefetch_geometry_) {
-        for (std::size_t i = b; i < e; ++i) shade_slot(live[i]);
-      } else {
-        constexpr std::size_t kIndicesAhead = 8, kVerticesAhead = 4;
-        for (std::size_t i = b; i < e; ++i) {
-          if (i + kIndicesAhead < e && p.hit_found[live[i + kIndicesAhead]])
-            prefetch_hit_indices(scene_, p.hit[live[i + kIndicesAhead]]);
-          if (i + kVerticesAhead < e && p.hit_found[live[i + kVerticesAhead]])
-            prefetch_hit_vertices(scene_, p.hit[live[i + kVerticesAhead]]);
-          shade_slot(live[i]);
+        for (std::size_t k = lane_shaded_count; k < in_lanes_count; ++k) shade(p, in_lanes[k]);
+        for (std::size_t k = 0; k < alone_count; ++k) {
+          if (prefetch_geometry_) prefetch_ahead(alone.data(), k, alone_count, 1);
+          shade(p, alone[k]);
         }
+        lane_shaded += lane_shaded_count;
       }
-      for (std::size_t k = 0; k < waiting_count; ++k) shade(p, waiting[k]);
-      lane_shaded += lane_shaded_count;
     });
     // Stages 3 and 4 in one walk over the queue, per chunk: the chunk's shadow rays (one
     // stream), then finished paths go to the film and their slot restarts with the pixel's
@@ -830,18 +848,23 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
         accel_.occluded_slots(p.shadow_ray.data(), live.data() + c * kGrain, end - c * kGrain,
                               p.shadow_pending.data(), p.shadow_blocked.data());
         std::size_t kept = c * kGrain;
+        // Without branches: whether a slot's shadow ray was traced and got through, and
+        // whether its path finished, are coin flips a predictor misses on (core/branch_free.h);
+        // each slot is written to every list and counted into those it belongs to.
         for (std::size_t i = c * kGrain; i < end; ++i) {
           const std::uint32_t s = live[i];
-          if (p.shadow_pending[s]) {
-            ++traced;
-            if (!p.shadow_blocked[s]) p.radiance[s] += p.shadow_contribution[s];
-          }
-          if (p.finished[s]) {
-            finished[finished_count++] = s;
-            if (!regenerate_ || p.sample_index[s] + 1 >= p.sample_end[s]) continue;
-            restarted[restarted_count++] = s;
-          }
-          live[kept++] = s;
+          const bool pending = p.shadow_pending[s] != 0;
+          traced += pending;
+          p.radiance[s] = select_bits(pending & (p.shadow_blocked[s] == 0), p.radiance[s] + p.shadow_contribution[s],
+                                      p.radiance[s]);
+          const bool finished_now = p.finished[s] != 0;
+          const bool restarts = finished_now & regenerate_ & (p.sample_index[s] + 1 < p.sample_end[s]);
+          finished[finished_count] = s;
+          finished_count += finished_now;
+          restarted[restarted_count] = s;
+          restarted_count += restarts;
+          live[kept] = s;
+          kept += !finished_now | restarts;
         }
         for (std::size_t k = 0; k < finished_count; ++k) {
           const std::uint32_t s = finished[k];

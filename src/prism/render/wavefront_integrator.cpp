@@ -418,8 +418,9 @@ bool WavefrontIntegrator<Mode>::shades_in_lanes(const Paths& p, std::uint32_t sl
   const bool found = p.hit_found[slot] != 0;
   const std::uint32_t mesh = found ? p.hit[slot].mesh : 0u;
   const std::int32_t depth = p.depth[slot];
-  return found & (lane_mesh_[mesh] != 0) & (p.inside_absorbing[slot] == 0) & (depth < settings_.max_depth) &
-         ((depth != 0) | p.first_hit_aovs.empty());
+  const auto bit = [](bool b) { return static_cast<unsigned>(b); };
+  return (bit(found) & bit(lane_mesh_[mesh] != 0) & bit(p.inside_absorbing[slot] == 0) &
+          bit(depth < settings_.max_depth) & (bit(depth != 0) | bit(p.first_hit_aovs.empty()))) != 0;
 }
 
 template <class Mode>

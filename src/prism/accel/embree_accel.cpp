@@ -173,7 +173,6 @@ void EmbreeAccel::intersect_slots(const Ray* rays, const std::uint32_t* slots, s
       const std::uint32_t s = slots[first + i];
       const RTCRayHit& rh = stream[i];
       found[s] = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-      if (!found[s]) continue;
       hits[s] = Hit{rh.ray.tfar, rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v};
     }
   }
@@ -187,11 +186,13 @@ void EmbreeAccel::occluded_slots(const Ray* rays, const std::uint32_t* slots, st
   std::size_t next = 0;
   while (next < count) {
     std::size_t n = 0;
+    // Every slot's ray is written, and counted in where it is pending: no branch on
+    // whether a path cast a shadow ray, a coin flip to the predictor.
     for (; next < count && n < kStreamRays; ++next) {
       const std::uint32_t s = slots[next];
-      if (!pending[s]) continue;
       fill_ray(rays[s], stream[n]);
-      stream_slots[n++] = s;
+      stream_slots[n] = s;
+      n += pending[s] != 0;
     }
     if (n == 0) break;
     rtcOccluded1M(impl_->scene, &context, stream, static_cast<unsigned>(n), sizeof(RTCRay));

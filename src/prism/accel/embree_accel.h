@@ -36,8 +36,10 @@ class EmbreeAccel {
   // The same queries over a queue: rays[slots[i]] for i < count, results stored at the
   // same slot (hits[slot], found[slot]; blocked[slot]). Traced as Embree ray streams
   // (rtcIntersect1M / rtcOccluded1M, RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT) of a few dozen
-  // rays: one call and one context per stream instead of per ray. occluded_slots skips
-  // slots whose `pending` flag is 0 and leaves their `blocked` entry alone.
+  // rays: one call and one context per stream instead of per ray. intersect_slots writes
+  // hits[slot] for a miss too, with meaningless values (found[slot] is 0): no branch on
+  // whether a ray hit, a coin flip to the predictor. occluded_slots skips slots whose
+  // `pending` flag is 0 and leaves their `blocked` entry alone.
   void intersect_slots(const Ray* rays, const std::uint32_t* slots, std::size_t count, Hit* hits,
                        std::uint8_t* found) const;
   void occluded_slots(const Ray* rays, const std::uint32_t* slots, std::size_t count, const std::uint8_t* pending,

@@ -767,26 +767,6 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
     // a few slots ahead prefetched (surface_interaction.h) where it is too big for the caches,
     // and the hits' bounce blocks drawn first where that is cheap (bounce_blocks_ahead_).
     for_range(parallel, live.size(), kGrain, [&](std::size_t b, std::size_t e) {
-      if (bounce_blocks_ahead_) {
-        std::array<BounceBlockRequest, 64> requests;
-        std::size_t n = 0;
-        for (std::size_t i = b; i < e; ++i) {
-          const std::uint32_t s = live[i];
-          requests[n] = {p.sobol_pixel_key[s], p.sample_index[s], p.depth[s], &p.bounce_block[s]};
-          n += p.hit_found[s] != 0;  // a miss, a coin flip too, is overwritten by the next slot
-          if (n == requests.size()) {
-            padded_sobol_bounce_blocks_lanes({requests.data(), n});
-            n = 0;
-          }
-        }
-        padded_sobol_bounce_blocks_lanes({requests.data(), n});
-      }
-      // The chunk's slots split without branches (whether a ray hit, and what, is a coin
-      // flip to a branch predictor): the hits that shades_in_lanes, shaded lane_width_ at a
-      // time, the last few alone; then every other slot alone. Each slot's bits are the
-      // same in any order. Where the geometry is too big for the caches, the hits a few
-      // slots ahead have their indices and then their vertices prefetched
-      // (surface_interaction.h).
       // Before shading slots[at … at + step): the indices of those twice as far on (at
       // least 8), the vertices of those as far on (at least 4).
       const auto prefetch_ahead = [&](const std::uint32_t* slots, std::size_t at, std::size_t count, std::size_t step) {
@@ -798,10 +778,15 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
           if (p.hit_found[slots[k]]) prefetch_hit_vertices(scene_, p.hit[slots[k]]);
       };
       const auto width = static_cast<std::size_t>(lane_width_);
+      // The chunk's slots split without branches (whether a ray hit, and what, is a coin
+      // flip to a branch predictor): the hits that shades_in_lanes, shaded lane_width_ at a
+      // time, the last few alone; then every other slot alone. Each slot's bits are the
+      // same in any order. The same walk collects the hits' bounce-block requests.
       std::array<std::uint32_t, kGrain> in_lanes, alone;
+      std::array<BounceBlockRequest, 64> requests;
       for (std::size_t run = b; run < e; run += kGrain) {  // a tile's queue is one range
         const std::size_t run_end = std::min(e, run + kGrain);
-        std::size_t in_lanes_count = 0, alone_count = 0;
+        std::size_t in_lanes_count = 0, alone_count = 0, requested = 0;
         for (std::size_t i = run; i < run_end; ++i) {
           const std::uint32_t s = live[i];
           const bool together = shades_in_lanes(p, s);
@@ -809,7 +794,15 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
           alone[alone_count] = s;
           in_lanes_count += together;
           alone_count += !together;
+          if (!bounce_blocks_ahead_) continue;  // the same for every slot
+          requests[requested] = {p.sobol_pixel_key[s], p.sample_index[s], p.depth[s], &p.bounce_block[s]};
+          requested += p.hit_found[s] != 0;  // a miss's request is overwritten by the next slot's
+          if (requested == requests.size()) {
+            padded_sobol_bounce_blocks_lanes({requests.data(), requested});
+            requested = 0;
+          }
         }
+        if (bounce_blocks_ahead_) padded_sobol_bounce_blocks_lanes({requests.data(), requested});
         std::size_t lane_shaded_count = 0;
         for (; width > 0 && lane_shaded_count + width <= in_lanes_count; lane_shaded_count += width) {
           if (prefetch_geometry_) prefetch_ahead(in_lanes.data(), lane_shaded_count, in_lanes_count, width);

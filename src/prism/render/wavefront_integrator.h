@@ -5,7 +5,10 @@
 // roulette), shadow rays, then completion. A finished path is regenerated at once with its
 // pixel's next sample, so the queue stays full and step times stay steady; queues are
 // compacted every step, so only live paths are traced. Hits on plain diffuse materials are
-// shaded several at a time, in SIMD lanes (shade_plain_lanes), to the same bits. The image
+// shaded several at a time, in SIMD lanes (shade_plain_lanes), to the same bits; the
+// stages' walks over the queue decide which list a slot joins (hit or miss, lanes or not,
+// shadow ray or not, finished or not) with masks and counts, not branches, since those
+// are coin flips to a branch predictor (BENCHMARKS.md "Session 34"). The image
 // is cut into tiles of kWavefrontTilePixels pixels, one queue each, and each thread runs
 // whole tiles: a tile's path state stays in cache across the stages (1.07× at 256²,
 // 1.13× at 512², one thread; BENCHMARKS.md "Session 6"). Only a pass that reports every

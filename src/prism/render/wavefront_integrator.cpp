@@ -310,10 +310,9 @@ template <class Mode>
 void WavefrontIntegrator<Mode>::generate(Paths& p, const std::uint32_t* slots, const std::uint32_t* sample_indices,
                                          std::size_t count) const {
   // In runs of kGenerateRun slots, one stage at a time for the whole run: the camera
-  // numbers, then the wavelengths, then the rays. Each stage is a loop of independent
-  // iterations, short dependency chains that the processor overlaps, where one slot's
-  // stages in a row were a single long chain (the sampler's hashes, then a division and a
-  // logarithm per wavelength); each slot's numbers are the same (BENCHMARKS.md "Session 34").
+  // numbers (two blocks per pass on AVX-512), then the wavelengths (two tuples per pass on
+  // AVX2), then the rays. Each slot's numbers are those it would get alone
+  // (BENCHMARKS.md "Session 34").
   constexpr std::size_t kGenerateRun = 32;
   const bool lens = camera_.has_lens();
   const auto width = static_cast<std::uint32_t>(width_);

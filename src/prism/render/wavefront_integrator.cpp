@@ -45,7 +45,7 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
   prefetch_geometry_ = geometry_bytes > (std::size_t{512} << 10);
   // Cheap only on the padded Sobol' lanes, which the shading loop then calls directly,
   // without bounce_samples' dispatch.
-  bounce_blocks_ahead_ = whole_bounce_blocks_are_cheap(settings_.sampler);
+  sobol_lanes_ = whole_bounce_blocks_are_cheap(settings_.sampler);
   use_nee_ = settings_.estimator != LightEstimator::bsdf_only && !lights_.empty();
   weight_bsdf_hits_ = settings_.estimator == LightEstimator::mis;
   if (mip_pyramids.size() != scene.textures.size())
@@ -321,7 +321,7 @@ void WavefrontIntegrator<Mode>::generate(Paths& p, const std::uint32_t* slots, c
     const std::size_t n = std::min(kGenerateRun, count - first);
     const std::uint32_t* run = slots + first;
     const std::uint32_t* run_samples = sample_indices + first;
-    if (bounce_blocks_ahead_) {  // the padded Sobol' sampler's lanes: whole runs at once
+    if (sobol_lanes_) {
       std::array<CameraBlockRequest, kGenerateRun> requests;
       for (std::size_t k = 0; k < n; ++k) requests[k] = {p.sobol_pixel_key[run[k]], run_samples[k], &u[k]};
       padded_sobol_camera_blocks_lanes({requests.data(), n}, lens);
@@ -667,7 +667,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
       for (std::uint32_t k = 0; k < n; ++k) {
         slots[k] = first + k;
         p.sample_end[first + k] = first_sample + count;
-        if (bounce_blocks_ahead_) p.sobol_pixel_key[first + k] = padded_sobol_pixel_key(seed_, p.first_pixel + first + k);
+        if (sobol_lanes_) p.sobol_pixel_key[first + k] = padded_sobol_pixel_key(seed_, p.first_pixel + first + k);
       }
       generate(p, slots.data(), samples.data(), n);
     }
@@ -764,7 +764,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
     });
     // Stage 2: shading emits continuation and shadow rays, with the geometry of the hits
     // a few slots ahead prefetched (surface_interaction.h) where it is too big for the caches,
-    // and the hits' bounce blocks drawn first where that is cheap (bounce_blocks_ahead_).
+    // and the hits' bounce blocks drawn first where that is cheap (sobol_lanes_).
     for_range(parallel, live.size(), kGrain, [&](std::size_t b, std::size_t e) {
       // Before shading slots[at … at + step): the indices of those twice as far on (at
       // least 8), the vertices of those as far on (at least 4).
@@ -793,7 +793,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
           alone[alone_count] = s;
           in_lanes_count += together;
           alone_count += !together;
-          if (!bounce_blocks_ahead_) continue;  // the same for every slot
+          if (!sobol_lanes_) continue;  // the same for every slot
           requests[requested] = {p.sobol_pixel_key[s], p.sample_index[s], p.depth[s], &p.bounce_block[s]};
           requested += p.hit_found[s] != 0;  // a miss's request is overwritten by the next slot's
           if (requested == requests.size()) {
@@ -801,7 +801,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
             requested = 0;
           }
         }
-        if (bounce_blocks_ahead_) padded_sobol_bounce_blocks_lanes({requests.data(), requested});
+        if (sobol_lanes_) padded_sobol_bounce_blocks_lanes({requests.data(), requested});
         std::size_t lane_shaded_count = 0;
         for (; width > 0 && lane_shaded_count + width <= in_lanes_count; lane_shaded_count += width) {
           if (prefetch_geometry_) prefetch_ahead(in_lanes.data(), lane_shaded_count, in_lanes_count, width);

@@ -177,7 +177,7 @@ class WavefrontIntegrator {
   // Microfacet normal mapping's two numbers for the slot's current bounce (pixel_sampler.h).
   Vec2f facet_numbers(const Paths& paths, std::uint32_t slot) const;
   // The numbers `needs` asks for of the slot's current bounce block: from the block drawn
-  // ahead of shading (Paths::bounce_block) where bounce_blocks_ahead_, else drawn now.
+  // ahead of shading (Paths::bounce_block) where sobol_lanes_, else drawn now.
   BounceSamples bounce_numbers(const Paths& paths, std::uint32_t slot, unsigned needs) const;
   // The sampler's key of the slot's current sample.
   PixelSample pixel_sample(const Paths& paths, std::uint32_t slot) const;
@@ -228,11 +228,13 @@ class WavefrontIntegrator {
   std::uint64_t seed_;
   bool regenerate_;
   bool prefetch_geometry_ = false;  // the meshes outgrow the caches: shading prefetches hits' vertices
-  // Every hit's bounce block is drawn whole for the queue before shading (Paths::bounce_block),
-  // where that is cheap (whole_bounce_blocks_are_cheap): the draws of a queue are
-  // independent of one another and overlap, where inside shade() they are a link in each
-  // path's chain of dependent work (BENCHMARKS.md "Session 28").
-  bool bounce_blocks_ahead_ = false;
+  // The padded Sobol' sampler runs on its lanes (whole_bounce_blocks_are_cheap), so its
+  // blocks are drawn in batches from each slot's pixel key (Paths::sobol_pixel_key): every
+  // hit's bounce block whole for the queue before shading (Paths::bounce_block), and the
+  // camera blocks of each run of new samples; two blocks at a time with AVX-512. The draws
+  // of a queue are independent of one another and overlap, where inside shade() they are a
+  // link in each path's chain of dependent work (BENCHMARKS.md "Session 28", "Session 34").
+  bool sobol_lanes_ = false;
   bool use_nee_ = false;           // light samples at non-specular vertices (not bsdf_only, and lights exist)
   bool weight_bsdf_hits_ = false;  // MIS: light samples and emitters found by BSDF sampling weighted against each other
   // Hits on lane_mesh_ meshes are shaded lane_width_ at a time: eight with AVX2

@@ -46,9 +46,9 @@ struct WavefrontIntegrator<Mode>::Paths {
   // The AOVs of each slot's current sample, written by shade() at depth 0 and added to the
   // film with the sample. Empty unless the film keeps AOVs.
   std::vector<AovSample> first_hit_aovs;
-  // Each hit's bounce block, drawn whole before shading where bounce_blocks_ahead_.
+  // Each hit's bounce block, drawn whole before shading where sobol_lanes_.
   std::vector<BounceSamples> bounce_block;
-  // padded_sobol_pixel_key of the slot's pixel, where bounce_blocks_ahead_ (set as a wave starts).
+  // padded_sobol_pixel_key of the slot's pixel, where sobol_lanes_ (set as a wave starts).
   std::vector<std::uint64_t> sobol_pixel_key;
   // The untextured emitter whose spectrum at the path's wavelengths is cached_emission
   // (untextured_emission); kNoCachedEmitter for none yet.
@@ -60,7 +60,7 @@ struct WavefrontIntegrator<Mode>::Paths {
 // lanes from their own translation unit.
 template <class Mode>
 BounceSamples WavefrontIntegrator<Mode>::bounce_numbers(const Paths& p, std::uint32_t slot, unsigned needs) const {
-  return bounce_blocks_ahead_ ? only_needed(p.bounce_block[slot], needs)
+  return sobol_lanes_ ? only_needed(p.bounce_block[slot], needs)
                               : bounce_samples(settings_.sampler, pixel_sample(p, slot), p.depth[slot], needs);
 }
 

@@ -65,6 +65,11 @@ inline __m256i reverse_bits_in_bytes(__m256i x) {
 #pragma GCC pop_options
 #pragma GCC push_options
 #pragma GCC target("avx2,avx512f,avx512dq,avx512vl,avx512bw,gfni")
+// GCC 12 takes the AVX-512 intrinsics' undefined pass-through operand
+// (_mm512_undefined_epi32, a self-initialised variable) for an uninitialised read once
+// they are inlined: a false -Wmaybe-uninitialized (GCC bug 105593, fixed in GCC 13).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
 namespace avx512 {
 
@@ -118,6 +123,35 @@ inline __m512i sobol_dimension1_reversed_pair(__m512i i) {
   i = superset_step_pair(i, 8, 0x00ff00ffu);
   return superset_step_pair(i, 16, 0x0000ffffu);
 }
+// Dimension offsets o0 … o3 times the dimension step, in both halves (request_hash_lanes'
+// offsets). A function of the region, not a lambda: a lambda does not take the region's
+// target, and would pass the register through memory.
+inline __m512i dimension_steps_pair(std::uint64_t o0, std::uint64_t o1, std::uint64_t o2, std::uint64_t o3) {
+  constexpr std::uint64_t kStep = kPaddedSobolDimensionStep;
+  const auto step = [](std::uint64_t o) { return static_cast<long long>(o * kStep); };
+  return _mm512_setr_epi64(step(o0), step(o1), step(o2), step(o3), step(o0), step(o1), step(o2), step(o3));
+}
+
+// scrambled_points (padded_sobol_lane_blocks.inc) of two blocks: sample index a's in the low
+// half, b's in the high, `dimension1` (one block's lanes) in each half.
+struct PairPoints {
+  alignas(64) float u[16];
+  alignas(64) std::uint32_t bits[16];
+};
+template <unsigned dimension1>
+PairPoints scrambled_points_pair(std::uint32_t a, std::uint32_t b, __m512i shuffle_seeds, __m512i scramble_seeds) {
+  const __m512i sample_index = _mm512_inserti32x8(_mm512_set1_epi32(static_cast<int>(a)),
+                                                  _mm256_set1_epi32(static_cast<int>(b)), 1);
+  const __m512i index = reverse_bits_pair(laine_karras_pair(reverse_bits_pair(sample_index), shuffle_seeds));
+  const __m512i point =
+      _mm512_mask_blend_epi32(dimension1 | dimension1 << 8, index, sobol_dimension1_reversed_pair(index));
+  const __m512i bits = reverse_bits_pair(laine_karras_pair(point, scramble_seeds));
+  PairPoints p;
+  _mm512_store_ps(p.u, _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_srli_epi32(bits, 8)), _mm512_set1_ps(0x1p-24f)));
+  _mm512_store_si512(p.bits, bits);
+  return p;
+}
+
 void bounce_block_pair(const BounceBlockRequest& a, const BounceBlockRequest& b) {
   constexpr std::uint64_t kStep = kPaddedSobolDimensionStep;
   const auto block_key = [](const BounceBlockRequest& r) {
@@ -127,14 +161,9 @@ void bounce_block_pair(const BounceBlockRequest& a, const BounceBlockRequest& b)
   const __m512i keys = halves_of(block_key(a), block_key(b));
   // request_hash_lanes' dimension offsets, times the step: first select 0, light 1, lobe 3,
   // direction 4; second roulette 6, light 1, direction 4, and a lane asked for nothing (0).
-  const auto steps = [](std::uint64_t o0, std::uint64_t o1, std::uint64_t o2, std::uint64_t o3) {
-    return _mm512_setr_epi64(static_cast<long long>(o0 * kStep), static_cast<long long>(o1 * kStep),
-                             static_cast<long long>(o2 * kStep), static_cast<long long>(o3 * kStep),
-                             static_cast<long long>(o0 * kStep), static_cast<long long>(o1 * kStep),
-                             static_cast<long long>(o2 * kStep), static_cast<long long>(o3 * kStep));
-  };
-  const __m512i first = mix64_pair(_mm512_add_epi64(keys, steps(0, 1, 3, 4)));
-  const __m512i second = _mm512_maskz_mov_epi64(0b01110111, mix64_pair(_mm512_add_epi64(keys, steps(6, 1, 4, 0))));
+  const __m512i first = mix64_pair(_mm512_add_epi64(keys, dimension_steps_pair(0, 1, 3, 4)));
+  const __m512i second =
+      _mm512_maskz_mov_epi64(0b01110111, mix64_pair(_mm512_add_epi64(keys, dimension_steps_pair(6, 1, 4, 0))));
   const __m512i second_axes = _mm512_mask_blend_epi32(0x3c3c, second, mix64_pair(second));
   // halves_lanes in each half: the low (shuffle) or high (scramble) 32 bits of first's four
   // 64-bit lanes, then of the other operand's four.
@@ -142,16 +171,9 @@ void bounce_block_pair(const BounceBlockRequest& a, const BounceBlockRequest& b)
   const __m512i high_halves = _mm512_add_epi32(low_halves, _mm512_set1_epi32(1));
   const __m512i shuffle_seeds = _mm512_permutex2var_epi32(first, low_halves, second);
   const __m512i scramble_seeds = _mm512_permutex2var_epi32(first, high_halves, second_axes);
-  // scrambled_points<0b1100000> of each half's sample index.
-  const __m512i sample_index = _mm512_inserti32x8(_mm512_set1_epi32(static_cast<int>(a.sample_index)),
-                                                  _mm256_set1_epi32(static_cast<int>(b.sample_index)), 1);
-  const __m512i index = reverse_bits_pair(laine_karras_pair(reverse_bits_pair(sample_index), shuffle_seeds));
-  const __m512i point = _mm512_mask_blend_epi32(0x6060, index, sobol_dimension1_reversed_pair(index));
-  const __m512i bits = reverse_bits_pair(laine_karras_pair(point, scramble_seeds));
-  alignas(64) float u[16];
-  _mm512_store_ps(u, _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_srli_epi32(bits, 8)), _mm512_set1_ps(0x1p-24f)));
+  const PairPoints p = scrambled_points_pair<0b1100000>(a.sample_index, b.sample_index, shuffle_seeds, scramble_seeds);
   for (int h = 0; h < 2; ++h) {
-    const float* v = u + 8 * h;
+    const float* v = p.u + 8 * h;
     BounceSamples& out = *(h == 0 ? a : b).out;
     out.light_select = v[0];
     out.light = {v[1], v[5]};
@@ -167,9 +189,7 @@ void camera_block_pair(const CameraBlockRequest& a, const CameraBlockRequest& b,
   constexpr std::uint64_t kStep = kPaddedSobolDimensionStep;
   static_assert(kPixelJitterDimension == 0 && kLensDimension == 2 && kWavelengthDimension == 4);
   // request_hash_lanes: jitter, lens, wavelength and a lane asked for nothing, in each half.
-  const __m512i offsets = _mm512_setr_epi64(0, static_cast<long long>(2 * kStep), static_cast<long long>(4 * kStep), 0, 0,
-                                            static_cast<long long>(2 * kStep), static_cast<long long>(4 * kStep), 0);
-  const __m512i keys = _mm512_add_epi64(halves_of(a.pixel_key + kStep, b.pixel_key + kStep), offsets);
+  const __m512i keys = _mm512_add_epi64(halves_of(a.pixel_key + kStep, b.pixel_key + kStep), dimension_steps_pair(0, 2, 4, 0));
   const __m512i hash = _mm512_maskz_mov_epi64(lens ? 0b01110111 : 0b01010101, mix64_pair(keys));
   const __m512i rehash = mix64_pair(hash);
   const __m512i shuffle_seeds =
@@ -177,21 +197,13 @@ void camera_block_pair(const CameraBlockRequest& a, const CameraBlockRequest& b,
   const __m512i scramble_seeds = _mm512_mask_blend_epi32(
       0x1818, _mm512_permutexvar_epi32(_mm512_setr_epi32(1, 3, 5, 7, 7, 7, 7, 7, 9, 11, 13, 15, 15, 15, 15, 15), hash),
       _mm512_permutexvar_epi32(_mm512_setr_epi32(7, 7, 7, 1, 3, 7, 7, 7, 15, 15, 15, 9, 11, 15, 15, 15), rehash));
-  const __m512i sample_index = _mm512_inserti32x8(_mm512_set1_epi32(static_cast<int>(a.sample_index)),
-                                                  _mm256_set1_epi32(static_cast<int>(b.sample_index)), 1);
-  const __m512i index = reverse_bits_pair(laine_karras_pair(reverse_bits_pair(sample_index), shuffle_seeds));
-  const __m512i point = _mm512_mask_blend_epi32(0x1818, index, sobol_dimension1_reversed_pair(index));
-  const __m512i bits = reverse_bits_pair(laine_karras_pair(point, scramble_seeds));
-  alignas(64) float u[16];
-  alignas(64) std::uint32_t raw[16];
-  _mm512_store_ps(u, _mm512_mul_ps(_mm512_cvtepi32_ps(_mm512_srli_epi32(bits, 8)), _mm512_set1_ps(0x1p-24f)));
-  _mm512_store_si512(raw, bits);
+  const PairPoints p = scrambled_points_pair<0b11000>(a.sample_index, b.sample_index, shuffle_seeds, scramble_seeds);
   for (int h = 0; h < 2; ++h) {
-    const float* v = u + 8 * h;
+    const float* v = p.u + 8 * h;
     CameraSamples& out = *(h == 0 ? a : b).out;
     out.pixel_jitter = {v[0], v[3]};
     out.lens = lens ? Vec2f(v[1], v[4]) : Vec2f(0.0f, 0.0f);
-    out.wavelength = raw[8 * h + 2] * 0x1p-32;  // all 32 bits
+    out.wavelength = p.bits[8 * h + 2] * 0x1p-32;  // all 32 bits
   }
 }
 
@@ -214,6 +226,7 @@ void bounce_blocks(std::span<const BounceBlockRequest> requests) {
 #if defined(__clang__)
 #pragma clang attribute pop
 #else
+#pragma GCC diagnostic pop
 #pragma GCC pop_options
 #endif
 

@@ -158,8 +158,9 @@ bool EmbreeAccel::occluded(const Ray& ray) const {
 }
 
 void EmbreeAccel::intersect_slots(const Ray* rays, const std::uint32_t* slots, std::size_t count, Hit* hits,
-                                  std::uint8_t* found) const {
+                                  std::uint8_t* found, RayCoherence coherence) const {
   RTCIntersectContext context = incoherent_context();
+  if (coherence == RayCoherence::coherent) context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
   alignas(64) RTCRayHit stream[kStreamRays];
   for (std::size_t first = 0; first < count; first += kStreamRays) {
     const std::size_t n = std::min(kStreamRays, count - first);

@@ -10,6 +10,18 @@
 
 namespace prism {
 
+// How a queue's rays relate, for Embree's ray streams. Incoherent: each ray traversed
+// alone. Coherent: Embree's packet traversal, for rays that start together and point
+// alike, such as camera rays of neighbouring pixels: about 0.4 × the time a ray on the
+// Cornell box's camera rays (bench/camera_rays_bench.cpp, BENCHMARKS.md "Session 35").
+// A packet computes each ray's hit with the single-ray arithmetic (ray_streams_test),
+// except where two triangles are hit at exactly the same distance (a shared edge, a
+// duplicated face): which of them it reports depends on the order it visits them in, and
+// so on the packet's other rays. The integrator traces every queue incoherently for that
+// reason: its images are bitwise independent of which paths share a queue
+// (wavefront_integrator.h, "Determinism").
+enum class RayCoherence { incoherent, coherent };
+
 struct Hit {
   float t = 0.0f;
   std::uint32_t mesh = 0;      // index into Scene::meshes
@@ -41,7 +53,7 @@ class EmbreeAccel {
   // whether a ray hit, a coin flip to the predictor. occluded_slots skips slots whose
   // `pending` flag is 0 and leaves their `blocked` entry alone.
   void intersect_slots(const Ray* rays, const std::uint32_t* slots, std::size_t count, Hit* hits,
-                       std::uint8_t* found) const;
+                       std::uint8_t* found, RayCoherence coherence = RayCoherence::incoherent) const;
   void occluded_slots(const Ray* rays, const std::uint32_t* slots, std::size_t count, const std::uint8_t* pending,
                       std::uint8_t* blocked) const;
 

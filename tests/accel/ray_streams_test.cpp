@@ -91,6 +91,7 @@ void expect_one_ray_hits(const EmbreeAccel& accel, const std::vector<Ray>& rays,
     if (!expected_found) continue;
     ++hit_count;
     EXPECT_TRUE(same_bits(hits[s].t, expected.t)) << "slot " << s;
+    EXPECT_EQ(hits[s].mesh, expected.mesh) << "slot " << s;
     EXPECT_EQ(hits[s].triangle, expected.triangle) << "slot " << s;
     EXPECT_TRUE(same_bits(hits[s].u, expected.u) && same_bits(hits[s].v, expected.v)) << "slot " << s;
   }

@@ -52,11 +52,11 @@ inline float sigmoid_jakob_hanika_float(float x) {
 // operator() (jakob_hanika_test).
 // Always inlined: called, a std::array<float, 4> comes back in two registers of 8 bytes
 // each (the x86-64 System V ABI's SSE eightbytes), which GCC 12 stored to the stack apart
-// and read back as one 16-byte load, a load the store buffer cannot forward (~1.5 % of
-// the Cornell box's render time in untextured_emission alone; BENCHMARKS.md "Session 35").
+// and read back as one 16-byte load, a load the store buffer cannot forward (37 % of
+// untextured_emission's samples on the Cornell box; BENCHMARKS.md "Session 35").
 template <std::size_t N>
-[[gnu::always_inline]] inline std::array<float, N> evaluate_sigmoid_polynomial(const SigmoidPolynomial& c, const std::array<float, N>& wavelength_nm,
-                                                 float scale = 1.0f) {
+[[gnu::always_inline]] inline std::array<float, N> evaluate_sigmoid_polynomial(
+    const SigmoidPolynomial& c, const std::array<float, N>& wavelength_nm, float scale = 1.0f) {
   constexpr std::size_t kPadded = (N + 3) / 4 * 4;
   alignas(16) std::array<float, kPadded> x{};
   for (std::size_t i = 0; i < N; ++i) {

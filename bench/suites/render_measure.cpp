@@ -19,6 +19,7 @@ RenderMeasurement measure(const RenderResult& result) {
     m.rays_per_second = rays / m.render_seconds;
   }
   m.rays_per_sample = samples > 0 ? rays / samples : 0.0;
+  m.camera_packet_rays_per_sample = samples > 0 ? static_cast<double>(result.camera_packet_rays) / samples : 0.0;
   return m;
 }
 

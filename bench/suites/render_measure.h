@@ -16,6 +16,7 @@ struct RenderMeasurement {
   double samples_per_second = 0;  // pixel samples
   double rays_per_second = 0;     // closest-hit + shadow rays
   double rays_per_sample = 0;
+  double camera_packet_rays_per_sample = 0;  // traced in camera packets (RenderResult::camera_packet_rays)
   std::uint64_t rays = 0, shadow_rays = 0;
 };
 

@@ -45,7 +45,7 @@ SuiteReport run_limit_suite(const BenchOptions& o) {
                   "round(s)",
                   size, spp, repeat),
       {"mode", "threads", "raw closest Mrays/s 1-ray", "raw closest Mrays/s streams", "raw shadow Mrays/s 1-ray",
-       "raw shadow Mrays/s streams", "renderer Mrays/s", "rays/sample", "shadow fraction", "efficiency vs closest",
+       "raw shadow Mrays/s streams", "renderer Mrays/s", "rays/sample", "camera packet rays/sample", "shadow fraction", "efficiency vs closest",
        "efficiency range", "efficiency vs mixed"});
   nlohmann::json series = nlohmann::json::array();
   const std::vector<int> thread_counts = all > 1 ? std::vector<int>{1, all} : std::vector<int>{1};
@@ -82,7 +82,7 @@ SuiteReport run_limit_suite(const BenchOptions& o) {
       const auto [lowest, highest] = std::minmax_element(efficiency[k].begin(), efficiency[k].end());
       t.add_row({transport_label(settings), threads, median(closest_one) * 1e-6, median(closest_streams) * 1e-6,
                  median(shadow_one) * 1e-6, median(shadow_streams) * 1e-6, median(renderer_rates) * 1e-6,
-                 m.rays_per_sample, shadow_fraction, median(efficiency[k]),
+                 m.rays_per_sample, m.camera_packet_rays_per_sample, shadow_fraction, median(efficiency[k]),
                  fmt::format("{:.3f}-{:.3f}", *lowest, *highest), median(efficiency_mixed[k])});
       series.push_back({{"mode", transport_label(settings)}, {"threads", threads}, {"rounds", repeat},
                         {"raw_closest_rays_per_s", closest}, {"raw_shadow_rays_per_s", shadow},
@@ -91,6 +91,7 @@ SuiteReport run_limit_suite(const BenchOptions& o) {
                         {"raw_shadow_one_ray_per_call_rays_per_s", median(shadow_one)},
                         {"raw_shadow_streams_rays_per_s", median(shadow_streams)},
                         {"renderer_rays_per_s", median(renderer_rates)},
+                        {"camera_packet_rays_per_sample", m.camera_packet_rays_per_sample},
                         {"efficiency_vs_closest", median(efficiency[k])},
                         {"efficiency_vs_mixed", median(efficiency_mixed[k])},
                         {"efficiency_vs_closest_per_round", efficiency[k]},

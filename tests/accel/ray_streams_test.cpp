@@ -2,6 +2,7 @@
 // streams) against the one-ray queries they replace in the integrator: the same hits and
 // the same occlusion answers for every ray, stored at the ray's own slot, whatever the
 // queue's order and length. The integrator's bitwise-determinism claim rests on this.
+#include <array>
 #include <cstdint>
 #include <cstring>
 #include <numeric>
@@ -79,6 +80,18 @@ TEST(RayStreams, ClosestHitsMatchOneRayQueriesSlotBySlot) {
 }
 
 // Closest hits of a queue traced as `coherence` says, against one-ray queries, bit for bit.
+// The camera rays of a 64 × 48 image, jittered in their pixels, in pixel order.
+std::vector<Ray> jittered_camera_rays(const Scene& scene, Pcg32& rng) {
+  const int width = 64, height = 48;
+  const PinholeCamera camera(scene.camera, width, height);
+  std::vector<Ray> rays;
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      rays.push_back(camera.generate_ray(static_cast<float>(x) + rng.next_float(),
+                                         static_cast<float>(y) + rng.next_float()));
+  return rays;
+}
+
 void expect_one_ray_hits(const EmbreeAccel& accel, const std::vector<Ray>& rays, const std::vector<std::uint32_t>& queue,
                          RayCoherence coherence, std::size_t& hit_count) {
   std::vector<Hit> hits(rays.size());
@@ -103,14 +116,8 @@ void expect_one_ray_hits(const EmbreeAccel& accel, const std::vector<Ray>& rays,
 TEST(RayStreams, CoherentStreamsGiveTheOneRayHits) {
   const Scene scene = make_cornell_box();
   const EmbreeAccel accel(scene);
-  const int width = 64, height = 48;
-  const PinholeCamera camera(scene.camera, width, height);
   Pcg32 rng(5, 9);
-  std::vector<Ray> camera_rays;
-  for (int y = 0; y < height; ++y)
-    for (int x = 0; x < width; ++x)
-      camera_rays.push_back(camera.generate_ray(static_cast<float>(x) + rng.next_float(),
-                                                static_cast<float>(y) + rng.next_float()));
+  const std::vector<Ray> camera_rays = jittered_camera_rays(scene, rng);
   std::vector<std::uint32_t> every(camera_rays.size()), sparse;
   std::iota(every.begin(), every.end(), 0u);
   for (std::uint32_t s = 0; s < camera_rays.size(); ++s)
@@ -125,6 +132,48 @@ TEST(RayStreams, CoherentStreamsGiveTheOneRayHits) {
   EXPECT_GT(camera_hits, (every.size() + sparse.size()) / 2);
   EXPECT_LT(camera_hits, every.size() + sparse.size());
   EXPECT_GT(random_hits, 1000u);
+}
+
+// Fixed packets (EmbreeAccel::intersect_packet, the integrator's camera packets): each
+// lane's hit is the one-ray hit, with every lane traced and with a partial packet (the
+// image's last block), on camera rays of neighbouring pixels and on random rays; lanes
+// left out are not traced.
+TEST(RayStreams, PacketsGiveTheOneRayHitsInEveryLane) {
+  const Scene scene = make_cornell_box();
+  const EmbreeAccel accel(scene);
+  Pcg32 rng(7, 3);
+  std::vector<Ray> rays = jittered_camera_rays(scene, rng);
+  const std::vector<Ray> random = random_rays(1024);
+  rays.insert(rays.end(), random.begin(), random.end());
+  constexpr std::size_t kLanes = EmbreeAccel::kPacketRays;
+  std::size_t hits_seen = 0, misses_seen = 0, packets = 0;
+  for (std::size_t first = 0; first + kLanes <= rays.size(); first += kLanes, ++packets) {
+    const unsigned lanes = packets % 5 == 4 ? 0x1fu : 0xffu;  // every fifth packet: five lanes
+    std::array<Hit, kLanes> hits;
+    std::array<std::uint8_t, kLanes> found;
+    found.fill(2);
+    accel.intersect_packet(rays.data() + first, lanes, hits.data(), found.data());
+    for (std::size_t i = 0; i < kLanes; ++i) {
+      if (!((lanes >> i) & 1u)) {
+        EXPECT_EQ(found[i], 0) << "a lane left out reports no hit";
+        continue;
+      }
+      Hit expected;
+      const bool expected_found = accel.intersect(rays[first + i], expected);
+      ASSERT_EQ(found[i], expected_found ? 1 : 0) << "ray " << first + i;
+      if (!expected_found) {
+        ++misses_seen;
+        continue;
+      }
+      ++hits_seen;
+      EXPECT_TRUE(same_bits(hits[i].t, expected.t)) << "ray " << first + i;
+      EXPECT_EQ(hits[i].mesh, expected.mesh) << "ray " << first + i;
+      EXPECT_EQ(hits[i].triangle, expected.triangle) << "ray " << first + i;
+      EXPECT_TRUE(same_bits(hits[i].u, expected.u) && same_bits(hits[i].v, expected.v)) << "ray " << first + i;
+    }
+  }
+  EXPECT_GT(hits_seen, 2000u);
+  EXPECT_GT(misses_seen, 10u);
 }
 
 TEST(RayStreams, OcclusionMatchesOneRayQueriesForPendingSlotsOnly) {

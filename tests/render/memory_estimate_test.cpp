@@ -20,22 +20,26 @@ constexpr std::uint64_t kGiB = 1ull << 30;
 TEST(MemoryEstimate, FilmScalesWithPixelsAndPathPoolWithThreads) {
   const Scene scene = make_cornell_box();
   RenderSettings s;
-  s.width = 100;
-  s.height = 50;  // 5000 pixels: two tiles of the wavefront integrator
+  s.width = 64;
+  s.height = static_cast<int>(2 * kWavefrontTilePixels / 64 - 8);  // two tiles of the wavefront integrator
+  const std::uint64_t pixels = static_cast<std::uint64_t>(s.width) * static_cast<std::uint64_t>(s.height);
   s.threads = 1;
   const MemoryEstimate e = estimate_render_memory(scene, s);
-  EXPECT_EQ(e.film, 5000u * (2 * 24 + 4));
-  // One tile's path state per thread that runs tiles: no more threads than tiles.
-  EXPECT_EQ(e.path_pool, kWavefrontTilePixels * kPathPoolBytesPerSlot);
+  EXPECT_EQ(e.film, pixels * (2 * 24 + 4));
+  // One tile's path state per thread that runs tiles, camera packets included: no more
+  // threads than tiles.
+  const std::uint64_t tile_slot = kPathPoolBytesPerSlot + camera_packet_bytes_per_slot(kTileCameraPacketsPerBlock);
+  EXPECT_EQ(e.path_pool, kWavefrontTilePixels * tile_slot);
   s.threads = 3;
-  EXPECT_EQ(estimate_render_memory(scene, s).path_pool, 2 * kWavefrontTilePixels * kPathPoolBytesPerSlot);
+  EXPECT_EQ(estimate_render_memory(scene, s).path_pool, 2 * kWavefrontTilePixels * tile_slot);
   s.width = s.height = 4000;
   s.threads = 2;
-  EXPECT_EQ(estimate_render_memory(scene, s).path_pool, 2 * kWavefrontTilePixels * kPathPoolBytesPerSlot)
+  EXPECT_EQ(estimate_render_memory(scene, s).path_pool, 2 * kWavefrontTilePixels * tile_slot)
       << "the path state must not grow with the image";
   // Passes that report every few bounces keep one whole-image queue: a slot per pixel.
   s.bounces_per_pass = 1;
-  EXPECT_EQ(estimate_render_memory(scene, s).path_pool, 4000u * 4000u * kPathPoolBytesPerSlot);
+  EXPECT_EQ(estimate_render_memory(scene, s).path_pool,
+            4000u * 4000u * (kPathPoolBytesPerSlot + camera_packet_bytes_per_slot(kWholeImageCameraPacketsPerBlock)));
   s.bounces_per_pass = 0;
   s.width = 100;
   s.height = 50;

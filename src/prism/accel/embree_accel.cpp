@@ -179,6 +179,38 @@ void EmbreeAccel::intersect_slots(const Ray* rays, const std::uint32_t* slots, s
   }
 }
 
+void EmbreeAccel::intersect_packet(const Ray* rays, unsigned lanes, Hit* hits, std::uint8_t* found) const {
+  static_assert(kPacketRays == 8, "rtcIntersect8");
+  RTCIntersectContext context;
+  rtcInitIntersectContext(&context);
+  context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+  alignas(32) RTCRayHit8 packet;
+  alignas(32) int valid[kPacketRays];
+  for (std::size_t i = 0; i < kPacketRays; ++i) {
+    const Ray& ray = rays[i];
+    valid[i] = (lanes >> i) & 1u ? -1 : 0;
+    packet.ray.org_x[i] = ray.origin.x;
+    packet.ray.org_y[i] = ray.origin.y;
+    packet.ray.org_z[i] = ray.origin.z;
+    packet.ray.dir_x[i] = ray.direction.x;
+    packet.ray.dir_y[i] = ray.direction.y;
+    packet.ray.dir_z[i] = ray.direction.z;
+    packet.ray.tnear[i] = ray.t_min;
+    packet.ray.tfar[i] = ray.t_max;
+    packet.ray.time[i] = 0.0f;
+    packet.ray.mask[i] = std::numeric_limits<unsigned>::max();
+    packet.ray.id[i] = 0;
+    packet.ray.flags[i] = 0;
+    packet.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+    packet.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+  }
+  rtcIntersect8(valid, impl_->scene, &context, &packet);
+  for (std::size_t i = 0; i < kPacketRays; ++i) {
+    found[i] = packet.hit.geomID[i] != RTC_INVALID_GEOMETRY_ID;
+    hits[i] = Hit{packet.ray.tfar[i], packet.hit.geomID[i], packet.hit.primID[i], packet.hit.u[i], packet.hit.v[i]};
+  }
+}
+
 void EmbreeAccel::occluded_slots(const Ray* rays, const std::uint32_t* slots, std::size_t count,
                                  const std::uint8_t* pending, std::uint8_t* blocked) const {
   RTCIntersectContext context = incoherent_context();

@@ -17,9 +17,10 @@ namespace prism {
 // A packet computes each ray's hit with the single-ray arithmetic (ray_streams_test),
 // except where two triangles are hit at exactly the same distance (a shared edge, a
 // duplicated face): which of them it reports depends on the order it visits them in, and
-// so on the packet's other rays. The integrator traces every queue incoherently for that
-// reason: its images are bitwise independent of which paths share a queue
-// (wavefront_integrator.h, "Determinism").
+// so on the packet's other rays. The integrator's queues are traced incoherently for that
+// reason, and its camera rays in packets that never change (intersect_packet,
+// render/camera_packet_cache.h): its images are bitwise independent of which paths share
+// a queue (wavefront_integrator.h, "Determinism").
 enum class RayCoherence { incoherent, coherent };
 
 struct Hit {
@@ -56,6 +57,14 @@ class EmbreeAccel {
                        std::uint8_t* found, RayCoherence coherence = RayCoherence::incoherent) const;
   void occluded_slots(const Ray* rays, const std::uint32_t* slots, std::size_t count, const std::uint8_t* pending,
                       std::uint8_t* blocked) const;
+  // The closest hits of rays[0 … 8) traced together as one Embree packet (rtcIntersect8,
+  // coherent), lane i where bit i of `lanes` is set; hits[i] and found[i] as in
+  // intersect_slots, for every lane (an unset lane reports no hit). A packet's hits
+  // depend only on its own rays and lanes (see RayCoherence for why they depend on its
+  // other rays at all): callers that must be deterministic always trace the same rays
+  // together.
+  static constexpr std::size_t kPacketRays = 8;
+  void intersect_packet(const Ray* rays, unsigned lanes, Hit* hits, std::uint8_t* found) const;
 
  private:
   struct Impl;

@@ -44,7 +44,10 @@ MemoryEstimate estimate_render_memory(const Scene& scene, const RenderSettings& 
   const std::uint64_t aov_channels =
       (a.albedo ? 3 : 0) + (a.normal ? 3 : 0) + (a.depth ? 2 : 0) + (a.variance ? 3 : 0);  // Z + coverage
   e.film = pixels * (kFilmBytesPerPixel + aov_film);
-  e.path_pool = path_slots(settings, pixels) * (kPathPoolBytesPerSlot + (a.first_hit() ? kAovBytesPerSlot : 0));
+  const std::size_t camera_packets =
+      settings.bounces_per_pass > 0 ? kWholeImageCameraPacketsPerBlock : kTileCameraPacketsPerBlock;
+  e.path_pool = path_slots(settings, pixels) * (kPathPoolBytesPerSlot + camera_packet_bytes_per_slot(camera_packets) +
+                                                (a.first_hit() ? kAovBytesPerSlot : 0));
   e.images = pixels * (kImageBytesPerPixel + aov_channels * kAovImageBytesPerChannel);
 
   // The loaded texels, the prepared scene's copy of them unless the scene is handed over,

@@ -298,6 +298,7 @@ void render_passes(const PreparedScene& prepared, const RenderSettings& settings
     result.rays += stats.rays;
     result.shadow_rays += stats.shadow_rays;
     result.lane_shaded_hits += stats.lane_shaded_hits;
+    result.camera_packet_rays += stats.camera_packet_rays;
     result.invalid_samples += stats.invalid_samples;
     next_sample += count;
     if (settings.samples_per_pass == 0) {

@@ -65,6 +65,9 @@ struct RenderResult {
   std::uint64_t invalid_samples = 0;  // NaN/Inf radiance discarded, never written to the film
   std::uint64_t rays = 0, shadow_rays = 0;
   std::uint64_t lane_shaded_hits = 0;  // of the closest hits, those shaded several at a time
+  // Rays traced in camera packets (PassStatistics::camera_packet_rays): the camera rays
+  // among `rays` come from these, which include the packets' lanes traced more than once.
+  std::uint64_t camera_packet_rays = 0;
   std::vector<double> pass_seconds;
   std::vector<int> pass_samples;
   // Per pass: live paths at each wavefront step (PassStatistics::live_paths_per_step),

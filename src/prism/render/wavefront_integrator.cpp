@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <thread>
 
 #include "prism/bsdf/plain_diffuse_bsdf.h"
 #include "prism/core/branch_free.h"
@@ -306,40 +308,132 @@ Vec2f WavefrontIntegrator<Mode>::facet_numbers(const Paths& p, std::uint32_t slo
                    kFirstFacetDimension + 2 * static_cast<std::uint32_t>(p.depth[slot]));
 }
 
+namespace {
+
+// Holds a block's lock where the path state has them (the whole-image queue, whose
+// threads start paths of the same block at once); nothing otherwise.
+class BlockLock {
+ public:
+  explicit BlockLock(std::atomic<std::uint8_t>* lock) : lock_(lock) {
+    if (!lock_) return;
+    while (lock_->exchange(1, std::memory_order_acquire) != 0)
+      while (lock_->load(std::memory_order_relaxed) != 0) std::this_thread::yield();
+  }
+  ~BlockLock() {
+    if (lock_) lock_->store(0, std::memory_order_release);
+  }
+  BlockLock(const BlockLock&) = delete;
+  BlockLock& operator=(const BlockLock&) = delete;
+
+ private:
+  std::atomic<std::uint8_t>* lock_;
+};
+
+}  // namespace
+
+template <class Mode>
+std::size_t WavefrontIntegrator<Mode>::trace_camera_packet(Paths& p, std::size_t block, std::uint32_t sample,
+                                                           std::uint32_t slot, PacketNumbers& u) const {
+  constexpr std::size_t kLanes = CameraPacketCache::kLanes;
+  const auto width = static_cast<std::uint32_t>(width_);
+  const std::uint64_t pixels = std::uint64_t{width} * static_cast<std::uint32_t>(height_);
+  const auto first_slot = static_cast<std::uint32_t>(block * kLanes);
+  // The lanes are the block's pixels inside the image, whichever of them need the packet
+  // now: the packet is always the same. It waits for the other lanes that have not
+  // reached this sample, and will.
+  unsigned lanes = 0;
+  std::uint8_t waiting = 0;
+  for (std::uint32_t i = 0; i < kLanes; ++i) {
+    const std::uint32_t s = first_slot + i;
+    if (s >= p.capacity() || p.first_pixel + std::uint64_t{s} >= pixels) break;
+    lanes |= 1u << i;
+    if (s != slot && p.camera_next_sample[s] <= sample && sample < p.sample_end[s]) waiting |= std::uint8_t(1u << i);
+  }
+  const std::size_t at = p.camera_packets.claim(block, sample, waiting);
+  CameraPacketCache::Packet& packet = p.camera_packets.packet(at);
+  const auto count = static_cast<unsigned>(std::popcount(lanes));  // the lanes are a prefix
+  const bool lens = camera_.has_lens();
+  if (sobol_lanes_) {
+    std::array<CameraBlockRequest, kLanes> requests;
+    for (std::uint32_t i = 0; i < count; ++i)
+      requests[i] = {padded_sobol_pixel_key(seed_, p.first_pixel + first_slot + i), sample, &u[i]};
+    padded_sobol_camera_blocks_lanes({requests.data(), count}, lens);
+  } else {
+    for (std::uint32_t i = 0; i < count; ++i)
+      u[i] = camera_samples(settings_.sampler, PixelSample{seed_, p.first_pixel + first_slot + i, width, sample}, lens);
+  }
+  std::array<Ray, kLanes> rays;
+  for (std::uint32_t i = 0; i < kLanes; ++i) {
+    const std::uint32_t lane = i < count ? i : 0;  // unused lanes: a copy of lane 0
+    const std::uint32_t pixel = p.first_pixel + first_slot + lane;
+    // Stored a float at a time, as the store buffer can forward (core/ray.h).
+    store_ray(rays[i], camera_.generate_ray(static_cast<float>(pixel % width) + u[lane].pixel_jitter.x,
+                                            static_cast<float>(pixel / width) + u[lane].pixel_jitter.y, u[lane].lens));
+  }
+  std::array<Hit, kLanes> hits;
+  std::array<std::uint8_t, kLanes> found;
+  accel_.intersect_packet(rays.data(), lanes, hits.data(), found.data());
+  for (std::uint32_t i = 0; i < count; ++i) {
+    CameraPacketCache::Lane& lane = packet.lanes[i];
+    store_ray(lane.ray, rays[i]);
+    lane.hit = hits[i];
+    lane.found = found[i];
+    lane.wavelength = u[i].wavelength;
+  }
+  if (p.block_locks)
+    p.camera_packet_rays.fetch_add(count, std::memory_order_relaxed);
+  else  // one thread: no locked add
+    p.camera_packet_rays.store(p.camera_packet_rays.load(std::memory_order_relaxed) + count, std::memory_order_relaxed);
+  return at;
+}
+
+template <class Mode>
+void WavefrontIntegrator<Mode>::take_camera_lane(Paths& p, std::uint32_t slot, std::uint32_t sample,
+                                                 double& wavelength_number, PacketNumbers& numbers) const {
+  const std::size_t block = slot / CameraPacketCache::kLanes;
+  const BlockLock lock(p.block_locks ? &p.block_locks[block] : nullptr);
+  const std::ptrdiff_t held = p.camera_packets.find(block, sample);
+  const std::size_t at = held >= 0 ? static_cast<std::size_t>(held) : trace_camera_packet(p, block, sample, slot, numbers);
+  const CameraPacketCache::Lane& lane = p.camera_packets.packet(at).lanes[slot % CameraPacketCache::kLanes];
+  store_ray(p.ray[slot], lane.ray);
+  p.hit[slot] = lane.hit;
+  p.hit_found[slot] = static_cast<std::uint8_t>(lane.found);
+  wavelength_number = lane.wavelength;
+  p.camera_packets.take(at, slot % CameraPacketCache::kLanes);
+  p.camera_next_sample[slot] = sample + 1;
+}
+
 template <class Mode>
 void WavefrontIntegrator<Mode>::generate(Paths& p, const std::uint32_t* slots, const std::uint32_t* sample_indices,
                                          std::size_t count) const {
-  // In runs of kGenerateRun slots, one stage at a time for the whole run: the camera
-  // numbers (two blocks per pass on AVX-512), then the wavelengths (two tuples per pass on
-  // AVX2), then the rays. Each slot's numbers are those it would get alone
-  // (BENCHMARKS.md "Session 34").
+  // In runs of kGenerateRun slots, one stage at a time for the whole run: the camera rays,
+  // their hits and wavelength numbers (from the blocks' camera packets, traced where not
+  // held), then the wavelengths (two tuples per pass on AVX2), then the path state. Each
+  // slot's numbers are those it would get alone (BENCHMARKS.md "Session 34").
   constexpr std::size_t kGenerateRun = 32;
-  const bool lens = camera_.has_lens();
-  const auto width = static_cast<std::uint32_t>(width_);
-  std::array<CameraSamples, kGenerateRun> u;
+  std::array<double, kGenerateRun> wavelength_numbers;
+  PacketNumbers numbers;
   for (std::size_t first = 0; first < count; first += kGenerateRun) {
     const std::size_t n = std::min(kGenerateRun, count - first);
     const std::uint32_t* run = slots + first;
     const std::uint32_t* run_samples = sample_indices + first;
-    if (sobol_lanes_) {
-      std::array<CameraBlockRequest, kGenerateRun> requests;
-      for (std::size_t k = 0; k < n; ++k) requests[k] = {p.sobol_pixel_key[run[k]], run_samples[k], &u[k]};
-      padded_sobol_camera_blocks_lanes({requests.data(), n}, lens);
-    } else {
-      for (std::size_t k = 0; k < n; ++k)
-        u[k] = camera_samples(settings_.sampler, PixelSample{seed_, p.first_pixel + run[k], width, run_samples[k]}, lens);
+    // The lanes of packets traced steps ago are seldom in the caches any more: fetched
+    // for the whole run before the first is read (a packet traced on the way is fetched
+    // by its tracing). Not in a shared path state, whose blocks are read under their locks.
+    for (std::size_t k = 0; k < n && !p.block_locks; ++k) {
+      const std::ptrdiff_t held = p.camera_packets.find(run[k] / CameraPacketCache::kLanes, run_samples[k]);
+      if (held >= 0)
+        __builtin_prefetch(&p.camera_packets.packet(static_cast<std::size_t>(held)).lanes[run[k] % CameraPacketCache::kLanes]);
     }
+    for (std::size_t k = 0; k < n; ++k) take_camera_lane(p, run[k], run_samples[k], wavelength_numbers[k], numbers);
     std::size_t k = 0;
     for (; k + 1 < n; k += 2)
-      colors_.sample_wavelength_pair({run_samples[k], run_samples[k + 1]}, {u[k].wavelength, u[k + 1].wavelength},
-                                     p.wavelengths[run[k]], p.wavelengths[run[k + 1]]);
-    if (k < n) p.wavelengths[run[k]] = colors_.sample_wavelengths(run_samples[k], u[k].wavelength);
+      colors_.sample_wavelength_pair({run_samples[k], run_samples[k + 1]},
+                                     {wavelength_numbers[k], wavelength_numbers[k + 1]}, p.wavelengths[run[k]],
+                                     p.wavelengths[run[k + 1]]);
+    if (k < n) p.wavelengths[run[k]] = colors_.sample_wavelengths(run_samples[k], wavelength_numbers[k]);
     for (std::size_t k = 0; k < n; ++k) {
       const std::uint32_t slot = run[k];
-      const std::uint32_t pixel = p.first_pixel + slot;
-      const std::uint32_t x = pixel % width, y = pixel / width;
-      p.ray[slot] = camera_.generate_ray(static_cast<float>(x) + u[k].pixel_jitter.x,
-                                         static_cast<float>(y) + u[k].pixel_jitter.y, u[k].lens);
       p.throughput[slot] = Spectrum<Mode>(1.0f);
       p.radiance[slot] = Spectrum<Mode>(0.0f);
       p.depth[slot] = 0;
@@ -657,18 +751,24 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
                                                    int bounces_per_pass, const std::function<void()>* after_bounces) {
   const auto pixels = static_cast<std::uint32_t>(film.pixel_count());
   const bool aovs = film.aovs().first_hit();
-  // Slots [begin, end) of `p` start pixels p.first_pixel + begin … with sample first_sample.
+  // Slots [begin, end) of `p` are to render samples [first_sample, first_sample + count)
+  // of pixels p.first_pixel + begin …: set_up, then start with the first one. Every slot
+  // of a block is set up before any starts (a camera packet waits for the lanes that will
+  // take it).
+  const auto set_up = [&](Paths& p, std::uint32_t begin, std::uint32_t end) {
+    for (std::uint32_t s = begin; s < end; ++s) {
+      p.sample_end[s] = first_sample + count;
+      p.camera_next_sample[s] = first_sample;
+      if (sobol_lanes_) p.sobol_pixel_key[s] = padded_sobol_pixel_key(seed_, p.first_pixel + s);
+    }
+  };
   const auto start = [&](Paths& p, std::uint32_t begin, std::uint32_t end) {
     constexpr std::uint32_t kRun = 256;
     std::array<std::uint32_t, kRun> slots, samples;
     samples.fill(first_sample);
     for (std::uint32_t first = begin; first < end; first += kRun) {
       const std::uint32_t n = std::min(kRun, end - first);
-      for (std::uint32_t k = 0; k < n; ++k) {
-        slots[k] = first + k;
-        p.sample_end[first + k] = first_sample + count;
-        if (sobol_lanes_) p.sobol_pixel_key[first + k] = padded_sobol_pixel_key(seed_, p.first_pixel + first + k);
-      }
+      for (std::uint32_t k = 0; k < n; ++k) slots[k] = first + k;
       generate(p, slots.data(), samples.data(), n);
     }
   };
@@ -677,11 +777,16 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
   // after every bounces_per_pass steps every pixel's path has advanced equally.
   if (bounces_per_pass > 0 && after_bounces && *after_bounces) {
     if (!whole_image_paths_ || whole_image_paths_->capacity() != pixels)
-      whole_image_paths_ = std::make_unique<Paths>(pixels);
+      whole_image_paths_ = std::make_unique<Paths>(pixels, kWholeImageCameraPacketsPerBlock, /*shared=*/true);
     Paths& p = *whole_image_paths_;
     p.first_hit_aovs.resize(aovs ? pixels : 0u);
+    p.camera_packets.clear();
+    p.camera_packet_rays = 0;
     std::vector<std::uint32_t> live(pixels);
     for (std::uint32_t s = 0; s < pixels; ++s) live[s] = s;
+    parallel_for(pixels, 4096, [&](std::size_t b, std::size_t e) {
+      set_up(p, static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(e));
+    });
     parallel_for(pixels, 4096, [&](std::size_t b, std::size_t e) {
       start(p, static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(e));
     });
@@ -689,7 +794,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
   }
 
   // Tiles: each thread takes a run of kWavefrontTilePixels pixels and runs their whole wave alone,
-  // in a path state of its own (≈ 270 B per slot, 1.1 MB per tile) that stays in the core's
+  // in a path state of its own (≈ 290 B per slot and 512 B of camera packets, 0.8 MB per tile) that stays in the core's
   // caches for every stage, where a whole-image queue streams its state from memory once
   // per stage; the threads meet once per pass instead of three times per step, and the
   // path state is a few tiles' worth instead of one slot per pixel. A slot is still one
@@ -704,8 +809,11 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
       std::unique_ptr<Paths> p = acquire_tile_paths();
       p->first_pixel = begin;
       p->first_hit_aovs.resize(aovs ? kWavefrontTilePixels : 0u);
+      p->camera_packets.clear();
+      p->camera_packet_rays = 0;
       std::vector<std::uint32_t> live(end - begin);
       for (std::uint32_t s = 0; s < end - begin; ++s) live[s] = s;
+      set_up(*p, 0, end - begin);
       start(*p, 0, end - begin);
       per_tile[t] = run_queue(film, *p, live, /*parallel=*/false, 0, nullptr);
       release_tile_paths(std::move(p));
@@ -737,7 +845,7 @@ std::unique_ptr<typename WavefrontIntegrator<Mode>::Paths> WavefrontIntegrator<M
       return p;
     }
   }
-  return std::make_unique<Paths>(kWavefrontTilePixels);
+  return std::make_unique<Paths>(kWavefrontTilePixels, kTileCameraPacketsPerBlock, /*shared=*/false);
 }
 
 template <class Mode>
@@ -753,14 +861,18 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
   PassStatistics stats;
   std::atomic<std::uint64_t> shadow_rays{0}, invalid{0}, completed{0}, lane_shaded{0};
   constexpr std::size_t kGrain = 1024;
-  std::vector<std::uint32_t> survivor_counts;  // per compaction chunk, reused every step
+  std::vector<std::uint32_t> survivor_counts, continuing_counts;  // per compaction chunk, reused every step
+  // Stage 1's queue: the live paths past their camera ray (a path's first hit comes with
+  // its camera ray, generate()), in queue order; none at the first step.
+  std::vector<std::uint32_t> continuing;
+  continuing.reserve(live.size());
   while (!live.empty()) {
     stats.live_paths_per_step.push_back(static_cast<std::uint32_t>(live.size()));
     stats.rays += live.size();
     ++stats.steps;
-    // Stage 1: closest hits for the whole queue, traced as Embree ray streams.
-    for_range(parallel, live.size(), kGrain, [&](std::size_t b, std::size_t e) {
-      accel_.intersect_slots(p.ray.data(), live.data() + b, e - b, p.hit.data(), p.hit_found.data());
+    // Stage 1: closest hits of the continuing paths' rays, traced as Embree ray streams.
+    for_range(parallel, continuing.size(), kGrain, [&](std::size_t b, std::size_t e) {
+      accel_.intersect_slots(p.ray.data(), continuing.data() + b, e - b, p.hit.data(), p.hit_found.data());
     });
     // Stage 2: shading emits continuation and shadow rays, with the geometry of the hits
     // a few slots ahead prefetched (surface_interaction.h) where it is too big for the caches,
@@ -824,9 +936,12 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
     // stream), then finished paths go to the film and their slot restarts with the pixel's
     // next sample. Stage 5: compaction of the survivors, in queue order, in place: each chunk
     // packs its survivors at its own start (a write never passes the read), then the packed
-    // runs move down to their prefix-sum offsets.
+    // runs move down to their prefix-sum offsets; likewise the survivors that did not
+    // restart, stage 1's next queue.
     const std::size_t chunks = (live.size() + kGrain - 1) / kGrain;
     survivor_counts.assign(chunks, 0);
+    continuing_counts.assign(chunks, 0);
+    continuing.resize(live.size());
     for_range(parallel, chunks, 1, [&](std::size_t cb, std::size_t ce) {
       // The chunk's finished slots, and which of them restart: the film and the new
       // samples are done after the walk, each in a loop of its own, so that the CIE and
@@ -840,7 +955,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
         const std::size_t end = std::min(live.size(), (c + 1) * kGrain);
         accel_.occluded_slots(p.shadow_ray.data(), live.data() + c * kGrain, end - c * kGrain,
                               p.shadow_pending.data(), p.shadow_blocked.data());
-        std::size_t kept = c * kGrain;
+        std::size_t kept = c * kGrain, continues = c * kGrain;
         // Without branches: whether a slot's shadow ray was traced and got through, and
         // whether its path finished, are coin flips a predictor misses on (core/branch_free.h);
         // each slot is written to every list and counted into those it belongs to.
@@ -858,6 +973,8 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
           restarted_count += restarts;
           live[kept] = s;
           kept += !finished_now | restarts;
+          continuing[continues] = s;
+          continues += !finished_now;
         }
         for (std::size_t k = 0; k < finished_count; ++k) {
           const std::uint32_t s = finished[k];
@@ -872,18 +989,23 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
         for (std::size_t k = 0; k < restarted_count; ++k) next_sample[k] = p.sample_index[restarted[k]] + 1;
         generate(p, restarted.data(), next_sample.data(), restarted_count);
         survivor_counts[c] = static_cast<std::uint32_t>(kept - c * kGrain);
+        continuing_counts[c] = static_cast<std::uint32_t>(continues - c * kGrain);
         invalid += local_invalid;
         completed += finished_count;
         shadow_rays += traced;
       }
     });
-    std::size_t packed = 0;
-    for (std::size_t c = 0; c < chunks; ++c) {
-      const auto first = live.begin() + static_cast<std::ptrdiff_t>(c * kGrain);
-      std::copy(first, first + survivor_counts[c], live.begin() + static_cast<std::ptrdiff_t>(packed));
-      packed += survivor_counts[c];
-    }
-    live.resize(packed);
+    const auto pack = [&](std::vector<std::uint32_t>& queue, const std::vector<std::uint32_t>& counts) {
+      std::size_t packed = 0;
+      for (std::size_t c = 0; c < chunks; ++c) {
+        const auto first = queue.begin() + static_cast<std::ptrdiff_t>(c * kGrain);
+        std::copy(first, first + counts[c], queue.begin() + static_cast<std::ptrdiff_t>(packed));
+        packed += counts[c];
+      }
+      queue.resize(packed);
+    };
+    pack(live, survivor_counts);
+    pack(continuing, continuing_counts);
     if (bounces_per_pass > 0 && after_bounces && *after_bounces && !live.empty() &&
         stats.steps % bounces_per_pass == 0)
       (*after_bounces)();
@@ -892,6 +1014,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
   stats.invalid_samples = invalid.load();
   stats.completed_samples = completed.load();
   stats.lane_shaded_hits = lane_shaded.load();
+  stats.camera_packet_rays = p.camera_packet_rays.load();
   return stats;
 }
 

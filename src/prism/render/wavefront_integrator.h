@@ -15,11 +15,17 @@
 // few bounces keeps one queue for the whole image, stepped in lockstep with each stage
 // split across the threads.
 //
+// Camera rays are traced in fixed packets (render/camera_packet_cache.h): those of eight
+// neighbouring pixels at one sample index, always together, about 0.4 × the time of the
+// same rays one by one; a path's first hit comes with its camera ray.
+//
 // Determinism: every pixel owns one path slot and renders its samples in order; a
 // sample's random numbers depend only on (seed, pixel, sample index, dimension)
-// (sampling/pixel_sampler.h, which also fixes the dimension layout), and the film adds a
-// pixel's samples in sample order. The image is therefore bitwise independent of thread
-// count and scheduling, and of how samples are grouped into passes.
+// (sampling/pixel_sampler.h, which also fixes the dimension layout), a camera packet only
+// on its pixels and sample index, and the film adds a pixel's samples in sample order. The
+// image is therefore bitwise independent of thread count and scheduling, and of how
+// samples are grouped into passes.
+#include <array>
 #include <atomic>
 #include <memory>
 #include <cstdint>
@@ -33,6 +39,7 @@
 #include "prism/bsdf/normal_mapping_model.h"
 #include "prism/core/mat3.h"
 #include "prism/render/aov.h"
+#include "prism/render/camera_packet_cache.h"
 #include "prism/render/color_context.h"
 #include "prism/render/film.h"
 #include "prism/render/light_estimator.h"
@@ -63,8 +70,27 @@ struct PathSettings {
 
 // Pixels per tile: a tile's queue is run by one thread from its first step to its last, in
 // a path state of its own (unless a pass reports after every few bounces, which keeps one
-// whole-image queue). Any size gives the same image; 1024 to 16384 measured alike.
-inline constexpr std::size_t kWavefrontTilePixels = 4096;
+// whole-image queue). Any size gives the same image. 1024 to 16384 measured alike until
+// camera packets (BENCHMARKS.md "Session 6"); since, 1024, whose path state and camera
+// packets (≈ 300 + 512 KiB) fit a 1 MiB L2 cache, measured best ("Session 36").
+inline constexpr std::size_t kWavefrontTilePixels = 1024;
+// Camera packets kept per block of pixels (camera_packet_cache.h): in a tile's path state,
+// and in the whole-image queue's, which has one slot per pixel of the image (there each
+// packet kept costs 64 B a pixel). More only trace fewer packets twice; the image is the
+// same. Passes of P samples let a block's pixels drift apart by about P / 2 samples: in a
+// tile, 8 kept trace 1.00 / 1.07 / 1.40 × the camera rays at 8 / 16 / 32 samples a pass
+// on the Cornell box, and 16 kept (1.00 / 1.00 / 1.07 ×) measured slower, their
+// 1 MiB no longer in L2; the whole-image queue's 4 (1.09 / 1.52 / 2.28 ×) keep a camera
+// ray below the 46 ns it takes alone at any pass length (18 ns in a packet; BENCHMARKS.md
+// "Session 36").
+inline constexpr std::size_t kTileCameraPacketsPerBlock = 8;
+inline constexpr std::size_t kWholeImageCameraPacketsPerBlock = 4;
+// Path state bytes per slot the camera packets add (the memory estimate's figure).
+constexpr std::size_t camera_packet_bytes_per_slot(std::size_t packets_per_block) {
+  return packets_per_block * (sizeof(CameraPacketCache::Packet) + sizeof(std::uint32_t) + 1) /
+             CameraPacketCache::kLanes +
+         sizeof(std::uint32_t);
+}
 
 struct PassStatistics {
   std::uint64_t rays = 0;             // closest-hit rays (camera and continuation)
@@ -72,6 +98,9 @@ struct PassStatistics {
   std::uint64_t invalid_samples = 0;  // NaN/Inf radiance discarded
   std::uint64_t completed_samples = 0;
   std::uint64_t lane_shaded_hits = 0;  // hits shaded several at a time (shade_plain_lanes)
+  // Rays traced in camera packets: a packet's every pixel's, needed or not, and again where
+  // the packet had to be traced again (camera_packet_cache.h). At least one per sample.
+  std::uint64_t camera_packet_rays = 0;
   int steps = 0;
   std::vector<std::uint32_t> live_paths_per_step;
   // Adds another queue's ray and sample counts (the per-step figures are the caller's).
@@ -81,6 +110,7 @@ struct PassStatistics {
     invalid_samples += other.invalid_samples;
     completed_samples += other.completed_samples;
     lane_shaded_hits += other.lane_shaded_hits;
+    camera_packet_rays += other.camera_packet_rays;
   }
 };
 
@@ -112,6 +142,18 @@ class WavefrontIntegrator {
   // and wavelengths, and a fresh path state.
   void generate(Paths& paths, const std::uint32_t* slots, const std::uint32_t* sample_indices,
                 std::size_t count) const;
+  // Slot's lane of its block's camera packet of `sample`, traced first where the block
+  // does not hold it: the ray and its hit to the slot, the wavelength number to
+  // `wavelength_number`.
+  // `numbers`: room for a packet's camera numbers (made once per run of slots: a
+  // CameraSamples array is zeroed where it is made).
+  using PacketNumbers = std::array<CameraSamples, EmbreeAccel::kPacketRays>;
+  void take_camera_lane(Paths& paths, std::uint32_t slot, std::uint32_t sample, double& wavelength_number,
+                        PacketNumbers& numbers) const;
+  // Traces block's camera packet of `sample` for `slot`, which takes its lane at once, into
+  // the block's cache; returns its index there.
+  std::size_t trace_camera_packet(Paths& paths, std::size_t block, std::uint32_t sample, std::uint32_t slot,
+                                  PacketNumbers& numbers) const;
   void shade(Paths& paths, std::uint32_t slot) const;
   // shade() past the hit's geometry. kPlainDiffuse: the material is_plain_diffuse
   // (material_bsdf.h), and the steps it cannot take (maps, anisotropy, textures, layers,

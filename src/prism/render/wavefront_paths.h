@@ -1,9 +1,12 @@
 #pragma once
 // The wavefront integrator's path state (WavefrontIntegrator<Mode>::Paths), shared by its
 // translation units: wavefront_integrator.cpp and wavefront_plain_lanes.cpp.
+#include <atomic>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
+#include "prism/render/camera_packet_cache.h"
 #include "prism/render/wavefront_integrator.h"
 
 namespace prism {
@@ -12,14 +15,24 @@ namespace prism {
 // slot s holds pixel first_pixel + s.
 template <class Mode>
 struct WavefrontIntegrator<Mode>::Paths {
-  explicit Paths(std::size_t n)
-      : ray(n), throughput(n), radiance(n), wavelengths(n), hit(n), hit_found(n), shadow_ray(n),
+  // `camera_packets_per_block`: CameraPacketCache's; `shared`: several threads start
+  // paths in it at once (the whole-image queue), so each block's packets are locked.
+  Paths(std::size_t n, std::size_t camera_packets_per_block, bool shared)
+      : camera_packets(n, camera_packets_per_block), camera_next_sample(n),
+        block_locks(shared ? std::make_unique<std::atomic<std::uint8_t>[]>(camera_packets.blocks()) : nullptr),
+        ray(n), throughput(n), radiance(n), wavelengths(n), hit(n), hit_found(n), shadow_ray(n),
         shadow_contribution(n), shadow_pending(n), shadow_blocked(n), prev_position(n), prev_normal(n), prev_pdf(n),
         eta_scale(n), cone_width(n), cone_spread(n), prev_specular(n), depth(n), finished(n), sample_index(n),
         sample_end(n), inside_absorbing(n), interior_sigma(n), bounce_block(n), sobol_pixel_key(n), cached_emitter(n),
         cached_emission(n) {}
   std::size_t capacity() const { return ray.size(); }
   std::uint32_t first_pixel = 0;
+  // Camera rays in fixed packets (camera_packet_cache.h): the blocks' packets; per slot,
+  // the first sample whose camera lane it has not taken yet; where shared, a lock per block.
+  CameraPacketCache camera_packets;
+  std::vector<std::uint32_t> camera_next_sample;
+  std::unique_ptr<std::atomic<std::uint8_t>[]> block_locks;
+  std::atomic<std::uint64_t> camera_packet_rays{0};  // lanes traced in camera packets
   std::vector<Ray> ray;
   std::vector<Spectrum<Mode>> throughput, radiance;
   std::vector<Wavelengths<Mode>> wavelengths;

@@ -20,13 +20,7 @@ PinholeCamera::PinholeCamera(const Camera& camera, int width, int height)
   scale_y_ = aspect >= 1.0f ? tan_half : tan_half / aspect;
 }
 
-Ray PinholeCamera::generate_ray(float film_x, float film_y, Vec2f u_lens) const {
-  const float ndc_x = 2.0f * film_x * inv_width_ - 1.0f;   // -1 left, +1 right
-  const float ndc_y = 1.0f - 2.0f * film_y * inv_height_;  // +1 top, -1 bottom
-  // Camera space: +z forward, +y up, +x to the image's left (see Transform::look_at).
-  const Vec3f local(-ndc_x * scale_x_, ndc_y * scale_y_, 1.0f);
-  if (aperture_radius_ <= 0.0f)
-    return Ray{camera_to_world_.translation, normalize(camera_to_world_.apply_vector(local))};
+Ray PinholeCamera::thin_lens_ray(const Vec3f& local, Vec2f u_lens) const {
   // Thin lens (Kolb et al. 1995; pbrt §5.2.3): every ray through the lens point reaches
   // the pinhole ray's point on the plane of focus z = focus_distance.
   const Vec2f disk = sample_concentric_disk(u_lens);

@@ -1,5 +1,5 @@
 // Camera rays through Embree ray streams, incoherent (each ray traversed alone, as the
-// integrator traces every queue) against coherent (Embree's packet traversal): the rays of
+// integrator traces its queues past the camera) against coherent (Embree's packet traversal): the rays of
 // a wavefront tile (16 rows of a 256² Cornell box, jittered in their pixels) in pixel
 // order, all of them (a tile's first step) or a random 30 % (the paths that restart at a
 // later step); and as the integrator traces them, in fixed packets of eight neighbouring

@@ -45,8 +45,8 @@ SuiteReport run_limit_suite(const BenchOptions& o) {
                   "round(s)",
                   size, spp, repeat),
       {"mode", "threads", "raw closest Mrays/s 1-ray", "raw closest Mrays/s streams", "raw shadow Mrays/s 1-ray",
-       "raw shadow Mrays/s streams", "renderer Mrays/s", "rays/sample", "camera packet rays/sample", "shadow fraction", "efficiency vs closest",
-       "efficiency range", "efficiency vs mixed"});
+       "raw shadow Mrays/s streams", "renderer Mrays/s", "rays/sample", "camera packet rays/sample", "shadow fraction",
+       "efficiency vs closest", "efficiency range", "efficiency vs mixed"});
   nlohmann::json series = nlohmann::json::array();
   const std::vector<int> thread_counts = all > 1 ? std::vector<int>{1, all} : std::vector<int>{1};
   const TransportKind kinds[] = {TransportKind::spectral, TransportKind::rgb};

@@ -47,7 +47,6 @@ class CameraPacketCache {
         samples_(blocks_ * per_block_, kNoSample), waiting_(blocks_ * per_block_, 0),
         packets_(blocks_ * per_block_) {}
 
-  std::size_t packets_per_block() const { return per_block_; }
   std::size_t blocks() const { return blocks_; }
 
   // Forgets every packet.

@@ -13,7 +13,9 @@ namespace prism {
 
 struct MemoryEstimate {
   std::uint64_t film = 0;       // sums, squared sums (2 × Vec3d) and counts (u32) per pixel, plus AOV sums
-  std::uint64_t path_pool = 0;  // wavefront path state, about 290 B per slot and the camera packets: a tile per thread (or per pixel)
+  // Wavefront path state, about 290 B per slot, and its camera packets: a tile per thread
+  // (or a slot per pixel).
+  std::uint64_t path_pool = 0;
   std::uint64_t images = 0;     // output conversion buffers (float RGB per pixel, twice)
   std::uint64_t textures = 0;   // loaded texels, the renderer's copy (if copied) and mip levels 1 and up
   std::uint64_t meshes = 0;     // vertex and index arrays, loaded and (if copied or instanced) flattened, plus the BVH

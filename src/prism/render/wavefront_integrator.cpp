@@ -356,7 +356,7 @@ std::size_t WavefrontIntegrator<Mode>::trace_camera_packet(Paths& p, std::size_t
   if (sobol_lanes_) {
     std::array<CameraBlockRequest, kLanes> requests;
     for (std::uint32_t i = 0; i < count; ++i)
-      requests[i] = {padded_sobol_pixel_key(seed_, p.first_pixel + first_slot + i), sample, &u[i]};
+      requests[i] = {p.sobol_pixel_key[first_slot + i], sample, &u[i]};  // set_up made every lane's
     padded_sobol_camera_blocks_lanes({requests.data(), count}, lens);
   } else {
     for (std::uint32_t i = 0; i < count; ++i)
@@ -393,7 +393,8 @@ void WavefrontIntegrator<Mode>::take_camera_lane(Paths& p, std::uint32_t slot, s
   const std::size_t block = slot / CameraPacketCache::kLanes;
   const BlockLock lock(p.block_locks ? &p.block_locks[block] : nullptr);
   const std::ptrdiff_t held = p.camera_packets.find(block, sample);
-  const std::size_t at = held >= 0 ? static_cast<std::size_t>(held) : trace_camera_packet(p, block, sample, slot, numbers);
+  const std::size_t at =
+      held >= 0 ? static_cast<std::size_t>(held) : trace_camera_packet(p, block, sample, slot, numbers);
   const CameraPacketCache::Lane& lane = p.camera_packets.packet(at).lanes[slot % CameraPacketCache::kLanes];
   store_ray(p.ray[slot], lane.ray);
   p.hit[slot] = lane.hit;
@@ -422,8 +423,9 @@ void WavefrontIntegrator<Mode>::generate(Paths& p, const std::uint32_t* slots, c
     // by its tracing). Not in a shared path state, whose blocks are read under their locks.
     for (std::size_t k = 0; k < n && !p.block_locks; ++k) {
       const std::ptrdiff_t held = p.camera_packets.find(run[k] / CameraPacketCache::kLanes, run_samples[k]);
-      if (held >= 0)
-        __builtin_prefetch(&p.camera_packets.packet(static_cast<std::size_t>(held)).lanes[run[k] % CameraPacketCache::kLanes]);
+      if (held < 0) continue;
+      const CameraPacketCache::Packet& packet = p.camera_packets.packet(static_cast<std::size_t>(held));
+      __builtin_prefetch(&packet.lanes[run[k] % CameraPacketCache::kLanes]);
     }
     for (std::size_t k = 0; k < n; ++k) take_camera_lane(p, run[k], run_samples[k], wavelength_numbers[k], numbers);
     std::size_t k = 0;
@@ -780,8 +782,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
       whole_image_paths_ = std::make_unique<Paths>(pixels, kWholeImageCameraPacketsPerBlock, /*shared=*/true);
     Paths& p = *whole_image_paths_;
     p.first_hit_aovs.resize(aovs ? pixels : 0u);
-    p.camera_packets.clear();
-    p.camera_packet_rays = 0;
+    p.start_wave();
     std::vector<std::uint32_t> live(pixels);
     for (std::uint32_t s = 0; s < pixels; ++s) live[s] = s;
     parallel_for(pixels, 4096, [&](std::size_t b, std::size_t e) {
@@ -794,8 +795,8 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
   }
 
   // Tiles: each thread takes a run of kWavefrontTilePixels pixels and runs their whole wave alone,
-  // in a path state of its own (≈ 290 B per slot and 512 B of camera packets, 0.8 MB per tile) that stays in the core's
-  // caches for every stage, where a whole-image queue streams its state from memory once
+  // in a path state of its own (≈ 290 B per slot and 512 B of camera packets, 0.8 MB per
+  // tile) that stays in the core's caches for every stage, where a whole-image queue streams its state from memory once
   // per stage; the threads meet once per pass instead of three times per step, and the
   // path state is a few tiles' worth instead of one slot per pixel. A slot is still one
   // pixel and renders its samples in order, so the image is bitwise that of the lockstep
@@ -809,8 +810,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
       std::unique_ptr<Paths> p = acquire_tile_paths();
       p->first_pixel = begin;
       p->first_hit_aovs.resize(aovs ? kWavefrontTilePixels : 0u);
-      p->camera_packets.clear();
-      p->camera_packet_rays = 0;
+      p->start_wave();
       std::vector<std::uint32_t> live(end - begin);
       for (std::uint32_t s = 0; s < end - begin; ++s) live[s] = s;
       set_up(*p, 0, end - begin);

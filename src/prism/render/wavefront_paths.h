@@ -26,6 +26,11 @@ struct WavefrontIntegrator<Mode>::Paths {
         sample_end(n), inside_absorbing(n), interior_sigma(n), bounce_block(n), sobol_pixel_key(n), cached_emitter(n),
         cached_emission(n) {}
   std::size_t capacity() const { return ray.size(); }
+  // Forgets the last wave's camera packets and their count.
+  void start_wave() {
+    camera_packets.clear();
+    camera_packet_rays = 0;
+  }
   std::uint32_t first_pixel = 0;
   // Camera rays in fixed packets (camera_packet_cache.h): the blocks' packets; per slot,
   // the first sample whose camera lane it has not taken yet; where shared, a lock per block.

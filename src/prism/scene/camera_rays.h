@@ -19,7 +19,8 @@ class PinholeCamera {
     const float ndc_y = 1.0f - 2.0f * film_y * inv_height_;  // +1 top, -1 bottom
     // Camera space: +z forward, +y up, +x to the image's left (see Transform::look_at).
     const Vec3f local(-ndc_x * scale_x_, ndc_y * scale_y_, 1.0f);
-    if (aperture_radius_ <= 0.0f) return Ray{camera_to_world_.translation, normalize(camera_to_world_.apply_vector(local))};
+    if (aperture_radius_ <= 0.0f)
+      return Ray{camera_to_world_.translation, normalize(camera_to_world_.apply_vector(local))};
     return thin_lens_ray(local, u_lens);
   }
   // Angle subtended by one pixel at the image centre: the ray cone's spread (texture LOD).

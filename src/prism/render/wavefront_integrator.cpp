@@ -356,21 +356,21 @@ std::size_t WavefrontIntegrator<Mode>::trace_camera_packet(Paths& p, std::size_t
   if (sobol_lanes_) {
     std::array<CameraBlockRequest, kLanes> requests;
     for (std::uint32_t i = 0; i < count; ++i)
-      requests[i] = {p.sobol_pixel_key[first_slot + i], sample, &u[i]};  // set_up made every lane's
+      requests[i] = {p.sobol_pixel_key[first_slot + i], sample, u.data() + i};  // set_up made every lane's
     padded_sobol_camera_blocks_lanes({requests.data(), count}, lens);
   } else {
     for (std::uint32_t i = 0; i < count; ++i)
-      u[i] = camera_samples(settings_.sampler, PixelSample{seed_, p.first_pixel + first_slot + i, width, sample}, lens);
+      u.set(i, camera_samples(settings_.sampler, PixelSample{seed_, p.first_pixel + first_slot + i, width, sample}, lens));
   }
-  std::array<Ray, kLanes> rays;
+  LaneSlots<Ray, kLanes> rays;  // every lane written, nothing cleared first (core/lane_slots.h)
   for (std::uint32_t i = 0; i < kLanes; ++i) {
     const std::uint32_t lane = i < count ? i : 0;  // unused lanes: a copy of lane 0
     const std::uint32_t pixel = p.first_pixel + first_slot + lane;
     // Stored a float at a time, as the store buffer can forward (core/ray.h).
-    store_ray(rays[i], camera_.generate_ray(static_cast<float>(pixel % width) + u[lane].pixel_jitter.x,
+    store_ray(rays.data()[i], camera_.generate_ray(static_cast<float>(pixel % width) + u[lane].pixel_jitter.x,
                                             static_cast<float>(pixel / width) + u[lane].pixel_jitter.y, u[lane].lens));
   }
-  std::array<Hit, kLanes> hits;
+  LaneSlots<Hit, kLanes> hits;
   std::array<std::uint8_t, kLanes> found;
   accel_.intersect_packet(rays.data(), lanes, hits.data(), found.data());
   for (std::uint32_t i = 0; i < count; ++i) {

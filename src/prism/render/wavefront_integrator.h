@@ -37,6 +37,7 @@
 #include "prism/accel/embree_accel.h"
 #include "prism/bsdf/microfacet_normal_mapping.h"
 #include "prism/bsdf/normal_mapping_model.h"
+#include "prism/core/lane_slots.h"
 #include "prism/core/mat3.h"
 #include "prism/render/aov.h"
 #include "prism/render/camera_packet_cache.h"
@@ -145,9 +146,8 @@ class WavefrontIntegrator {
   // Slot's lane of its block's camera packet of `sample`, traced first where the block
   // does not hold it: the ray and its hit to the slot, the wavelength number to
   // `wavelength_number`.
-  // `numbers`: room for a packet's camera numbers (made once per run of slots: a
-  // CameraSamples array is zeroed where it is made).
-  using PacketNumbers = std::array<CameraSamples, EmbreeAccel::kPacketRays>;
+  // `numbers`: room for a packet's camera numbers, made once per run of slots.
+  using PacketNumbers = LaneSlots<CameraSamples, EmbreeAccel::kPacketRays>;
   void take_camera_lane(Paths& paths, std::uint32_t slot, std::uint32_t sample, double& wavelength_number,
                         PacketNumbers& numbers) const;
   // Traces block's camera packet of `sample` for `slot`, which takes its lane at once, into

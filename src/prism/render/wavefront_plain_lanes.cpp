@@ -21,6 +21,7 @@
 #include <utility>
 
 #include "prism/core/float_lanes.h"
+#include "prism/core/lane_slots.h"
 #include "prism/core/target_region.h"
 #include "prism/render/wavefront_integrator.h"
 #include "prism/render/wavefront_paths.h"

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <bit>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -341,17 +340,17 @@ std::size_t WavefrontIntegrator<Mode>::trace_camera_packet(Paths& p, std::size_t
   // The lanes are the block's pixels inside the image, whichever of them need the packet
   // now: the packet is always the same. It waits for the other lanes that have not
   // reached this sample, and will.
-  unsigned lanes = 0;
+  unsigned lanes = 0, count = 0;  // a prefix of the lanes: count of them
   std::uint8_t waiting = 0;
   for (std::uint32_t i = 0; i < kLanes; ++i) {
     const std::uint32_t s = first_slot + i;
     if (s >= p.capacity() || p.first_pixel + std::uint64_t{s} >= pixels) break;
     lanes |= 1u << i;
+    ++count;
     if (s != slot && p.camera_next_sample[s] <= sample && sample < p.sample_end[s]) waiting |= std::uint8_t(1u << i);
   }
   const std::size_t at = p.camera_packets.claim(block, sample, waiting);
   CameraPacketCache::Packet& packet = p.camera_packets.packet(at);
-  const auto count = static_cast<unsigned>(std::popcount(lanes));  // the lanes are a prefix
   const bool lens = camera_.has_lens();
   if (sobol_lanes_) {
     std::array<CameraBlockRequest, kLanes> requests;

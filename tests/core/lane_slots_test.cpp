@@ -12,7 +12,8 @@ namespace {
 
 // A callee that fills a row of T through a pointer, as EmbreeAccel::intersect_packet does.
 void fill_hits(Hit* hits, int count) {
-  for (int k = 0; k < count; ++k) hits[k] = Hit{0.5f * static_cast<float>(k), 7u, static_cast<std::uint32_t>(k), 0.25f, 0.75f};
+  for (int k = 0; k < count; ++k)
+    hits[k] = Hit{0.5f * static_cast<float>(k), 7u, static_cast<std::uint32_t>(k), 0.25f, 0.75f};
 }
 
 TEST(LaneSlots, HoldsExactlyNSlotsInARowAlignedForTheirType) {

@@ -340,12 +340,11 @@ std::size_t WavefrontIntegrator<Mode>::trace_camera_packet(Paths& p, std::size_t
   // The lanes are the block's pixels inside the image, whichever of them need the packet
   // now: the packet is always the same. It waits for the other lanes that have not
   // reached this sample, and will.
-  unsigned lanes = 0, count = 0;  // a prefix of the lanes: count of them
+  unsigned count = 0;  // the lanes are a prefix: the first `count`
   std::uint8_t waiting = 0;
   for (std::uint32_t i = 0; i < kLanes; ++i) {
     const std::uint32_t s = first_slot + i;
     if (s >= p.capacity() || p.first_pixel + std::uint64_t{s} >= pixels) break;
-    lanes |= 1u << i;
     ++count;
     if (s != slot && p.camera_next_sample[s] <= sample && sample < p.sample_end[s]) waiting |= std::uint8_t(1u << i);
   }
@@ -359,18 +358,21 @@ std::size_t WavefrontIntegrator<Mode>::trace_camera_packet(Paths& p, std::size_t
     padded_sobol_camera_blocks_lanes({requests.data(), count}, lens);
   } else {
     for (std::uint32_t i = 0; i < count; ++i)
-      u.set(i, camera_samples(settings_.sampler, PixelSample{seed_, p.first_pixel + first_slot + i, width, sample}, lens));
+      u.set(i, camera_samples(settings_.sampler, PixelSample{seed_, p.first_pixel + first_slot + i, width, sample},
+                              lens));
   }
   LaneSlots<Ray, kLanes> rays;  // every lane written, nothing cleared first (core/lane_slots.h)
   for (std::uint32_t i = 0; i < kLanes; ++i) {
     const std::uint32_t lane = i < count ? i : 0;  // unused lanes: a copy of lane 0
     const std::uint32_t pixel = p.first_pixel + first_slot + lane;
     // Stored a float at a time, as the store buffer can forward (core/ray.h).
-    store_ray(rays.data()[i], camera_.generate_ray(static_cast<float>(pixel % width) + u[lane].pixel_jitter.x,
-                                            static_cast<float>(pixel / width) + u[lane].pixel_jitter.y, u[lane].lens));
+    store_ray(rays.data()[i],
+              camera_.generate_ray(static_cast<float>(pixel % width) + u[lane].pixel_jitter.x,
+                                   static_cast<float>(pixel / width) + u[lane].pixel_jitter.y, u[lane].lens));
   }
   LaneSlots<Hit, kLanes> hits;
   std::array<std::uint8_t, kLanes> found;
+  const unsigned lanes = (1u << count) - 1u;
   accel_.intersect_packet(rays.data(), lanes, hits.data(), found.data());
   for (std::uint32_t i = 0; i < count; ++i) {
     CameraPacketCache::Lane& lane = packet.lanes[i];

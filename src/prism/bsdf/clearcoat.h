@@ -48,9 +48,9 @@ struct Clearcoat {
   // The coat's own shading frame in the base's local frame, or null: the base's. It points
   // at a frame the caller keeps for as long as it uses the coat: held by value, as a
   // std::optional<Frame>, it made every BSDF 40 bytes larger, coated or not, and cost the
-  // Lambertian Cornell box 4 % of its render time on the Xeon (BENCHMARKS.md "Session 24").
-  // Size alone is not the rule: taking 96 bytes out of the largest lobe gained nothing on
-  // the EPYC ("Session 25"). Time every new member of a BSDF, even where it is absent.
+  // Lambertian Cornell box 4 % of its render time. Size alone is not the rule: taking 96
+  // bytes out of the largest lobe gained nothing (BENCHMARKS.md "BSDF size"). Time every
+  // new member of a BSDF, even where it is absent.
   const Frame* frame = nullptr;
 
   static Clearcoat make(float weight, float perceptual_roughness) {

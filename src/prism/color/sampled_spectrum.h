@@ -33,7 +33,8 @@ struct SampledSpectrum {
   // that is not inlined travels in one register. As std::array<float, 4> it travelled as
   // two 8-byte halves, which callers put back together through the stack: two 8-byte
   // stores then a 16-byte load, which cannot be store-forwarded (a stall of the whole
-  // load's latency on every such call; perf annotate of shade, BENCHMARKS.md "Session 19").
+  // load's latency on every such call; perf annotate of shade, BENCHMARKS.md "Store-forwarding
+  // stalls").
   // The operators also become one SSE instruction each. Wider tuples keep an array.
   static constexpr bool kVectorLanes = N <= 4;
   using Storage = std::conditional_t<kVectorLanes, SpectrumLanes4, std::array<float, N>>;

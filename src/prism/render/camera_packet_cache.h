@@ -1,12 +1,12 @@
 #pragma once
 // Camera rays in fixed packets. Embree traces a packet of neighbouring camera rays in
-// about 0.4 × the time of the same rays one by one (BENCHMARKS.md "Session 35"), but where
-// two triangles lie at exactly the same distance along a ray, which one a packet reports
-// depends on its other rays (accel/embree_accel.h, RayCoherence). So the integrator's
-// camera packets never change: a block is kLanes consecutive pixel indices, aligned, and
-// its packet of sample s is the camera rays of those pixels at sample s, always traced
-// together with the same lanes, whichever of their paths happen to restart together
-// (wavefront_integrator.h, "Determinism").
+// about 0.4 × the time of the same rays one by one (BENCHMARKS.md "Camera rays in fixed
+// packets"), but where two triangles lie at exactly the same distance along a ray, which
+// one a packet reports depends on its other rays (accel/embree_accel.h, RayCoherence). So
+// the integrator's camera packets never change: a block is kLanes consecutive pixel
+// indices, aligned, and its packet of sample s is the camera rays of those pixels at
+// sample s, always traced together with the same lanes, whichever of their paths happen to
+// restart together (wavefront_integrator.h, "Determinism").
 //
 // The pixels of a block start sample s at different steps of the wavefront (their paths
 // have different lengths), so a block keeps a few packets, each until every lane that

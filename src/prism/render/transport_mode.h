@@ -17,7 +17,7 @@ struct TransportSettings {
   int wavelengths = 4;  // spectral: 3, 4 or 8
   // One cosh lobe with evenly rotated partners: the lowest relMSE and the fastest colour
   // convergence of the three on every scene measured (cosh3 has 1.4–4× its relMSE at 3–4
-  // wavelengths; BENCHMARKS.md "Session 15").
+  // wavelengths; BENCHMARKS.md "convergence").
   color::WavelengthStrategy wavelength_strategy = color::WavelengthStrategy::cosh;
   // The seed renderer's nine strata (first sample of a pixel near 600/535/445 nm). Off by
   // default: a pixel whose sample count is not a multiple of nine is biased by up to one

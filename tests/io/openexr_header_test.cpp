@@ -32,7 +32,7 @@ TEST(OpenExrHeader, TheIoReadersRefuseTheFuzzRegressionsBeforeOpenExrAllocates) 
   for (const auto& entry : files) {
     const char* file = entry.first;  // (clang 14 cannot capture a structured binding)
     const char* why = entry.second;
-    // Before session 27 these reached OpenEXR, which allocated 1.6–2 GB and then failed
+    // Unchecked, these reach OpenEXR, which allocates 1.6–2 GB and then fails
     // (std::bad_alloc under a memory limit).
     const std::string message = test::error_of<IoError>([&] { read_exr(data / file); });
     EXPECT_NE(message.find("corrupt or truncated OpenEXR header"), std::string::npos) << file << ": " << message;

@@ -1,8 +1,8 @@
 // A constant (untextured) environment is an emitter like the others: its colour or its
-// spectrum and its luminance go through the emission rule (render/color_context.h). Until
-// session 18 the light sampler gave every constant sky the grey of its luminance, so a
-// JSON `"color"` or a pbrt-v4 `"rgb L"` sky rendered grey; these tests pin the colour on
-// every path that meets the sky: NEE, BSDF sampling, MIS and camera rays.
+// spectrum and its luminance go through the emission rule (render/color_context.h). A light
+// sampler that gave a constant sky the grey of its luminance would render a JSON `"color"`
+// or a pbrt-v4 `"rgb L"` sky grey; these tests pin the colour on every path that meets the
+// sky: NEE, BSDF sampling, MIS and camera rays.
 #include <gtest/gtest.h>
 
 #include <cmath>

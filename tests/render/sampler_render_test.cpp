@@ -128,8 +128,8 @@ TEST(SamplerRender, FirstPassOfZSobolHasTheConvergedColour) {
   // 1000–1199: RMS xy distance 0.0025 (worst 0.0070) for zsobol against 0.0036 (worst
   // 0.0099) for independent and 0.0036 for sobol (whose first samples are independent
   // across pixels); on this test's seeds 100–195: zsobol 0.0025, independent 0.0032. (With
-  // cosh3, the default before session 15, they were about twice that: zsobol 0.0046,
-  // independent 0.0074.) The old nine-strata scheme's first sample is about 0.07 off.
+  // --wavelength-sampling cosh3 they are about twice that: zsobol 0.0046, independent
+  // 0.0074.) The nine-strata first sample (opt-in, render/transport_mode.h) is about 0.07 off.
   // Treating the 2D error as Gaussian (d² ~ rms²/2 · χ²₂, rms ≈ 0.0025 for zsobol, ≈ 0.0036
   // for independent), the bounds are (a) 0.012 for every seed: P(d > 0.012) =
   // e^-(0.012/0.0025)² ≈ 1e-10 per seed; (b) an RMS over 96 seeds below 0.0030:

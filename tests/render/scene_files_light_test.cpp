@@ -1,7 +1,7 @@
 // The repository's own scene files light what they show: with the environment (sky) removed,
 // a small render of each scene that has emissive geometry is not black. One-sided emitters
-// wound the wrong way round shine away from everything; four bench scenes did so from
-// session 20 to 23 (their area light faced the sky) and were lit by the sky alone.
+// wound the wrong way round shine away from everything; four bench scenes once did (their
+// area light faced the sky) and were lit by the sky alone.
 #include <gtest/gtest.h>
 
 #include <algorithm>

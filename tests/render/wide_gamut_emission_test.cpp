@@ -1,9 +1,9 @@
 // Wide-gamut emitters in spectral transport: a lamp's colour is fitted (the emission rule,
 // color/emission_spectrum.h) in its own colour space, adapted from that space's white to E,
 // and an emission texture's radiance is upsampled with the table of the emission colour's
-// space. Until session 26 both went through the working space (sRGB by default) first, so
-// an ACEScg or Rec.2020 lamp outside Rec.709 was clipped to it in a spectral render, though
-// spectral transport can carry it whole, and a textured one was clipped to Rec.709 in any
+// space. Taken through the working space (sRGB by default) first, an ACEScg or Rec.2020
+// lamp outside Rec.709 would be clipped to it in a spectral render, though spectral
+// transport can carry it whole, and a textured one would be clipped to Rec.709 in any
 // working space.
 #include <gtest/gtest.h>
 
@@ -121,8 +121,8 @@ TEST(WideGamutEmission, AWideGamutLampsTextureKeepsItsColourInSpectralTransport)
 
 // A Rec.709 texture (a PNG's, or one made in code) on an ACEScg lamp is converted to ACEScg
 // and multiplies the colour there, as a base colour texture's texels do: in RGB transport
-// in ACEScg the ceiling films conversion(texel) × L / Y(colour). Until session 26 the
-// Rec.709 numbers multiplied the ACEScg colour as they were, filming a more saturated red.
+// in ACEScg the ceiling films conversion(texel) × L / Y(colour). The Rec.709 numbers
+// multiplying the ACEScg colour unconverted would film a more saturated red.
 TEST(WideGamutEmission, ARec709TextureOnAWideGamutLampIsConvertedToTheLampsSpace) {
   const Vec3f texel(0.8f, 0.2f, 0.1f);
   Scene scene = ceiling(R"({"color": [1, 1, 1], "color_space": "acescg", "luminance_nits": 3})");

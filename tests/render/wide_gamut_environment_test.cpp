@@ -1,9 +1,8 @@
 // Environment maps keep their OpenEXR's gamut (TextureContent::color_own_gamut): an ACEScg
 // HDRI is held in ACEScg, its texels' radiance is converted (RGB transport) or upsampled
 // with ACEScg's table (spectral transport) where it lights the scene, and its importance
-// sampling weighs texels by ACEScg's luminance. Until session 26 every environment map was
-// converted to Rec.709 at load and clipped there, so an ACEScg sky's colours outside
-// Rec.709 were lost whatever the working space.
+// sampling weighs texels by ACEScg's luminance. Converted to Rec.709 at load and clipped
+// there, an ACEScg sky would lose its colours outside Rec.709 whatever the working space.
 #include <gtest/gtest.h>
 
 #include <algorithm>

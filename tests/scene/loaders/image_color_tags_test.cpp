@@ -1,7 +1,7 @@
 // PNG and JPEG colour tags (scene/image_color_tags.h) applied when an image is read as a
 // colour texture (scene/texture_file.h): cICP, an embedded ICC profile (PNG iCCP, JPEG
-// APP2), the sRGB chunk, cHRM and gAMA. Until session 28 every PNG and JPEG was read as
-// sRGB whatever it said, so a Display P3 texture rendered desaturated.
+// APP2), the sRGB chunk, cHRM and gAMA. Read as sRGB whatever it says, a Display P3
+// texture renders desaturated; these tests fail if the tags are ignored.
 //
 // The files in data/color_tags were written by Little CMS 2 (the ICC profiles) and Pillow
 // (the images), both independent of Prism (scripts/testdata/icc_texture_oracle.c and

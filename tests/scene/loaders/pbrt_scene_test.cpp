@@ -388,7 +388,7 @@ AttributeBegin
   EXPECT_EQ(*s.lights[1].spectrum, *named_emission_spectrum("F11"));
   ASSERT_TRUE(s.lights[2].spectrum);
   EXPECT_DOUBLE_EQ((*s.lights[2].spectrum)(550.0), 2.5);
-  ASSERT_TRUE(s.lights[3].spectrum);  // a constant sky's spectrum too (session 18)
+  ASSERT_TRUE(s.lights[3].spectrum);  // a constant sky's spectrum too
   EXPECT_EQ(*s.lights[3].spectrum, blackbody_emission_spectrum(6500.0));
   EXPECT_FALSE(s.lights[4].spectrum);  // FL3.1 is not one of Prism's tables
   const Material& lamp = s.materials[s.meshes[0].material];

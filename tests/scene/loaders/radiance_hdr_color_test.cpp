@@ -2,8 +2,8 @@
 // it is read as a colour texture (scene/texture_file.h): a PRIMARIES line is the texels'
 // colour space (an environment keeps it, as an OpenEXR sky keeps its chromaticities), XYZE
 // texels are CIE XYZ relative to the equal-energy white, and EXPOSURE and COLORCORR are
-// factors the texels were multiplied by. Until session 27 every .hdr was read as Rec.709
-// radiance whatever its header said.
+// factors the texels were multiplied by. A reader that ignored the header, taking every
+// .hdr for Rec.709 radiance, fails these tests.
 #include <gtest/gtest.h>
 
 #include <array>

@@ -320,7 +320,7 @@ TEST(TextureFile, OpenExrAttributeOfAFixedSizeTypeMustDeclareThatSize) {
 }
 
 TEST(TextureFile, OpenExrNamesLongerThanOpenExrReadsAreRefused) {
-  // Regression (fuzz_image_readers, session 27): a 358-byte EXR with a 42-character
+  // Regression input found by fuzz_image_readers: a 358-byte EXR with a 42-character
   // attribute name and no long-names flag. OpenEXR reads 31 characters of it and takes the
   // rest for the type name, so it parses other attributes than our walk did, and allocated
   // a string attribute of 1.7 GB. (Its channel list also lacks its final null, which the
@@ -351,7 +351,7 @@ TEST(TextureFile, OpenExrNamesLongerThanOpenExrReadsAreRefused) {
 // OpenEXR reads a chlist, a stringvector and a preview by their content, not their declared
 // size: a value whose content says otherwise puts OpenEXR out of step with the walk.
 TEST(TextureFile, OpenExrValuesReadByContentMustFillTheirSize) {
-  // Regression (fuzz_image_readers, session 27): a 2.7 kB EXR whose second channel list
+  // Regression input found by fuzz_image_readers: a 2.7 kB EXR whose second channel list
   // declares 55 bytes for three entries and no final null. OpenEXR read on into the next
   // attribute and later allocated a 1.6 GB string.
   const std::string message = regression_input_error("fuzz_exr_chlist_without_end.exr", TextureEncoding::linear);

@@ -2,7 +2,7 @@
 # Before/after timing on a noisy machine: runs two prism binaries alternately, ROUNDS times
 # each, on the same render, and prints each one's minimum and median wall seconds (from the
 # summary line `prism render` prints). Alternating spreads the machine's slow phases over
-# both; the minimum is the run least disturbed. BENCHMARKS.md "Session 19" used it.
+# both; the minimum is the run least disturbed (BENCHMARKS.md "How to measure a change").
 #
 #   scripts/bench/alternate_renders.sh ROUNDS BINARY_A BINARY_B -- RENDER ARGUMENTS...
 #   scripts/bench/alternate_renders.sh 10 /tmp/old/prism build/release/prism -- \

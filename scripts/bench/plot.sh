@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Plots `prism bench convergence --json FILE` as PNGs (gnuplot, from Debian; this script
 # installs gnuplot-nox and jq if they are missing — install-deps.sh does not).
-#   scripts/bench/plot.sh bench/results/convergence.json [OUT_DIR (default bench/plots)]
+#   scripts/bench/plot.sh bench/results/convergence-1024.json [OUT_DIR (default bench/plots)]
 # Writes OUT_DIR/convergence-relmse-spp.png, convergence-relmse-time.png and
 # convergence-chromaticity.png.
 set -euo pipefail

@@ -3,7 +3,8 @@
 // Shirley 2013, "Simple Analytic Approximations to the CIE XYZ Color Matching Functions",
 // JCGT 2(2), eq. 4 — each CMF is a sum of piecewise Gaussians whose width differs left
 // and right of the mean. Cheap and table-free, hence the seed renderer's GPU choice; its
-// error against the table is reported by tests/color/cie_1931_wyman_test.cpp.
+// error against the table is measured by Cie1931Wyman.MultiLobeFitErrorAgainstTheTable in
+// tests/color/cie_1931_test.cpp.
 #include <cmath>
 
 #include "prism/core/vec.h"

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <string>
+#include <utility>
 
 #include "prism/color/color_space.h"
 #include "prism/core/error.h"
@@ -28,6 +28,13 @@ const Aces2Parameters& checked(const Aces2Parameters& p) {
 
 Vec3d clamp(const Vec3d& v, double lo, double hi) {
   return {std::clamp(v.x, lo, hi), std::clamp(v.y, lo, hi), std::clamp(v.z, lo, hi)};
+}
+
+// cos h and sin h of a colour's hue, from its opponent pair (h = 0 where M = 0, as the
+// CAM's atan2 gives).
+std::pair<double, double> hue_direction(const Vec3d& aab, const Vec3d& jmh) {
+  if (!(jmh.y > 0.0)) return {1.0, 0.0};
+  return {aab.y / jmh.y, aab.z / jmh.y};
 }
 
 Aces2GamutGeometry make_geometry(const HellwigCam& input, const Aces2Tonescale& ts) {
@@ -64,8 +71,7 @@ Vec3d Aces2OutputTransform::limiting_rgb(const Vec3d& aces2065_1) const {
   const Vec3d aces = ap1_to_ap0_ * clamp(ap0_to_ap1_ * aces2065_1, 0.0, tonescale_.forward_limit);
   const Vec3d aab = input_cam_.rgb_to_aab(aces);
   const Vec3d jmh = input_cam_.aab_to_jmh(aab);
-  const double h = jmh.z * (std::numbers::pi / 180.0);
-  const double cos_h = std::cos(h), sin_h = std::sin(h);
+  const auto [cos_h, sin_h] = hue_direction(aab, jmh);
 
   // Tonescale on the achromatic response's luminance.
   const double j_ts =
@@ -84,9 +90,9 @@ Vec3d Aces2OutputTransform::display_nits(const Vec3d& aces2065_1) const {
 }
 
 Vec3d Aces2OutputTransform::aces_from_limiting_rgb(const Vec3d& rgb) const {
-  const Vec3d jmh = limit_cam_.rgb_to_jmh(rgb);
-  const double h = jmh.z * (std::numbers::pi / 180.0);
-  const double cos_h = std::cos(h), sin_h = std::sin(h);
+  const Vec3d aab = limit_cam_.rgb_to_aab(rgb);
+  const Vec3d jmh = limit_cam_.aab_to_jmh(aab);
+  const auto [cos_h, sin_h] = hue_direction(aab, jmh);
   const Aces2ChromaCompression::Context context{geometry_.limit_j_max, reach_.at(jmh.z),
                                                 chroma_.normaliser(cos_h, sin_h)};
   const Vec2<double> jm_ts = aces2_gamut_compress_inverse(jmh.x, jmh.y, context.reach_max_m,

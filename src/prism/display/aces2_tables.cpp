@@ -244,9 +244,11 @@ Aces2ReachTable make_aces2_reach_table(const HellwigCam& reach, double limit_j_m
 }
 
 Aces2HueShape Aces2CuspTable::shape(double hue_degrees, const Aces2GamutGeometry& g) const {
-  // Upper index of the interval containing the hue (the hues increase along the table).
-  const auto it = std::lower_bound(hue.begin(), hue.end(), hue_degrees);
-  const int hi = std::clamp(int(it - hue.begin()), 1, kUpperWrap);
+  // Upper index of the interval containing the hue (hue[hi − 1] < h ≤ hue[hi]). The hues
+  // are nearly one degree apart, so the search starts at the uniform table's position.
+  int hi = std::clamp(int(hue_degrees) + kFirst, 1, kUpperWrap);
+  while (hi < kUpperWrap && hue[hi] < hue_degrees) ++hi;
+  while (hi > 1 && hue[hi - 1] >= hue_degrees) --hi;
   const double t = (hue_degrees - hue[hi - 1]) / (hue[hi] - hue[hi - 1]);
   return make_hue_shape(lerp(cusp_j[hi - 1], cusp_j[hi], t), lerp(cusp_m[hi - 1], cusp_m[hi], t),
                         lerp(gamma_top_inv[hi - 1], gamma_top_inv[hi], t), g);

@@ -16,6 +16,7 @@
 #include "display_options.h"
 #include "environment_options.h"
 #include "progress_reporter.h"
+#include "render_denoise.h"
 #include "prism/color/chromatic_adaptation.h"
 #include "prism/color/color_space.h"
 #include "prism/color/wavelength_sampling.h"
@@ -74,6 +75,7 @@ struct RenderOptions {
   bool spp_given = false;
   std::string memory_limit;  // BYTES or SIZE with K/M/G/T; empty: 90 % of physical memory
   std::string aovs;          // "albedo,normal,depth,variance" subset; empty: none
+  bool denoise = false;      // --denoise: outputs show the denoised beauty (render_denoise.h)
 };
 
 // Parses "START:END" (END exclusive) into first_sample / samples_per_pixel.
@@ -150,6 +152,8 @@ void write_outputs(const std::vector<std::filesystem::path>& outputs, const Rend
                    const std::string& scene_name, const RenderSettings& settings, std::uint64_t fingerprint,
                    const RenderOptions& o, const DisplayCliOptions& display) {
   const color::ColorSpace& working = color::color_space(settings.transport.working_space);
+  const std::optional<ImageRgbF> denoised =
+      o.denoise ? std::optional(denoise_film(result.film, result.film_space, working)) : std::nullopt;
   for (const auto& path : outputs) {
     if (output_format(path) == OutputFormat::exr) {
       ExrMetadata meta;
@@ -169,14 +173,19 @@ void write_outputs(const std::vector<std::filesystem::path>& outputs, const Rend
       const color::ColorSpace& space = o.exr_space == "film" ? result.film_space : working;
       if (settings.aovs.any()) meta.strings["prism:aovs"] = format_aov_list(settings.aovs);
       const AovImages aovs = film_aov_images(result.film, color::conversion_matrix(result.film_space, space));
-      write_exr(path, film_image(result.film, result.film_space, space), chromaticities_of(space), meta, {},
-                aov_exr_channels(aovs));
+      std::vector<ExrChannelGroup> layers = aov_exr_channels(aovs);
+      ImageRgbF beauty = film_image(result.film, result.film_space, space);
+      if (denoised) beauty = exr_denoised_beauty(beauty, *denoised, working, space, layers);
+      write_exr(path, beauty, chromaticities_of(space), meta, {}, layers);
     } else if (output_format(path) == OutputFormat::radiance_hdr) {
       // Scene-referred like the EXR, in the same space: a spectral film in XYZ is written
       // as XYZE, unconverted.
       const color::ColorSpace& space = o.exr_space == "film" ? result.film_space : working;
       const RadianceWriteReport report =
-          write_radiance_hdr(path, film_image(result.film, result.film_space, space), space, fmt::format("Prism {}", kVersion));
+          write_radiance_hdr(path,
+                             denoised ? convert_image(*denoised, working, space)
+                                      : film_image(result.film, result.film_space, space),
+                             space, fmt::format("Prism {}", kVersion));
       if (report.clipped_pixels > 0)
         fmt::print(stderr,
                    "prism: warning: '{}': {} pixels lie outside {} (a negative channel) and were written with it at 0, "
@@ -187,7 +196,8 @@ void write_outputs(const std::vector<std::filesystem::path>& outputs, const Rend
       // they hold the beauty only, or the normal AOV for --view normal.
       std::optional<ImageRgbF> normals;
       if (result.film.aovs().normal) normals = film_aov_images(result.film, Mat3::identity()).normal;
-      write_display_output(path, film_image(result.film, result.film_space, working), working, display, normals);
+      write_display_output(path, denoised ? *denoised : film_image(result.film, result.film_space, working), working,
+                           display, normals);
     }
   }
 }
@@ -228,6 +238,7 @@ int run_render(const RenderOptions& o) {
   const ThreadLimit thread_limit(o.threads);
   if (o.width < 0 || o.height < 0) throw UsageError("--width and --height must be positive");
   if (!o.aovs.empty()) settings.aovs = parse_aov_list(o.aovs);
+  if (o.denoise) add_denoise_aovs(settings.aovs);
   // A display output's normal view shows the normal AOV: keep it when that view is asked for.
   if (display::DebugView::normal == selected_debug_view(o.display)) settings.aovs.normal = true;
 
@@ -441,6 +452,10 @@ void add_render_command(CLI::App& root, Action& action) {
                   "Z.coverage, the fraction of samples that hit); variance (variance.R/G/B, variance of the beauty's pixel "
                   "mean in the EXR's colour space, per channel). The beauty stays in R, G, B; PNG and AVIF outputs "
                   "hold the beauty only (--view normal turns the normal AOV on and shows it)");
+  cmd->add_flag("--denoise", options->denoise,
+                "Denoise the beauty (non-local means guided by albedo, normal, depth and variance; docs/denoising.md): "
+                "EXR, .hdr, PNG and AVIF outputs show the denoised image, the EXR keeps the noisy one as noisy.R/G/B "
+                "and the AOVs it used. Turns those four AOVs on");
   cmd->add_flag("--allow-external-paths", options->allow_external_paths,
                 "Let the scene file refer to files outside its own folder (absolute paths, '..')");
   add_environment_options(cmd, options->environment);

@@ -17,5 +17,6 @@ void add_tonemap_command(CLI::App& root, Action& action);
 void add_view_command(CLI::App& root, Action& action);
 void add_bench_command(CLI::App& root, Action& action);
 void add_generate_command(CLI::App& root, Action& action);
+void add_denoise_command(CLI::App& root, Action& action);
 
 }  // namespace prism::cli

@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   prism::cli::add_view_command(app, action);
   prism::cli::add_bench_command(app, action);
   prism::cli::add_generate_command(app, action);
+  prism::cli::add_denoise_command(app, action);
 
   try {
     app.parse(argc, argv);

@@ -40,5 +40,6 @@ SuiteReport run_scaling_suite(const BenchOptions& options);
 SuiteReport run_startup_suite(const BenchOptions& options);
 SuiteReport run_efficiency_suite(const BenchOptions& options);
 SuiteReport run_sampler_suite(const BenchOptions& options);
+SuiteReport run_denoise_suite(const BenchOptions& options);
 
 }  // namespace prism::bench

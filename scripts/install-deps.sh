@@ -20,6 +20,8 @@ packages=(
   xvfb xauth          # viewer GUI tests: virtual X server (issue 7)
   xdotool             # viewer GUI tests: synthetic input (issue 7)
   libgl1-mesa-dri     # viewer GUI tests: Mesa software OpenGL under Xvfb (issue 7)
+  slurm-wlm munge     # farm self-test: a one-node Slurm cluster (scripts/slurm/, issue 49)
+  python3             # farm self-test: compare-merge.py checks the merged image (issue 49)
 )
 # `--sanitizers`: what the sanitizer and fuzzing stages of ./scripts/test.sh need (issue 9):
 # clang with its runtimes (ASan/UBSan/libFuzzer) and llvm-symbolizer for readable reports.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <string>
 
 #include <fmt/format.h>
@@ -18,7 +19,8 @@ DisplayEncoding parse_display_encoding(std::string_view name) {
   if (n == "bt1886" || n == "rec709" || n == "bt.1886") return DisplayEncoding::bt1886;
   if (n == "pq" || n == "st2084") return DisplayEncoding::pq;
   if (n == "scrgb") return DisplayEncoding::scrgb;
-  throw UsageError("unknown encoding '" + std::string(name) + "' (valid: srgb, bt1886, pq, scrgb)");
+  if (n == "gamma22" || n == "gamma2.2") return DisplayEncoding::gamma22;
+  throw UsageError("unknown encoding '" + std::string(name) + "' (valid: srgb, bt1886, pq, scrgb, gamma22)");
 }
 
 std::string_view display_encoding_name(DisplayEncoding e) {
@@ -27,11 +29,12 @@ std::string_view display_encoding_name(DisplayEncoding e) {
     case DisplayEncoding::bt1886: return "bt1886";
     case DisplayEncoding::pq: return "pq";
     case DisplayEncoding::scrgb: return "scrgb";
+    case DisplayEncoding::gamma22: return "gamma22";
   }
   return "?";
 }
 
-std::vector<std::string> display_encoding_names() { return {"srgb", "bt1886", "pq", "scrgb"}; }
+std::vector<std::string> display_encoding_names() { return {"srgb", "bt1886", "pq", "scrgb", "gamma22"}; }
 
 bool is_float_encoding(DisplayEncoding e) { return e == DisplayEncoding::scrgb; }
 
@@ -39,6 +42,7 @@ color::IccToneCurve icc_tone_curve(DisplayEncoding e) {
   switch (e) {
     case DisplayEncoding::srgb: return color::IccToneCurve::srgb;
     case DisplayEncoding::bt1886: return color::IccToneCurve::gamma_2_4;
+    case DisplayEncoding::gamma22: return color::IccToneCurve::gamma_2_2;
     default: break;
   }
   throw UsageError(fmt::format("the {} encoding has no ICC tone curve (it is not a relative SDR curve)",
@@ -51,6 +55,7 @@ double encode_display_nits(DisplayEncoding e, double nits, double white_nits) {
     case DisplayEncoding::bt1886: return color::bt1886_encode(std::clamp(nits / white_nits, 0.0, 1.0));
     case DisplayEncoding::pq: return color::pq_encode_nits(std::clamp(nits, 0.0, color::kPqPeakNits));
     case DisplayEncoding::scrgb: return color::scrgb_from_nits(nits);
+    case DisplayEncoding::gamma22: return std::pow(std::clamp(nits / white_nits, 0.0, 1.0), 1.0 / 2.2);
   }
   return 0.0;
 }
@@ -61,6 +66,7 @@ double decode_display_nits(DisplayEncoding e, double code, double white_nits) {
     case DisplayEncoding::bt1886: return color::bt1886_decode(code) * white_nits;
     case DisplayEncoding::pq: return color::pq_decode_nits(code);
     case DisplayEncoding::scrgb: return color::scrgb_to_nits(code);
+    case DisplayEncoding::gamma22: return std::pow(std::max(code, 0.0), 2.2) * white_nits;
   }
   return 0.0;
 }

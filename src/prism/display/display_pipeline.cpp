@@ -12,6 +12,7 @@
 #include "prism/display/aces_output_kernel.h"
 #include "prism/display/blue_light_lmt.h"
 #include "prism/display/display_primaries.h"
+#include "prism/display/rendering_pipeline.h"
 #include "prism/display/resampling.h"
 #include "prism/display/dither.h"
 #include "prism/display/exposure.h"
@@ -82,6 +83,7 @@ Mat3 film_to_aces_matrix(const color::ColorSpace& film_space, double blue_correc
 
 DisplayImage apply_display_pipeline(const ImageRgbF& film_in, const color::ColorSpace& film_space,
                                     const DisplaySettings& s) {
+  if (s.rendering != Rendering::aces1) return apply_rendering_pipeline(film_in, film_space, s);
   const OdtDescription& odt = odt_description(s.odt);
   DisplayImage out;
   out.encoding = s.encoding.value_or(odt.default_encoding);

@@ -18,6 +18,7 @@
 #include "prism/display/bloom.h"
 #include "prism/display/ui_overlay.h"
 #include "prism/display/display_encoding.h"
+#include "prism/display/rendering.h"
 #include "prism/io/image.h"
 
 namespace prism::display {
@@ -28,8 +29,11 @@ struct DisplaySettings {
   bool auto_exposure = false;
   double auto_exposure_key = 0.18;
   double blue_correction = 0.0;                 // LMT strength in [0, 1]
+  // The rendering transform and the display target it renders for (rendering.h); other
+  // renderings than aces1 run in rendering_pipeline.h.
+  Rendering rendering = Rendering::aces1;
   OdtId odt = OdtId::srgb_100nit;
-  std::optional<DisplayEncoding> encoding;      // default: the ODT's own
+  std::optional<DisplayEncoding> encoding;      // default: default_encoding(rendering, odt)
   std::optional<bool> stretch_black;            // default: the Academy's (on)
   std::uint64_t dither_seed = 0x70726973;       // "pris"
   BloomSettings bloom;                          // strength 0: off

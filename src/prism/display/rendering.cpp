@@ -1,0 +1,76 @@
+#include "prism/display/rendering.h"
+
+#include <array>
+#include <cctype>
+#include <string>
+
+#include "prism/core/error.h"
+
+namespace prism::display {
+namespace {
+
+struct RenderingName {
+  Rendering id;
+  std::string_view name;
+};
+
+constexpr std::array<RenderingName, 3> kRenderings{{
+    {Rendering::aces1, "aces1"},
+    {Rendering::agx, "agx"},
+    {Rendering::pbr_neutral, "pbr-neutral"},
+}};
+
+std::string joined(const std::vector<std::string>& names) {
+  std::string s;
+  for (const auto& n : names) s += (s.empty() ? "" : ", ") + n;
+  return s;
+}
+
+}  // namespace
+
+Rendering parse_rendering(std::string_view name) {
+  std::string n(name);
+  for (char& c : n) c = c == '_' ? '-' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const RenderingName& r : kRenderings)
+    if (n == r.name) return r.id;
+  throw UsageError("unknown rendering '" + std::string(name) + "' (valid: " + joined(rendering_names()) + ")");
+}
+
+std::string_view rendering_name(Rendering r) {
+  for (const RenderingName& e : kRenderings)
+    if (e.id == r) return e.name;
+  return "?";
+}
+
+std::vector<std::string> rendering_names() {
+  std::vector<std::string> names;
+  for (const RenderingName& r : kRenderings) names.emplace_back(r.name);
+  return names;
+}
+
+bool rendering_supports_target(Rendering r, OdtId target) {
+  if (r == Rendering::aces1) return true;
+  const OdtDescription& odt = odt_description(target);
+  return target != OdtId::none && !odt.hdr;
+}
+
+std::vector<std::string> rendering_target_names(Rendering r) {
+  std::vector<std::string> names;
+  for (const std::string& name : odt_names())
+    if (rendering_supports_target(r, parse_odt(name))) names.push_back(name);
+  return names;
+}
+
+void require_rendering_target(Rendering r, OdtId target) {
+  if (rendering_supports_target(r, target)) return;
+  throw UsageError("--rendering " + std::string(rendering_name(r)) + " has no output for --odt " +
+                   std::string(odt_description(target).name) + " (valid: " + joined(rendering_target_names(r)) + ")");
+}
+
+DisplayEncoding default_encoding(Rendering r, OdtId target) {
+  const DisplayEncoding odt_encoding = odt_description(target).default_encoding;
+  if (r == Rendering::agx && odt_encoding == DisplayEncoding::srgb) return DisplayEncoding::gamma22;
+  return odt_encoding;
+}
+
+}  // namespace prism::display

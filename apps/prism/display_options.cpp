@@ -22,7 +22,9 @@ void add_display_options(CLI::App* cmd, DisplayCliOptions& o) {
   cmd->add_option("--f-number", o.f_number, "Camera aperture (with --shutter and --iso)");
   cmd->add_option("--shutter", o.shutter_s, "Camera shutter time in seconds");
   cmd->add_option("--iso", o.iso, "Camera ISO sensitivity");
-  cmd->add_flag("--auto-exposure", o.auto_exposure, "Expose the log-average luminance to --key");
+  cmd->add_flag("--auto-exposure", o.auto_exposure,
+                "Meter the image (the 40th-60th percentile mean of log luminance over zones that see a surface, "
+                "docs/display-pipeline.md) and expose it to --key; render does this unless an exposure is given");
   cmd->add_option("--key", o.key, "Auto-exposure key value (default 0.18)");
   cmd->add_option("--blue-correction", o.blue_correction, "Blue-light-artifact LMT strength 0..1 (default 0)");
   cmd->add_flag("--odt-stretch-black", o.stretch_black,

@@ -16,6 +16,7 @@
 #include "prism/display/resampling.h"
 #include "prism/display/dither.h"
 #include "prism/display/exposure.h"
+#include "prism/display/exposure_metering.h"
 
 namespace prism::display {
 
@@ -70,8 +71,10 @@ double exposure_scale(const DisplaySettings& s, const ImageRgbF& film, const col
   if (s.exposure_ev100 && s.auto_exposure) throw UsageError("give either an EV100 or auto exposure, not both");
   if (s.exposure_ev100) return exposure_scale_from_ev100(*s.exposure_ev100);
   if (s.auto_exposure) {
-    const double l_avg = log_average_luminance(film.rgb, film_space.rgb_to_xyz.row(1));
-    return exposure_scale_from_ev100(auto_exposure_ev100(l_avg, s.auto_exposure_key));
+    // The metering rule of exposure_metering.h; without coverage every finite pixel counts.
+    MeteringSettings metering;
+    metering.key = s.auto_exposure_key;
+    return exposure_scale_from_ev100(meter_exposure(film, film_space.rgb_to_xyz.row(1), {}, metering).ev100);
   }
   return 1.0;
 }

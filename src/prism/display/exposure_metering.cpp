@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "prism/color/color_space.h"
 #include "prism/core/error.h"
 
 namespace prism::display {
@@ -111,6 +112,30 @@ MeteredExposure meter_exposure(const ImageRgbF& film, const Vec3d& w, const std:
   out.clamped = clamped != ev;
   out.ev100 = std::round(clamped * 100.0) / 100.0;
   return out;
+}
+
+double median_displayed_luminance(const std::vector<float>& nits, const std::string& primaries, double white_nits,
+                                  const std::vector<float>& coverage) {
+  const Vec3d w = color::parse_color_space(primaries).rgb_to_xyz.row(1);
+  const std::size_t n = nits.size() / 3;
+  if (!coverage.empty() && coverage.size() != n) throw Error("median_displayed_luminance: coverage size");
+  std::vector<std::pair<double, double>> values;  // (Y / white, weight)
+  double total = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double c = coverage.empty() ? 1.0 : coverage[i];
+    const double y = (w.x * nits[3 * i] + w.y * nits[3 * i + 1] + w.z * nits[3 * i + 2]) / white_nits;
+    if (!(c > 0.0) || !std::isfinite(y)) continue;
+    values.emplace_back(y, c);
+    total += c;
+  }
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  double below = 0;
+  for (const auto& [y, c] : values) {
+    below += c;
+    if (below >= 0.5 * total) return y;
+  }
+  return values.back().first;
 }
 
 double adapt_ev100(std::optional<double> shown, double metered, double dt, double speed) {

@@ -17,14 +17,15 @@
 //      in half-diagonals and k = centre_weight.
 //   3. Trimmed mean. The mean of log2 Y over the histogram's weight between the
 //      low_percentile and high_percentile quantiles (the darkest and brightest tails are
-//      discarded: deep shadows, light sources, highlights), as game engines' histogram auto
-//      exposure does (Unreal's Low/High Percent, Unity HDRP's histogram percentages).
+//      discarded: deep shadows, light sources, highlights; by default all but the middle fifth
+//      around the median), as game engines' histogram auto exposure does (Unreal's Low/High Percent, Unity HDRP's histogram percentages).
 //   4. EV100 = log2(Y_m / (1.2·key)), so that the metered luminance Y_m exposes to `key`
 //      (exposure.h: exposed = Y / (1.2·2^EV100)), clamped to [ev100_min, ev100_max] and
 //      rounded to 1/100 EV, so that the printed value repeats the picture exactly.
 // A film with no covered pixel (a frame of sky alone, or no coverage given) meters every
 // finite pixel instead; a film with no light at all gets EV100 0.
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "prism/core/vec.h"
@@ -33,12 +34,15 @@
 namespace prism::display {
 
 struct MeteringSettings {
-  // Quantiles of the zone weight kept by the trimmed mean: the darkest 10 % and the
-  // brightest 10 % are discarded. The window is centred on the median so that the image's
+  // Quantiles of the zone weight kept by the trimmed mean: the darkest 40 % and the
+  // brightest 40 % are discarded. The window is centred on the median so that the image's
   // median luminance lands near the key (ACES and the other renderings show scene 0.18 at
-  // 10–20 % of SDR white, the middle of a photograph's mid-tones).
-  double low_percentile = 0.10;
-  double high_percentile = 0.90;
+  // 10–20 % of SDR white, the middle of a photograph's mid-tones) even when the image is
+  // bimodal (half in hard shadow, half in sun: a wider window meters between the two modes
+  // and leaves the larger one, where the median is, far from the key), while averaging a
+  // fifth of the zones keeps the reading steady as samples accumulate.
+  double low_percentile = 0.40;
+  double high_percentile = 0.60;
   double centre_weight = 0.0;  // k in [0, 1]; 0: every covered zone counts the same
   double key = 0.18;           // the exposed value the metered luminance maps to
   // Moonless night (about −6) to noon sun on snow (about 17) with a margin: beyond these a
@@ -63,6 +67,13 @@ struct MeteredExposure {
 // surface); empty: every pixel counts fully.
 MeteredExposure meter_exposure(const ImageRgbF& film, const Vec3d& luminance_weights,
                                const std::vector<float>& coverage, const MeteringSettings& settings);
+
+// The goal the metering is held to (docs/display-pipeline.md): the coverage-weighted median
+// of the displayed relative luminance Y / Y_white of an SDR display image (`nits` in its
+// output primaries, white at white_nits), over the pixels that see something. Coverage as
+// for meter_exposure (empty: every pixel). A photograph's mid-tones: 0.05–0.30.
+double median_displayed_luminance(const std::vector<float>& display_nits, const std::string& primaries,
+                                  double white_nits, const std::vector<float>& coverage);
 
 // Eye adaptation in log space: the shown EV moves toward the metered one exponentially,
 // metered + (shown − metered)·exp(−speed·dt), so that the exposure glides instead of

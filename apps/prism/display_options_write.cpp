@@ -92,7 +92,7 @@ void validate_display_output(const std::filesystem::path& out, const DisplayCliO
   const display::DisplayEncoding enc = output_encoding(ext, s);
   if (ocio_mode(o) && ext != ".png") throw UsageError("the OCIO path writes PNG only");
   if (view != display::DebugView::none && view != display::DebugView::gamut_clip &&
-      view != display::DebugView::sdr_hdr_split && ext != ".png")
+      view != display::DebugView::sdr_hdr_split && view != display::DebugView::bloom && ext != ".png")
     throw UsageError("--view " + o.view + " writes a PNG");
   if (ext == ".exr" && enc != display::DisplayEncoding::scrgb)
     throw UsageError("EXR output holds linear scRGB: use --encoding scrgb or a .png/.avif output");
@@ -162,3 +162,6 @@ void write_display_output(const std::filesystem::path& out, const ImageRgbF& fil
 }
 
 }  // namespace prism::cli
+    case display::DebugView::bloom:
+      write_shown(out, ext, display::bloom_only_view(film, film_space, s), s, o);
+      return;

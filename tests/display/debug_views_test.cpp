@@ -17,7 +17,8 @@ TEST(DisplayView, Names) {
   EXPECT_EQ(parse_debug_view("gamut-clip"), DebugView::gamut_clip);
   EXPECT_EQ(parse_debug_view("SDR_HDR_SPLIT"), DebugView::sdr_hdr_split);
   EXPECT_THROW(parse_debug_view("heatmap"), UsageError);
-  EXPECT_EQ(debug_view_names().size(), 6u);
+  EXPECT_EQ(debug_view_names().size(), 7u);
+  EXPECT_EQ(parse_debug_view("bloom"), DebugView::bloom);
 }
 
 TEST(DisplayView, LuminanceScaleAndLabels) {

@@ -91,6 +91,14 @@ ImageRgbF bloom_halo(const ImageRgbF& bright, int levels) {
   return halo;
 }
 
+ImageRgbF bloom_component(const ImageRgbF& image, const BloomSettings& s) {
+  if (!(s.strength >= 0.0 && s.strength <= 1.0)) throw UsageError("bloom strength must be in [0, 1]");
+  if (!(s.threshold >= 0.0 && std::isfinite(s.threshold))) throw UsageError("bloom threshold must be >= 0");
+  ImageRgbF halo = bloom_halo(bloom_bright_pass(image, s.threshold, s.threshold_space), s.levels);
+  for (float& v : halo.rgb) v = static_cast<float>(s.strength * v);
+  return halo;
+}
+
 ImageRgbF apply_bloom(const ImageRgbF& image, const BloomSettings& s) {
   if (!(s.strength >= 0.0 && s.strength <= 1.0)) throw UsageError("bloom strength must be in [0, 1]");
   if (!(s.threshold >= 0.0 && std::isfinite(s.threshold))) throw UsageError("bloom threshold must be >= 0");

@@ -37,6 +37,10 @@ ImageRgbF bloom_bright_pass(const ImageRgbF& image, double threshold, BloomThres
 // The multi-scale blur of `bright` (the `halo` above), same size.
 ImageRgbF bloom_halo(const ImageRgbF& bright, int levels);
 
+// The light the stage spreads, strength · halo (the `bloom` debug view shows it alone);
+// apply_bloom's output is image + component − strength · bright.
+ImageRgbF bloom_component(const ImageRgbF& image, const BloomSettings& settings);
+
 // The whole stage on an exposed scene-linear image. Strength 0 returns the input unchanged.
 ImageRgbF apply_bloom(const ImageRgbF& image, const BloomSettings& settings);
 

@@ -17,6 +17,7 @@ constexpr std::pair<DebugView, const char*> kViews[] = {
     {DebugView::gamut_clip, "gamut-clip"},
     {DebugView::sdr_hdr_split, "sdr-hdr-split"},
     {DebugView::chromaticity, "chromaticity"},
+    {DebugView::bloom, "bloom"},
 };
 
 void set_pixel(DisplayImage& image, std::size_t i, const Vec3d& nits) {
@@ -97,6 +98,19 @@ DisplayImage sdr_hdr_split_view(const ImageRgbF& film, const color::ColorSpace& 
       set_pixel(hdr, i, light);
     }
   return hdr;
+}
+
+DisplayImage bloom_only_view(const ImageRgbF& film, const color::ColorSpace& film_space, const DisplaySettings& s) {
+  const double scale = exposure_scale(s, film, film_space);
+  ImageRgbF exposed = film;
+  for (float& v : exposed.rgb) v = std::isfinite(v) ? static_cast<float>(v * scale) : 0.0f;
+  BloomSettings bloom = s.bloom;
+  if (!(bloom.strength > 0.0)) bloom.strength = 1.0;
+  DisplaySettings shown = s;
+  shown.bloom.strength = 0.0;  // the component is already the bloom
+  shown.auto_exposure = false;
+  shown.exposure_ev100 = -std::log2(1.2);  // scale 1: the component is exposed already
+  return apply_display_pipeline(bloom_component(exposed, bloom), film_space, shown);
 }
 
 ImageRgbF normal_view(const ImageRgbF& n) {

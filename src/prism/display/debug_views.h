@@ -5,6 +5,7 @@
 //   sdr-hdr-split                   left half SDR at a chosen SDR white, right half HDR
 //   chromaticity                    CIE 1931 xy diagram, chromaticity_diagram.h
 //   normal                          shading normals as colour (needs an N.x/N.y/N.z AOV)
+//   bloom                           the bloom component alone (the halo bloom spreads)
 #include <string>
 #include <string_view>
 #include <vector>
@@ -14,7 +15,7 @@
 
 namespace prism::display {
 
-enum class DebugView { none, normal, luminance, luminance_display, gamut_clip, sdr_hdr_split, chromaticity };
+enum class DebugView { none, normal, luminance, luminance_display, gamut_clip, sdr_hdr_split, chromaticity, bloom };
 
 // "normal", "luminance", …; UsageError listing the names otherwise.
 DebugView parse_debug_view(std::string_view name);
@@ -33,6 +34,11 @@ std::size_t mark_gamut_clip(DisplayImage& image);
 // converted to the HDR output's primaries; a one-pixel grey divider marks the seam.
 DisplayImage sdr_hdr_split_view(const ImageRgbF& film, const color::ColorSpace& film_space,
                                 const DisplaySettings& settings, double sdr_white_nits);
+
+// The bloom component alone: strength · halo of the exposed film's light above the threshold
+// (bloom.h bloom_component; with bloom off, what strength 1 would spread), shown through the
+// same rendering, target and encoding as the image, with the image's exposure.
+DisplayImage bloom_only_view(const ImageRgbF& film, const color::ColorSpace& film_space, const DisplaySettings& settings);
 
 // Surface normals in [−1, 1] as sRGB codes 0.5 + 0.5·N (the usual normal-map colours).
 ImageRgbF normal_view(const ImageRgbF& normals);

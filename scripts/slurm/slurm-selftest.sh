@@ -19,6 +19,10 @@
 #    parts store their means as float, so a merge is not bitwise; see compare-merge.py).
 #    Checks that parts 1 and 2 equal their ranges rendered in one go bit for bit, and that
 #    `prism merge` refuses overlapping parts and a part rendered with another seed.
+# 5. Submits a second, tiny farm render whose task 1 fails (its output path is a folder):
+#    task 0's part must stay and the merge job wait for ever (DependencyNeverSatisfied).
+#    Then cancels that merge, fixes the cause and resubmits with the same OUTDIR: task 0 must
+#    skip its finished part, task 1 render, and the new merge job run.
 # Exits 0 only if everything held; prints where the logs are (OUTDIR/logs). Every wait is
 # bounded, and the EXIT trap cancels the jobs and stops the daemons it started, whatever
 # happened.
@@ -69,12 +73,14 @@ fi
 # --- 2. A one-node cluster ----------------------------------------------------------------
 mkdir -p "$outdir"
 outdir=$(realpath "$outdir")
-rm -rf "$outdir/parts" "$outdir/checkpoints" "$outdir/logs" "$outdir"/{merged,single,foreign,refused}.exr \
+rm -rf "$outdir/parts" "$outdir/checkpoints" "$outdir/logs" "$outdir/failure" \
+  "$outdir"/{merged,single,foreign,refused}.exr \
   "$outdir"/uninterrupted-*.exr
 logs="$outdir/logs"
 mkdir -p "$logs/cluster"
 work=$(mktemp -d /tmp/prism-slurm-selftest.XXXXXX)
-munged_pid="" slurmctld_pid="" slurmd_pid="" array_id="" merge_id=""
+munged_pid="" slurmctld_pid="" slurmd_pid=""
+user=$(id -un)
 
 # stop PID NAME: SIGTERM, up to 15 s, then SIGKILL; only processes this script started.
 stop() {
@@ -92,7 +98,7 @@ cleanup() {
   set +e
   trap - INT TERM
   if [ -n "$slurmctld_pid" ] && kill -0 "$slurmctld_pid" 2>/dev/null; then
-    timeout 20 scancel --quiet $array_id $merge_id 2>/dev/null
+    timeout 20 scancel --quiet --user="$user" 2>/dev/null  # every job: the cluster is this script's
     # Cancelled jobs leave once slurmd has killed their processes (KillWait=5 below).
     for _ in $(seq 100); do
       [ -z "$(timeout 10 squeue -h -o %i 2>/dev/null)" ] && break
@@ -156,7 +162,6 @@ munge --socket="$socket" --no-input | unmunge --socket="$socket" >/dev/null || f
 node=$(hostname -s)
 ctld_port=$(free_port)
 slurmd_port=$(free_port "$ctld_port")
-user=$(id -un)
 export SLURM_CONF="$work/slurm.conf"  # read by every Slurm command below
 cat >"$SLURM_CONF" <<EOF
 # One-node cluster of slurm-selftest.sh: no systemd, no cgroups, everything under $work.
@@ -205,11 +210,16 @@ wait_for 60 "node $node to be idle" alive_and "$slurmd_pid" slurmd node_idle
 
 # --- 3. The farm render -------------------------------------------------------------------
 say "submitting $tasks tasks of cornell-box ${size}x${size}, $spp spp, and the merge job"
-ids=$("$here/submit.sh" --prism "$prism" cornell-box "$spp" "$tasks" "$outdir" -- "${render_args[@]}")
-array_id=$(awk '$1 == "array" {print $2}' <<<"$ids")
-merge_id=$(awk '$1 == "merge" {print $2}' <<<"$ids")
-[ -n "$array_id" ] && [ -n "$merge_id" ] || fail "submit.sh printed no job ids: $ids"
-say "array job $array_id, merge job $merge_id"
+# submit OUTDIR SPP TASKS RENDER_ARGS...: submit.sh; sets array_id and merge_id.
+submit() {
+  local ids
+  ids=$("$here/submit.sh" --prism "$prism" cornell-box "$2" "$3" "$1" -- "${@:4}") || fail "submit.sh failed"
+  array_id=$(awk '$1 == "array" {print $2}' <<<"$ids")
+  merge_id=$(awk '$1 == "merge" {print $2}' <<<"$ids")
+  [ -n "$array_id" ] && [ -n "$merge_id" ] || fail "submit.sh printed no job ids: $ids"
+  say "array job $array_id, merge job $merge_id"
+}
+submit "$outdir" "$spp" "$tasks" "${render_args[@]}"
 
 job_state() { timeout 10 scontrol show job -o "$1" 2>/dev/null | grep -o 'JobState=[A-Z_]*' | head -1 | cut -d= -f2; }
 task_log() { echo "$logs/render-${array_id}_$1.log"; }
@@ -241,16 +251,21 @@ interrupt_while_rendering "$requeued_task" requeueing scontrol requeue "${array_
 interrupt_while_rendering "$time_limited_task" "signalling the time limit (USR1) to" \
   scancel --batch --signal=USR1 "${array_id}_$time_limited_task"
 
-merge_done() {
+# job_done JOB: true once JOB completed, false while it may still run; fails otherwise.
+job_done() {
   local state
-  state=$(job_state "$merge_id")
+  state=$(job_state "$1")
   case "$state" in
     COMPLETED) return 0 ;;
-    PENDING | RUNNING | CONFIGURING | COMPLETING | REQUEUED) return 1 ;;
-    *) fail "merge job $merge_id ended as ${state:-unknown} ($(timeout 10 scontrol show job -o "$merge_id" | grep -o 'Reason=[^ ]*'))" ;;
+    PENDING)
+      ! timeout 10 scontrol show job -o "$1" | grep -q "Reason=DependencyNeverSatisfied" ||
+        fail "job $1 can never run: a job it depends on failed"
+      return 1 ;;
+    RUNNING | CONFIGURING | COMPLETING | REQUEUED) return 1 ;;
+    *) fail "job $1 ended as ${state:-unknown} ($(timeout 10 scontrol show job -o "$1" | grep -o 'Reason=[^ ]*'))" ;;
   esac
 }
-wait_for 180 "the array and the merge job" merge_done
+wait_for 180 "the array and the merge job" job_done "$merge_id"
 for ((i = 0; i < tasks; i++)); do
   state=$(job_state "${array_id}_$i")
   [ "$state" = COMPLETED ] || fail "task $i ended as $state"
@@ -310,3 +325,36 @@ refused "overlapping parts" "${parts[0]}" "${parts[0]}"
 refused "a part rendered with another seed" "${parts[@]}" "$outdir/foreign.exr"
 rm -f "$outdir/foreign.exr"
 say "prism merge refused overlapping parts and a part of other settings ($logs/refusals.log)"
+
+# --- 5. A task that fails keeps the others' parts; a resubmission renders only the rest ----
+failing="$outdir/failure"
+say "a farm render whose task 1 fails (its output path is a folder), in $failing"
+mkdir -p "$failing/parts"
+mkdir "$failing/parts/.part-1.rendering.exr"  # prism cannot write task 1's image: exit 1
+submit "$failing" 16 2 --width "$size" --height "$size"
+task_failed() {
+  local state
+  state=$(job_state "${array_id}_1")
+  case "$state" in
+    FAILED) return 0 ;;
+    PENDING | CONFIGURING | RUNNING | COMPLETING | "") return 1 ;;
+    *) fail "task 1 was to fail but ended as $state" ;;
+  esac
+}
+wait_for 60 "task 1 to fail" task_failed
+wait_for 60 "task 0 to complete" job_done "${array_id}_0"
+merge_stuck() { timeout 10 scontrol show job -o "$merge_id" | grep -q "JobState=PENDING.*Reason=DependencyNeverSatisfied"; }
+wait_for 30 "the merge job to wait for ever" merge_stuck
+[ -e "$failing/parts/part-0.exr" ] || fail "task 1's failure lost task 0's part"
+[ ! -e "$failing/merged.exr" ] || fail "a merge ran although task 1 failed"
+say "task 1 failed; task 0's part is kept and merge job $merge_id waits (DependencyNeverSatisfied)"
+
+rmdir "$failing/parts/.part-1.rendering.exr"
+timeout 20 scancel "$merge_id" || fail "scancel $merge_id failed"
+submit "$failing" 16 2 --width "$size" --height "$size"
+wait_for 120 "the resubmitted array and merge job" job_done "$merge_id"
+grep -q "already rendered, nothing to do" "$failing/logs/render-${array_id}_0.log" ||
+  fail "the resubmitted task 0 rendered again"
+grep -q "done: " "$failing/logs/render-${array_id}_1.log" || fail "the resubmitted task 1 did not render its part"
+[ -s "$failing/merged.exr" ] || fail "the resubmission left no $failing/merged.exr"
+say "resubmitted: task 0 skipped its finished part, task 1 rendered, the merge ran"

@@ -12,7 +12,8 @@
 
 namespace prism {
 
-void write_exr_scrgb(const std::filesystem::path& path, const ImageRgbF& image, double white_nits) {
+void write_exr_scrgb(const std::filesystem::path& path, const ImageRgbF& image, double white_nits,
+                     const ExrMetadata& metadata) {
   // scRGB uses the ITU-R BT.709 primaries and D65 white: take them from color/. Half floats,
   // as scRGB swap chains use.
   const color::ColorSpace& rec709 = color::color_space("srgb");
@@ -22,7 +23,7 @@ void write_exr_scrgb(const std::filesystem::path& path, const ImageRgbF& image, 
   ExrWriteOptions options;
   options.pixel_type = ExrPixelType::half;
   options.white_luminance_nits = white_nits;
-  write_exr(path, image, c, {}, options);
+  write_exr(path, image, c, metadata, options);
 }
 
 double read_exr_white_luminance(const std::filesystem::path& path) {

@@ -6,6 +6,9 @@
 #include <png.h>
 
 #include <cstdio>
+#include <vector>
+
+#include "prism/io/png.h"
 
 namespace prism::libpng {
 
@@ -24,5 +27,9 @@ inline void on_warning(png_structp, png_const_charp) {}
 struct FileCloser {
   void operator()(std::FILE* f) const { std::fclose(f); }
 };
+
+// libpng's text records for png_set_text, pointing into `entries` (which must outlive the
+// write). Throws IoError for a keyword outside 1–79 characters. In png.cpp.
+std::vector<png_text> text_chunks(const std::vector<PngText>& entries);
 
 }  // namespace prism::libpng

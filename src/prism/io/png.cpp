@@ -30,6 +30,25 @@ int color_type_for(int channels) {
   }
 }
 
+}  // namespace
+
+std::vector<png_text> libpng::text_chunks(const std::vector<PngText>& entries) {
+  std::vector<png_text> text;
+  for (const PngText& e : entries) {
+    if (e.keyword.empty() || e.keyword.size() > 79)
+      throw IoError(fmt::format("PNG text keyword '{}' must have 1 to 79 characters", e.keyword));
+    png_text t{};
+    t.compression = PNG_TEXT_COMPRESSION_NONE;
+    t.key = const_cast<png_charp>(e.keyword.c_str());  // libpng copies; it does not write through these
+    t.text = const_cast<png_charp>(e.text.c_str());
+    t.text_length = e.text.size();
+    text.push_back(t);
+  }
+  return text;
+}
+
+namespace {
+
 // The libpng calls live in functions whose frames hold only trivially destructible
 // objects, so longjmp out of them is well defined. Returns false on error.
 bool write_rows(std::FILE* fp, const EncodedImage& image, bool srgb, png_bytep* rows, PngErrorState& err) {
@@ -139,6 +158,12 @@ PngFile read_png(const std::filesystem::path& path) {
   PngHeader h;
   bool ok = read_header(png, info, fp.get(), h);
   PngFile result;
+  if (ok) {
+    png_textp text = nullptr;
+    const int n_text = png_get_text(png, info, &text, nullptr);
+    for (int i = 0; i < n_text; ++i)
+      result.text.push_back(PngText{text[i].key, std::string(text[i].text, text[i].text_length)});
+  }
   std::vector<png_byte> bytes;
   if (ok) {
     const std::size_t row_bytes = static_cast<std::size_t>(h.width) * h.channels * (h.bit_depth / 8);

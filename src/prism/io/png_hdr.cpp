@@ -34,7 +34,7 @@ png_unknown_chunk make_chunk(const char (&name)[5], std::uint8_t* data, std::siz
 // As in png.cpp: the libpng calls live in a frame with only trivially destructible
 // objects, so the longjmp out of it is well defined.
 bool write_all(std::FILE* fp, const EncodedImage& image, const PngColorMetadata& meta, png_unknown_chunk* chunks,
-               int n_chunks, png_bytep* rows, ErrorState& err) {
+               int n_chunks, png_textp text, int n_text, png_bytep* rows, ErrorState& err) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, &err, libpng::on_error, libpng::on_warning);
   if (!png) return false;
   png_infop info = png_create_info_struct(png);
@@ -58,6 +58,7 @@ bool write_all(std::FILE* fp, const EncodedImage& image, const PngColorMetadata&
     png_set_unknown_chunks(png, info, chunks, n_chunks);
     for (int i = 0; i < n_chunks; ++i) png_set_unknown_chunk_location(png, info, i, PNG_HAVE_IHDR);
   }
+  if (n_text > 0) png_set_text(png, info, text, n_text);
   png_write_info(png, info);
   png_write_image(png, rows);
   png_write_end(png, info);
@@ -110,8 +111,10 @@ void write_png_with_color_metadata(const std::filesystem::path& path, const Enco
   AtomicFile file(path);
   std::unique_ptr<std::FILE, FileCloser> fp(std::fopen(file.temporary_path().c_str(), "wb"));
   if (!fp) throw IoError(fmt::format("cannot write '{}': {}", path.string(), std::strerror(errno)));
+  std::vector<png_text> text = libpng::text_chunks(meta.text);
   ErrorState err;
-  if (!write_all(fp.get(), image, meta, chunks.data(), static_cast<int>(chunks.size()), rows.data(), err))
+  if (!write_all(fp.get(), image, meta, chunks.data(), static_cast<int>(chunks.size()), text.data(),
+                 static_cast<int>(text.size()), rows.data(), err))
     throw IoError(fmt::format("cannot write '{}': {}", path.string(), err.message));
   if (std::fflush(fp.get()) != 0 || std::ferror(fp.get()))
     throw IoError(fmt::format("cannot write '{}': {}", path.string(), std::strerror(errno)));

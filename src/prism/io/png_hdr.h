@@ -10,6 +10,7 @@
 
 #include "prism/io/hdr10_metadata.h"
 #include "prism/io/image.h"
+#include "prism/io/png.h"
 
 namespace prism {
 
@@ -22,6 +23,7 @@ struct PngColorMetadata {
   // (PNG forbids both). Readers that know cICP give it precedence over iCCP.
   std::vector<std::uint8_t> icc_profile;
   std::string icc_profile_name = "ICC profile";  // 1–79 Latin-1 characters
+  std::vector<PngText> text;  // tEXt chunks, before the image data
 };
 
 // 8- or 16-bit RGB; writes atomically. Throws IoError.

@@ -9,6 +9,7 @@
 #include "display_options.h"
 #include "prism/color/color_space.h"
 #include "prism/core/error.h"
+#include "prism/display/rendering.h"
 #include "prism/io/exr.h"
 #include "prism/io/read_to_end.h"
 #include "prism/scene/radiance_hdr.h"
@@ -57,11 +58,23 @@ int run_tonemap(const TonemapOptions& o) {
   return 0;
 }
 
+// The --help footer: every rendering with the display targets it has.
+std::string rendering_target_table() {
+  std::string text = "Renderings (--rendering) and their display targets (--odt):\n";
+  for (const std::string& name : display::rendering_names()) {
+    text += "  " + name + ":";
+    for (const std::string& target : display::rendering_target_names(display::parse_rendering(name)))
+      text += " " + target;
+    text += "\n";
+  }
+  return text + "A file's values enter unscaled unless --ev100, the camera settings or --auto-exposure is given.";
+}
+
 }  // namespace
 
 void add_tonemap_command(CLI::App& root, Action& action) {
   auto opts = std::make_shared<TonemapOptions>();
-  CLI::App* cmd = root.add_subcommand("tonemap", "Apply the display pipeline (exposure, ACES RRT+ODT, encoding) to an EXR or .hdr");
+  CLI::App* cmd = root.add_subcommand("tonemap", "Apply the display pipeline (exposure, rendering, display target, encoding) to an EXR or .hdr");
   cmd->add_option("input", opts->input, "Scene-linear OpenEXR (its chromaticities, Rec.709 when absent, give its space) or Radiance .hdr (its "
                   "PRIMARIES or XYZE format, Rec.709 without)")
       ->required();
@@ -69,6 +82,7 @@ void add_tonemap_command(CLI::App& root, Action& action) {
                   "Output .png (SDR, or HDR with cICP/mDCv/cLLi), .avif (10/12-bit with CICP) or .exr (scRGB)")
       ->required();
   add_display_options(cmd, opts->display);
+  cmd->footer(rendering_target_table());
   cmd->callback([&action, opts] { action = [opts] { return run_tonemap(*opts); }; });
 }
 

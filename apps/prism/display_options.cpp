@@ -3,6 +3,7 @@
 #include "display_options.h"
 
 #include <cmath>
+#include <cstdlib>
 
 #include "prism/core/error.h"
 #include "prism/display/display_primaries.h"
@@ -12,11 +13,16 @@
 namespace prism::cli {
 
 void add_display_options(CLI::App* cmd, DisplayCliOptions& o) {
+  cmd->add_option("--rendering", o.rendering, "Rendering transform: " + [] {
+    std::string n;
+    for (const auto& s : display::rendering_names()) n += (n.empty() ? "" : ", ") + s;
+    return n;
+  }() + " (default " + std::string(display::rendering_name(display::kDefaultRendering)) + "); with --odt as the display target");
   cmd->add_option("--odt", o.odt, "Output transform: " + [] {
     std::string n;
     for (const auto& s : display::odt_names()) n += (n.empty() ? "" : ", ") + s;
     return n;
-  }() + " (default srgb-100nit)");
+  }() + " (default srgb-100nit; with $OCIO set and neither --odt nor --rendering: the config's default display and view)");
   cmd->add_option("--encoding", o.encoding, "srgb, bt1886, pq or scrgb (default: the ODT's; scrgb for .exr)");
   cmd->add_option("--ev100", o.ev100, "Exposure value at ISO 100; max luminance 1.2·2^EV100 maps to 1.0");
   cmd->add_option("--f-number", o.f_number, "Camera aperture (with --shutter and --iso)");
@@ -49,7 +55,11 @@ void add_display_options(CLI::App* cmd, DisplayCliOptions& o) {
   cmd->add_option("--overlay", o.overlay, "RGBA sRGB PNG composited in HDR (same size as the output)");
   cmd->add_option("--ui-nits", o.ui_nits, "Overlay white luminance, 80..300 nits (default 200)");
   cmd->add_option("--ui-blend-power", o.ui_blend_power, "Overlay peak blend power p: weight alpha^p (default 5)");
-  cmd->add_option("--ocio-config", o.ocio_config, "Use this OpenColorIO config instead of the ACES path ($OCIO when only --display)");
+  cmd->add_option("--ocio-config", o.ocio_config,
+                  "Use this OpenColorIO config's display and view ($OCIO when only --display, or when neither "
+                  "--rendering nor --odt is given)");
+  // The command line is where the environment is read; the library takes the path.
+  if (const char* env = std::getenv("OCIO")) o.ocio_environment = env;
   cmd->add_option("--display", o.ocio_display, "OCIO display name (OCIO path)");
   cmd->add_option("--ocio-input-space", o.ocio_input_space, "OCIO colour space of the film (default: role scene_linear)");
 }
@@ -62,9 +72,32 @@ void require_non_negative(const std::optional<double>& v, const char* what) {
 
 }  // namespace
 
+bool uses_ocio(const DisplayCliOptions& o) {
+  return !o.ocio_config.empty() || !o.ocio_display.empty() ||
+         (!o.ocio_environment.empty() && o.rendering.empty() && o.odt.empty());
+}
+
+display::OcioDisplaySettings ocio_settings(const DisplayCliOptions& o) {
+  return {o.ocio_config.empty() ? o.ocio_environment : o.ocio_config, o.ocio_display, o.view, o.ocio_input_space};
+}
+
+std::string describe_display(const DisplayCliOptions& o) {
+  if (uses_ocio(o)) {
+    const display::OcioDisplaySettings ocio = ocio_settings(o);
+    const display::OcioDisplayView chosen = display::resolve_ocio_display_view(ocio);
+    return "OpenColorIO config " + ocio.config_path + (o.ocio_config.empty() ? " ($OCIO)" : "") + ", display '" +
+           chosen.display + "', view '" + chosen.view + "'";
+  }
+  const display::DisplaySettings s = make_display_settings(o);
+  return "rendering " + std::string(display::rendering_name(s.rendering)) + ", target " +
+         std::string(display::odt_description(s.odt).name);
+}
+
 display::DisplaySettings make_display_settings(const DisplayCliOptions& o) {
   display::DisplaySettings s;
-  s.odt = display::parse_odt(o.odt);
+  s.rendering = o.rendering.empty() ? display::kDefaultRendering : display::parse_rendering(o.rendering);
+  s.odt = display::parse_odt(o.odt.empty() ? "srgb-100nit" : o.odt);
+  display::require_rendering_target(s.rendering, s.odt);
   if (!o.encoding.empty()) s.encoding = display::parse_display_encoding(o.encoding);
   const bool camera = o.f_number || o.shutter_s || o.iso;
   if (int(o.ev100.has_value()) + int(camera) + int(o.auto_exposure) > 1)

@@ -13,12 +13,15 @@
 #include "prism/color/color_space.h"
 #include "prism/display/debug_views.h"
 #include "prism/display/display_pipeline.h"
+#include "prism/display/ocio_display.h"
 #include "prism/io/image.h"
 
 namespace prism::cli {
 
 struct DisplayCliOptions {
-  std::string odt = "srgb-100nit", encoding;
+  std::string rendering;  // empty: the default rendering (display::kDefaultRendering)
+  std::string odt;        // empty: srgb-100nit
+  std::string encoding;
   std::optional<double> ev100, f_number, shutter_s, iso;
   bool auto_exposure = false;
   double key = 0.18, blue_correction = 0.0;
@@ -35,9 +38,22 @@ struct DisplayCliOptions {
   std::string overlay;
   double ui_nits = 200.0, ui_blend_power = 5.0;
   std::string ocio_config, ocio_display, ocio_input_space;
+  // $OCIO as the command line found it (add_display_options reads it; empty when unset): with
+  // neither --rendering nor --odt, the outputs go through that config's default display and
+  // view, as OpenColorIO's own tools and Blender do.
+  std::string ocio_environment;
 };
 
-// Adds --odt, --encoding, exposure, --bloom…, --display-primaries, --render-scale, --view,
+// Whether the options select the OpenColorIO path: --ocio-config or --display, or $OCIO with
+// neither --rendering nor --odt.
+bool uses_ocio(const DisplayCliOptions& options);
+// The OpenColorIO settings of that path (the config: --ocio-config, else $OCIO).
+display::OcioDisplaySettings ocio_settings(const DisplayCliOptions& options);
+// One line for the summary: "OpenColorIO config C, display D, view V" or "rendering R,
+// target T". Throws UsageError for a bad OCIO config/display/view.
+std::string describe_display(const DisplayCliOptions& options);
+
+// Adds --rendering, --odt, --encoding, exposure, --bloom…, --display-primaries, --render-scale, --view,
 // --overlay/--ui-nits, --ocio-config/--display, HDR10 metadata, --bit-depth, --dither-seed.
 void add_display_options(CLI::App* cmd, DisplayCliOptions& options);
 

@@ -3,8 +3,11 @@
 #include <cctype>
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "display_options.h"
 #include "prism/core/error.h"
+#include "prism/io/exr.h"
 #include "prism/display/chromaticity_diagram.h"
 #include "prism/display/debug_views.h"
 #include "prism/display/luminance_view.h"
@@ -25,7 +28,7 @@ std::string lower_extension(const std::filesystem::path& path) {
   return ext;
 }
 
-bool ocio_mode(const DisplayCliOptions& o) { return !o.ocio_config.empty() || !o.ocio_display.empty(); }
+bool ocio_mode(const DisplayCliOptions& o) { return uses_ocio(o); }
 
 display::DebugView debug_view(const DisplayCliOptions& o) {
   return o.view.empty() || ocio_mode(o) ? display::DebugView::none : display::parse_debug_view(o.view);
@@ -35,13 +38,30 @@ std::uint8_t cicp_transfer(display::DisplayEncoding e) {
   switch (e) {
     case display::DisplayEncoding::pq: return 16;
     case display::DisplayEncoding::bt1886: return 1;
+    case display::DisplayEncoding::gamma22: return 4;  // H.273: "assumed display gamma 2.2"
     default: return 13;
   }
 }
 
+// An EXR output is display-linear scRGB unless --encoding says otherwise (which the
+// validation refuses): the light the target shows, not its code values.
 display::DisplayEncoding output_encoding(const std::string& ext, const display::DisplaySettings& s) {
   return s.encoding.value_or(ext == ".exr" ? display::DisplayEncoding::scrgb
-                                           : display::odt_description(s.odt).default_encoding);
+                                           : display::default_encoding(s.rendering, s.odt));
+}
+
+// The settings for `output`: the encoding made explicit (scRGB for .exr).
+display::DisplaySettings output_settings(const std::string& ext, const DisplayCliOptions& o) {
+  display::DisplaySettings s = make_display_settings(o);
+  s.encoding = output_encoding(ext, s);
+  return s;
+}
+
+// What the file says about how it was made: the rendering and the display target.
+std::vector<PngText> display_png_text(const display::DisplaySettings& s) {
+  std::vector<PngText> text{{"prism:rendering", std::string(display::rendering_name(s.rendering))},
+                            {"prism:displayTarget", std::string(display::odt_description(s.odt).name)}};
+  return text;
 }
 
 void write_png_view(const std::filesystem::path& out, const display::Canvas& canvas) {
@@ -51,7 +71,10 @@ void write_png_view(const std::filesystem::path& out, const display::Canvas& can
 void write_shown(const std::filesystem::path& out, const std::string& ext, const display::DisplayImage& shown,
                  const display::DisplaySettings& s, const DisplayCliOptions& o) {
   if (ext == ".exr") {
-    write_exr_scrgb(out, ImageRgbF{shown.width, shown.height, shown.code});
+    ExrMetadata meta;
+    meta.strings["prism:rendering"] = std::string(display::rendering_name(s.rendering));
+    meta.strings["prism:displayTarget"] = std::string(display::odt_description(s.odt).name);
+    write_exr_scrgb(out, ImageRgbF{shown.width, shown.height, shown.code}, 80.0, meta);
     return;
   }
   const color::ColorSpace primaries = color::parse_color_space(shown.primaries);
@@ -65,6 +88,7 @@ void write_shown(const std::filesystem::path& out, const std::string& ext, const
   // SDR: sRGB chunk, or an ICC profile (+ cICP) for other primaries and curves; PQ: cICP.
   const bool pq = shown.encoding == display::DisplayEncoding::pq;
   PngColorMetadata meta = pq ? PngColorMetadata{} : sdr_png_color_metadata(primaries, display::icc_tone_curve(shown.encoding));
+  meta.text = display_png_text(s);
   if (pq && cp != 0) meta.cicp = CicpInfo{cp, cicp_transfer(shown.encoding), 0, 1};
   if (pq) {
     const display::OdtDescription& odt = display::odt_description(s.odt);
@@ -81,6 +105,28 @@ void write_shown(const std::filesystem::path& out, const std::string& ext, const
                                 meta);
 }
 
+// The OpenColorIO path: the config's code values, which OCIO does not describe — PNG without
+// colour chunks, AVIF with unspecified CICP primaries and transfer (2, 2) — and the config,
+// display and view in the PNG's text.
+void write_ocio_output(const std::filesystem::path& out, const std::string& ext, const ImageRgbF& film,
+                       double exposure_scale, const display::DisplaySettings& s, const DisplayCliOptions& o) {
+  const display::OcioDisplaySettings ocio = ocio_settings(o);
+  const display::OcioDisplayView chosen = display::resolve_ocio_display_view(ocio);
+  const display::DisplayImage shown = display::apply_ocio_display(film, exposure_scale, ocio);
+  if (ext == ".avif") {
+    write_avif(out, display::quantise_display_image(shown, o.bit_depth ? o.bit_depth : 10, s.dither_seed),
+               CicpInfo{2, 2, 0, 1});
+    return;
+  }
+  PngColorMetadata meta;
+  meta.text = {{"prism:rendering", "ocio"},
+               {"prism:ocioConfig", ocio.config_path},
+               {"prism:ocioDisplay", chosen.display},
+               {"prism:ocioView", chosen.view}};
+  write_png_with_color_metadata(out, display::quantise_display_image(shown, o.bit_depth ? o.bit_depth : 16, s.dither_seed),
+                                meta);
+}
+
 }  // namespace
 
 void validate_display_output(const std::filesystem::path& out, const DisplayCliOptions& o) {
@@ -90,7 +136,11 @@ void validate_display_output(const std::filesystem::path& out, const DisplayCliO
   const display::DisplaySettings s = make_display_settings(o);
   const display::DebugView view = debug_view(o);
   const display::DisplayEncoding enc = output_encoding(ext, s);
-  if (ocio_mode(o) && ext != ".png") throw UsageError("the OCIO path writes PNG only");
+  if (s.display_primaries && enc == display::DisplayEncoding::scrgb)
+    throw UsageError("scRGB is defined on Rec.709 primaries: --display-primaries needs a .png/.avif output");
+  if (ocio_mode(o) && ext == ".exr")
+    throw UsageError("the OpenColorIO path writes display code values to .png or .avif; for an .exr name --rendering or --odt");
+  if (ocio_mode(o)) display::resolve_ocio_display_view(ocio_settings(o));  // bad config/display/view
   if (view != display::DebugView::none && view != display::DebugView::gamut_clip &&
       view != display::DebugView::sdr_hdr_split && view != display::DebugView::bloom && ext != ".png")
     throw UsageError("--view " + o.view + " writes a PNG");
@@ -113,12 +163,11 @@ void write_display_output(const std::filesystem::path& out, const ImageRgbF& fil
                           const DisplayCliOptions& o, const std::optional<ImageRgbF>& normals) {
   validate_display_output(out, o);
   const std::string ext = lower_extension(out);
-  const display::DisplaySettings s = make_display_settings(o);
+  const display::DisplaySettings s = output_settings(ext, o);
+  // Which rendering (or OpenColorIO config) made the file: one line per display output.
+  fmt::print("prism: {}: {}\n", out.string(), describe_display(o));
   if (ocio_mode(o)) {
-    const display::OcioDisplaySettings ocio{o.ocio_config, o.ocio_display, o.view, o.ocio_input_space};
-    const display::DisplayImage shown = display::apply_ocio_display(film, display::exposure_scale(s, film, film_space), ocio);
-    write_png(out, display::quantise_display_image(shown, o.bit_depth ? o.bit_depth : 16, s.dither_seed),
-              PngWriteOptions{false});
+    write_ocio_output(out, ext, film, display::exposure_scale(s, film, film_space), s, o);
     return;
   }
   switch (debug_view(o)) {
@@ -152,6 +201,9 @@ void write_display_output(const std::filesystem::path& out, const ImageRgbF& fil
       write_shown(out, ext, shown, s, o);
       return;
     }
+    case display::DebugView::bloom:
+      write_shown(out, ext, display::bloom_only_view(film, film_space, s), s, o);
+      return;
     case display::DebugView::sdr_hdr_split:
       write_shown(out, ext, display::sdr_hdr_split_view(film, film_space, s, o.sdr_white_nits), s, o);
       return;
@@ -162,6 +214,3 @@ void write_display_output(const std::filesystem::path& out, const ImageRgbF& fil
 }
 
 }  // namespace prism::cli
-    case display::DebugView::bloom:
-      write_shown(out, ext, display::bloom_only_view(film, film_space, s), s, o);
-      return;

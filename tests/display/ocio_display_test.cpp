@@ -55,17 +55,22 @@ TEST(DisplayOcio, ConfigFileDisplayAndView) {
   for (std::size_t i = 0; i < film.rgb.size(); ++i) EXPECT_NEAR(raw.code[i], 2.0 * film.rgb[i], 1e-6);
 }
 
-TEST(DisplayOcio, HonoursOcioEnvironmentVariable) {
+// The library takes the config as a parameter, never from $OCIO (the command line reads it):
+// no path is an error even with $OCIO set; empty display/view names pick the defaults.
+TEST(DisplayOcio, ConfigIsAParameterAndNamesDefault) {
   const test::ScratchFolder scratch;
   const auto path = write_config(scratch);
+  const DisplayImage out = apply_ocio_display(ramp(), 1.0, {path.string(), "", "", ""});  // default display/view
+  EXPECT_NEAR(out.code[3 * 5], color::srgb_encode(0.5 / 3.0), 1e-5);
+  const OcioDisplayView chosen = resolve_ocio_display_view({path.string(), "", "", ""});
+  EXPECT_EQ(chosen.display, "sRGB");
+  EXPECT_EQ(chosen.view, "Standard");
   const char* old = std::getenv("OCIO");
   const std::string saved = old ? old : "";
   setenv("OCIO", path.c_str(), 1);
-  const DisplayImage out = apply_ocio_display(ramp(), 1.0, {"", "", "", ""});  // default display/view
-  EXPECT_NEAR(out.code[3 * 5], color::srgb_encode(0.5 / 3.0), 1e-5);
-  unsetenv("OCIO");
   EXPECT_THROW(apply_ocio_display(ramp(), 1.0, {"", "sRGB", "Standard", ""}), UsageError);
   if (old) setenv("OCIO", saved.c_str(), 1);
+  else unsetenv("OCIO");
 }
 
 TEST(DisplayOcio, BadConfigDisplayOrView) {

@@ -3,7 +3,6 @@
 #include <OpenColorIO/OpenColorIO.h>
 
 #include <cmath>
-#include <cstdlib>
 #include <exception>
 
 #include "prism/core/error.h"
@@ -14,13 +13,31 @@ namespace prism::display {
 namespace {
 
 OCIO::ConstConfigRcPtr load_config(const std::string& path) {
-  if (!path.empty()) return OCIO::Config::CreateFromFile(path.c_str());
-  const char* env = std::getenv("OCIO");
-  if (env == nullptr || *env == '\0') throw UsageError("no OCIO config: give --ocio-config FILE or set $OCIO");
-  return OCIO::Config::CreateFromEnv();
+  if (path.empty()) throw UsageError("no OCIO config: give --ocio-config FILE or set $OCIO");
+  return OCIO::Config::CreateFromFile(path.c_str());
+}
+
+OcioDisplayView resolve(const OCIO::Config& config, const OcioDisplaySettings& s) {
+  const std::string display = s.display.empty() ? config.getDefaultDisplay() : s.display;
+  bool known = false;
+  for (int i = 0; i < config.getNumDisplays(); ++i) known |= display == config.getDisplay(i);
+  if (!known) throw UsageError("OCIO config has no display '" + display + "'");
+  const std::string view = s.view.empty() ? config.getDefaultView(display.c_str()) : s.view;
+  known = false;
+  for (int i = 0; i < config.getNumViews(display.c_str()); ++i) known |= view == config.getView(display.c_str(), i);
+  if (!known) throw UsageError("OCIO display '" + display + "' has no view '" + view + "'");
+  return {display, view};
 }
 
 }  // namespace
+
+OcioDisplayView resolve_ocio_display_view(const OcioDisplaySettings& s) {
+  try {
+    return resolve(*load_config(s.config_path), s);
+  } catch (const OCIO::Exception& e) {
+    throw UsageError(std::string("OpenColorIO: ") + e.what());
+  }
+}
 
 DisplayImage apply_ocio_display(const ImageRgbF& film, double exposure_scale, const OcioDisplaySettings& s) {
   DisplayImage out;
@@ -31,14 +48,7 @@ DisplayImage apply_ocio_display(const ImageRgbF& film, double exposure_scale, co
   out.exposure_scale = exposure_scale;
   try {
     OCIO::ConstConfigRcPtr config = load_config(s.config_path);
-    const std::string display = s.display.empty() ? config->getDefaultDisplay() : s.display;
-    bool known = false;
-    for (int i = 0; i < config->getNumDisplays(); ++i) known |= display == config->getDisplay(i);
-    if (!known) throw UsageError("OCIO config has no display '" + display + "'");
-    const std::string view = s.view.empty() ? config->getDefaultView(display.c_str()) : s.view;
-    known = false;
-    for (int i = 0; i < config->getNumViews(display.c_str()); ++i) known |= view == config->getView(display.c_str(), i);
-    if (!known) throw UsageError("OCIO display '" + display + "' has no view '" + view + "'");
+    const auto [display, view] = resolve(*config, s);
     const std::string input = s.input_space.empty() ? std::string(OCIO::ROLE_SCENE_LINEAR) : s.input_space;
     OCIO::DisplayViewTransformRcPtr t = OCIO::DisplayViewTransform::Create();
     t->setSrc(input.c_str());

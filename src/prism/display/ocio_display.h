@@ -1,9 +1,10 @@
 #pragma once
-// An alternative to the built-in ACES path: a studio's OpenColorIO config
-// (`--ocio-config FILE --display NAME --view NAME`; with no file, the config named by $OCIO,
-// as OCIO::GetCurrentConfig does). The film, after exposure, is taken to be in the config's
-// input colour space (default: its `scene_linear` role) and run through the config's
-// display/view processor; the result is the display's code values, as OCIO defines them.
+// An alternative to the built-in renderings: a studio's OpenColorIO config
+// (`--ocio-config FILE --display NAME --view NAME`). The film, after exposure, is taken to be
+// in the config's input colour space (default: its `scene_linear` role) and run through the
+// config's display/view processor; the result is the display's code values, as OCIO defines
+// them. The config is a parameter: the command line and the viewer read $OCIO, as OpenColorIO's
+// own tools do, and pass it here.
 #include <string>
 
 #include "prism/display/display_pipeline.h"
@@ -11,10 +12,17 @@
 namespace prism::display {
 
 struct OcioDisplaySettings {
-  std::string config_path;   // empty: $OCIO
+  std::string config_path;   // required (empty: UsageError)
   std::string display, view; // empty: the config's default display / its default view
   std::string input_space;   // empty: the scene_linear role
 };
+
+// The display and view the settings select (the config's defaults for empty names), checked
+// against the config. Bad config, display or view: UsageError.
+struct OcioDisplayView {
+  std::string display, view;
+};
+OcioDisplayView resolve_ocio_display_view(const OcioDisplaySettings& settings);
 
 // Code values (3 per pixel, as OCIO returns them) in DisplayImage::code; `nits` is empty
 // (OCIO does not say what light its displays show) and the encoding is marked srgb so that

@@ -44,12 +44,25 @@ started=$(date +%s)
 
 say() { echo "slurm-selftest: $(date -u +%H:%M:%S) $*"; }
 fail() { echo "slurm-selftest: FAIL: $*" >&2; exit 1; }
-# wait_for SECONDS WHAT COMMAND...: polls COMMAND every 0.2 s; fails after SECONDS.
+# Everything after the installation must end within this many seconds, so that the test
+# fails and cleans up on its own well before CTest's timeout (300 s) would kill it (which
+# would leave the jobs' slurmstepd processes, which are not its children, running).
+budget_seconds=180
+deadline=""
+remaining() {
+  local left=$((deadline - $(date +%s)))
+  [ "$left" -gt 0 ] || fail "out of time: the test's budget of $budget_seconds s is spent"
+  echo "$left"
+}
+bounded() { timeout "$(remaining)" "$@"; }  # COMMAND..., stopped at the deadline
+# wait_for SECONDS WHAT COMMAND...: polls COMMAND every 0.2 s; fails after SECONDS or at
+# the deadline.
 wait_for() {
-  local deadline=$(($(date +%s) + $1)) what=$2
+  local give_up_at=$(($(date +%s) + $1)) what=$2
   shift 2
+  [ "$give_up_at" -le "$deadline" ] || give_up_at=$deadline
   until "$@"; do
-    [ "$(date +%s)" -lt "$deadline" ] || fail "timed out waiting for $what"
+    [ "$(date +%s)" -lt "$give_up_at" ] || fail "timed out waiting for $what"
     sleep 0.2
   done
 }
@@ -71,6 +84,7 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 # --- 2. A one-node cluster ----------------------------------------------------------------
+deadline=$(($(date +%s) + budget_seconds))
 mkdir -p "$outdir"
 outdir=$(realpath "$outdir")
 rm -rf "$outdir/parts" "$outdir/checkpoints" "$outdir/logs" "$outdir/failure" \
@@ -213,7 +227,7 @@ say "submitting $tasks tasks of cornell-box ${size}x${size}, $spp spp, and the m
 # submit OUTDIR SPP TASKS RENDER_ARGS...: submit.sh; sets array_id and merge_id.
 submit() {
   local ids
-  ids=$("$here/submit.sh" --prism "$prism" cornell-box "$2" "$3" "$1" -- "${@:4}") || fail "submit.sh failed"
+  ids=$(bounded "$here/submit.sh" --prism "$prism" cornell-box "$2" "$3" "$1" -- "${@:4}") || fail "submit.sh failed"
   array_id=$(awk '$1 == "array" {print $2}' <<<"$ids")
   merge_id=$(awk '$1 == "merge" {print $2}' <<<"$ids")
   [ -n "$array_id" ] && [ -n "$merge_id" ] || fail "submit.sh printed no job ids: $ids"
@@ -295,20 +309,20 @@ say "tasks $requeued_task and $time_limited_task were requeued and resumed from 
 
 # --- 4. One process, and the comparison ---------------------------------------------------
 say "rendering the same $spp spp in one process"
-timeout 300 "$prism" render cornell-box "${render_args[@]:0:4}" --spp "$spp" -o "$outdir/single.exr" \
+bounded "$prism" render cornell-box "${render_args[@]:0:4}" --spp "$spp" -o "$outdir/single.exr" \
   >>"$logs/single.log" 2>&1 || fail "the single render failed (see $logs/single.log)"
 parts=()
 for ((i = 0; i < tasks; i++)); do parts+=("$outdir/parts/part-$i.exr"); done
-python3 "$here/compare-merge.py" "$outdir/single.exr" "$outdir/merged.exr" "${parts[@]}" ||
+bounded python3 "$here/compare-merge.py" "$outdir/single.exr" "$outdir/merged.exr" "${parts[@]}" ||
   fail "merged.exr differs from single.exr"
 
 # The parts of the interrupted tasks, rendered over two runs with a checkpoint between
 # them, equal the same ranges rendered in one go, bit for bit.
 for task in "$requeued_task" "$time_limited_task"; do
   range="$((task * spp / tasks)):$(((task + 1) * spp / tasks))"
-  timeout 300 "$prism" render cornell-box "${render_args[@]:0:4}" --sample-range "$range" \
+  bounded "$prism" render cornell-box "${render_args[@]:0:4}" --sample-range "$range" \
     -o "$outdir/uninterrupted-$task.exr" >>"$logs/single.log" 2>&1 || fail "the render of range $range failed"
-  python3 "$here/compare-merge.py" --bitwise "$outdir/uninterrupted-$task.exr" "${parts[$task]}" "${parts[$task]}" ||
+  bounded python3 "$here/compare-merge.py" --bitwise "$outdir/uninterrupted-$task.exr" "${parts[$task]}" "${parts[$task]}" ||
     fail "part $task, resumed after Slurm stopped it, differs from the range rendered in one go"
   rm -f "$outdir/uninterrupted-$task.exr"
 done
@@ -316,11 +330,11 @@ done
 # The merge refuses parts that do not belong together.
 refused() {  # refused WHAT PARTS...: prism merge must exit 2 and write nothing
   local status=0
-  "$prism" merge "${@:2}" -o "$outdir/refused.exr" >>"$logs/refusals.log" 2>&1 || status=$?
+  bounded "$prism" merge "${@:2}" -o "$outdir/refused.exr" >>"$logs/refusals.log" 2>&1 || status=$?
   [ "$status" = 2 ] && [ ! -e "$outdir/refused.exr" ] || fail "prism merge accepted $1 (status $status)"
 }
 refused "overlapping parts" "${parts[0]}" "${parts[0]}"
-"$prism" render cornell-box "${render_args[@]:0:4}" --seed 7 --sample-range "$spp:$((spp + 1))" \
+bounded "$prism" render cornell-box "${render_args[@]:0:4}" --seed 7 --sample-range "$spp:$((spp + 1))" \
   -o "$outdir/foreign.exr" >>"$logs/refusals.log" 2>&1 || fail "the foreign part's render failed"
 refused "a part rendered with another seed" "${parts[@]}" "$outdir/foreign.exr"
 rm -f "$outdir/foreign.exr"

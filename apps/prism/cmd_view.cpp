@@ -19,11 +19,13 @@ void add_view_command(CLI::App& root, Action& action) {
   cmd->add_option("--frames", o->frames,
                   "Render this many passes, then exit (with --screenshot: write what the window shows first)");
   cmd->add_option("--screenshot", o->screenshot, "With --frames: PNG of the window, UI included");
-  cmd->add_option("--ev100", o->ev100, "Initial exposure (EV100); default: auto exposure");
+  cmd->add_option("--ev100", o->ev100,
+                  "Initial exposure (EV100); default: the scene camera's, else metered as render meters it "
+                  "(docs/display-pipeline.md), adapting smoothly as the view changes");
   cmd->add_option("--odt", o->odt, "Initial output transform (see prism tonemap --help)")->capture_default_str();
   cmd->add_option("--view", o->view,
                   "Initial debug view: normal (shading-normal AOV as 0.5 + 0.5·N), luminance, luminance-display, "
-                  "gamut-clip, sdr-hdr-split, chromaticity");
+                  "gamut-clip, sdr-hdr-split, chromaticity, bloom (the bloom component alone)");
   cmd->add_option("--mode", o->mode, "Initial transport: spectral or rgb")->capture_default_str();
   cmd->add_option("--sampler", o->sampler, "Random numbers of each path: independent, sobol or zsobol (default: as render)");
   cmd->add_option("--normal-mapping", o->normal_mapping,
@@ -35,7 +37,8 @@ void add_view_command(CLI::App& root, Action& action) {
                   "Show the film every N bounces of the paths in flight, not only after whole passes (the "
                   "seed's #Bounce/Frame; 0: off). Never changes the converged image")
       ->capture_default_str();
-  cmd->add_option("--max-depth", o->max_depth, "Maximum number of bounces (0: emitted light only)")->capture_default_str();
+  cmd->add_option("--max-depth", o->max_depth,
+                  "Maximum number of bounces (0: emitted light only); default: the scene file's, else 64, as render");
   cmd->add_option("--threads", o->threads, "Worker threads for loading, preparing and rendering (default: all cores)");
   cmd->add_option("--resolution-scale", o->resolution_scale, "Film size as a fraction of the window, 0.125..1")
       ->capture_default_str();

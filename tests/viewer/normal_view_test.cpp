@@ -37,7 +37,9 @@ TEST(ViewerNormalView, ShowsTheFilmsNormalAov) {
   ASSERT_TRUE(frame->normals);
   ASSERT_EQ(frame->normals->rgb.size(), 3u * 32 * 32);
 
-  DisplayJob job{frame, {}, 1, nullptr};
+  DisplayJob job;
+  job.film = frame;
+  job.controls_version = 1;
   job.controls.view = display::DebugView::normal;
   const DisplayFrame shown = compute_display_frame(job);
   ASSERT_TRUE(shown.error.empty()) << shown.error;

@@ -9,8 +9,10 @@
 
 #include "prism/core/error.h"
 #include "prism/display/chromaticity_diagram.h"
+#include "prism/display/exposure_metering.h"
 #include "prism/display/luminance_view.h"
 #include "prism/display/raster.h"
+#include "prism/display/sdr_preview.h"
 
 namespace prism::viewer {
 namespace {
@@ -41,37 +43,74 @@ void show(const display::DisplayImage& image, std::uint64_t seed, DisplayFrame& 
   else to_rgba8(display::quantise_display_image(image, 8, seed), out);
 }
 
+// Below this the shown EV counts as having reached the metered one (0.7 % in light).
+constexpr double kSettledEv = 0.01;
+
+// Auto exposure: meter the film (the rule `prism render` uses, with the film's coverage) and
+// adapt the shown EV toward it; the pipeline then gets that EV.
+void resolve_exposure(const DisplayJob& job, display::DisplaySettings& s, DisplayFrame& out) {
+  const DisplayControls& c = job.controls;
+  if (c.auto_exposure) {
+    display::MeteringSettings m = c.metering;
+    m.key = c.auto_exposure_key;
+    const ImageRgbF& film = job.film->film;
+    const double metered =
+        display::meter_exposure(film, job.film->film_space.rgb_to_xyz.row(1), job.film->coverage, m).ev100;
+    const double ev = display::adapt_ev100(job.shown_ev100, metered, job.seconds_since_shown, c.adaptation_speed);
+    out.metered_ev100 = metered;
+    out.exposure_adapting = std::abs(ev - metered) > kSettledEv;
+    s.auto_exposure = false;
+    s.exposure_ev100 = out.exposure_adapting ? ev : metered;
+  }
+  out.ev100 = s.exposure_ev100.value_or(0.0);
+}
+
+// What an SDR window shows of an HDR target: the same settings on the SDR 100-nit target in
+// Rec.709 with the sRGB curve (the rendering's own SDR picture), never PQ code values.
+display::DisplaySettings sdr_preview_settings(display::DisplaySettings s) {
+  s.odt = display::OdtId::srgb_100nit;
+  s.encoding.reset();
+  s.display_primaries.reset();
+  s.overlay.reset();
+  return s;
+}
+
 void fill_frame(const DisplayJob& job, DisplayFrame& out) {
   const ImageRgbF& film = job.film->film;
   const color::ColorSpace& space = job.film->film_space;
   display::DisplaySettings s = resolved_display_settings(job.controls);
-  // The overlay must match the output size, round(film size / render scale).
-  const auto output_size = [&](int n) { return static_cast<int>(std::lround(n / s.render_scale)); };
-  const bool composite_ui = job.ui_rgba && hdr_output(job.controls) &&
-                            job.ui_rgba->width == output_size(film.width) &&
-                            job.ui_rgba->height == output_size(film.height);
-  if (composite_ui)
-    s.overlay = display::make_ui_overlay(*job.ui_rgba, job.controls.ui_nits, job.controls.ui_blend_power);
+  resolve_exposure(job, s, out);
+  const bool hdr = hdr_output(job.controls);
   auto image = std::make_shared<display::DisplayImage>(display::apply_display_pipeline(film, space, s));
   out.content_light = content_light_level(image->nits);
   out.image = image;
+  // An HDR target in this SDR window: show the SDR preview, say so, save the HDR image.
+  std::shared_ptr<const display::DisplayImage> shown = image;
+  if (hdr) {
+    shown = std::make_shared<display::DisplayImage>(display::apply_display_pipeline(film, space, sdr_preview_settings(s)));
+    out.preview_note = "SDR preview (srgb-100nit) of the HDR output " +
+                       std::string(display::odt_description(s.odt).name) + "; saved images are HDR";
+  }
   using display::DebugView;
   switch (job.controls.view) {
     case DebugView::none:
-      show(*image, s.dither_seed, out);
-      out.ui_composited = composite_ui;
+      show(*shown, s.dither_seed, out);
       return;
     case DebugView::gamut_clip: {
       display::DisplayImage marked = *image;
       display::mark_gamut_clip(marked);
+      if (hdr) marked = display::transfer_marks(*image, marked, *shown);
       show(marked, s.dither_seed, out);
-      out.ui_composited = composite_ui;
       return;
     }
     case DebugView::sdr_hdr_split:
-      if (!hdr_output(job.controls)) throw UsageError("the SDR/HDR split view needs an HDR ODT");
-      show(display::sdr_hdr_split_view(film, space, s, job.controls.sdr_white_nits), s.dither_seed, out);
-      out.ui_composited = composite_ui;
+      if (!hdr) throw UsageError("the SDR/HDR split view needs an HDR ODT");
+      show(display::sdr_preview_of_display_light(display::sdr_hdr_split_view(film, space, s, job.controls.sdr_white_nits),
+                                                 job.controls.sdr_white_nits),
+           s.dither_seed, out);
+      return;
+    case DebugView::bloom:
+      show(display::bloom_only_view(film, space, s), s.dither_seed, out);
       return;
     case DebugView::luminance: {
       const std::vector<float> y = display::luminance_nits(film.rgb, space);
@@ -158,9 +197,16 @@ void DisplayWorker::run() {
       pending_.reset();
       working_ = true;
     }
+    // Eye adaptation continues from what the window last showed, over the time since.
+    const auto now = std::chrono::steady_clock::now();
+    if (latest_ && latest_->metered_ev100 && latest_time_) {
+      job.shown_ev100 = latest_->ev100;
+      job.seconds_since_shown = std::chrono::duration<double>(now - *latest_time_).count();
+    }
     auto frame = std::make_shared<const DisplayFrame>(compute_display_frame(job));
     std::lock_guard lock(mutex_);
     latest_ = std::move(frame);
+    latest_time_ = now;
     working_ = false;
   }
 }

@@ -2,6 +2,7 @@
 // The viewer's display thread: runs the display pipeline (or a debug view) of
 // prism::display on the latest film with the latest display controls and hands the UI an
 // 8-bit RGBA image to show. Display-only changes re-run this, never the renderer.
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <memory>
@@ -22,9 +23,10 @@ struct DisplayJob {
   std::shared_ptr<const FilmFrame> film;
   DisplayControls controls;
   std::uint64_t controls_version = 0;
-  // HDR outputs only: the UI as drawn (straight-alpha 8-bit sRGB RGBA at the output size),
-  // composited as an SDR overlay by display/ui_overlay.h.
-  std::shared_ptr<const EncodedImage> ui_rgba;
+  // Auto exposure: the EV100 the previous frame showed (none: this is the first, which
+  // shows the metered EV at once) and the seconds since, for the eye adaptation.
+  std::optional<double> shown_ev100;
+  double seconds_since_shown = 0;
 };
 
 struct DisplayFrame {
@@ -32,11 +34,16 @@ struct DisplayFrame {
   std::vector<std::uint8_t> rgba;      // 8-bit code values, what the window shows
   std::uint64_t film_serial = 0;
   std::uint64_t controls_version = 0;
-  bool ui_composited = false;          // the UI is already in the image (HDR path)
   double display_seconds = 0;          // time the pipeline took
   // The pipeline's own output (no debug view), for saving and the HDR10 panel.
   std::shared_ptr<const display::DisplayImage> image;
   ContentLightLevel content_light;     // measured on `image`
+  double ev100 = 0;                    // the exposure shown (auto: adapted toward metered_ev100)
+  std::optional<double> metered_ev100; // auto exposure: what the meter read on this film
+  bool exposure_adapting = false;      // the shown EV has not reached the metered one yet
+  // An HDR target in this SDR window: what is shown is the same rendering's SDR 100-nit
+  // target (never PQ code values); `image` stays the HDR output that saving writes.
+  std::string preview_note;
   std::string error;                   // a view or setting the film cannot show
 };
 
@@ -59,6 +66,7 @@ class DisplayWorker {
   std::condition_variable wake_;
   std::optional<DisplayJob> pending_;
   std::shared_ptr<const DisplayFrame> latest_;
+  std::optional<std::chrono::steady_clock::time_point> latest_time_;  // when latest_ was made
   bool working_ = false, quit_ = false;
   std::thread worker_;
 };

@@ -63,7 +63,7 @@ PngColorMetadata png_metadata(const display::DisplayImage& image, const DisplayF
 void save_display_image(const std::filesystem::path& path, const DisplayFrame& shown, const DisplayControls& c) {
   const std::string ext = lower_extension(path);
   if (ext != ".png" && ext != ".avif") throw UsageError("display images are saved as .png or .avif");
-  const bool pipeline_image = shown.image && (c.view == display::DebugView::none) && !shown.ui_composited;
+  const bool pipeline_image = shown.image && (c.view == display::DebugView::none);
   if (!pipeline_image) {
     // Debug views (and HDR frames with the UI composited in) are saved as shown.
     if (ext != ".png") throw UsageError("debug views are saved as .png");

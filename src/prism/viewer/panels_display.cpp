@@ -19,10 +19,19 @@ bool slider(const char* label, double& value, double lo, double hi, const char* 
   return true;
 }
 
-bool exposure_section(DisplayControls& c) {
+bool exposure_section(DisplayControls& c, const DisplayFrame* shown) {
   bool changed = ImGui::Checkbox("auto exposure", &c.auto_exposure);
-  if (c.auto_exposure) changed |= slider("key", c.auto_exposure_key, 0.02, 0.8);
-  else changed |= slider("EV100", c.ev100, -6.0, 20.0, "%.2f");
+  if (c.auto_exposure) {
+    changed |= slider("key", c.auto_exposure_key, 0.02, 0.8);
+    changed |= slider("centre weight", c.metering.centre_weight, 0.0, 1.0, "%.2f");
+    changed |= slider("adaptation (1/s)", c.adaptation_speed, 0.1, 20.0, "%.1f");
+    if (shown && shown->metered_ev100)
+      ImGui::Text("EV100 %.2f (metered %.2f)", shown->ev100, *shown->metered_ev100);
+  } else {
+    // Switching auto exposure off keeps the EV it showed, so the picture does not jump.
+    if (shown && shown->metered_ev100 && changed) c.ev100 = shown->ev100;
+    changed |= slider("EV100", c.ev100, -10.0, 20.0, "%.2f");
+  }
   return changed;
 }
 
@@ -121,8 +130,6 @@ bool hdr10_section(DisplayControls& c, const DisplayFrame* shown) {
   field("MaxFALL (nits, 0=measured)", c.max_fall_nits);
   if (shown) ImGui::Text("measured MaxCLL %.1f, MaxFALL %.1f nits", shown->content_light.max_cll_nits,
                          shown->content_light.max_fall_nits);
-  changed |= slider("UI white (nits)", c.ui_nits, 80, 300, "%.0f");
-  changed |= slider("UI blend power", c.ui_blend_power, 0.5, 10, "%.1f");
   ImGui::TreePop();
   return changed;
 }
@@ -131,7 +138,7 @@ bool hdr10_section(DisplayControls& c, const DisplayFrame* shown) {
 
 bool display_panel(DisplayControls& c, const DisplayFrame* shown) {
   if (!ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) return false;
-  bool changed = exposure_section(c);
+  bool changed = exposure_section(c, shown);
   changed |= bloom_section(c.settings);
   changed |= slider("blue correction", c.settings.blue_correction, 0.0, 1.0);
   changed |= odt_section(c.settings);
@@ -171,7 +178,9 @@ void stats_overlay(const FilmFrame* film, const DisplayFrame* shown, const UiTim
   } else {
     ImGui::Text("rendering first pass...");
   }
-  if (shown) ImGui::Text("display %.0f ms", shown->display_seconds * 1e3);
+  if (shown) ImGui::Text("display %.0f ms, EV100 %.2f%s", shown->display_seconds * 1e3, shown->ev100,
+                         shown->metered_ev100 ? " (metered)" : "");
+  if (shown && !shown->preview_note.empty()) ImGui::TextColored(ImVec4(1, 0.85f, 0.3f, 1), "%s", shown->preview_note.c_str());
   ImGui::Text("UI %.1f fps (frame %.1f ms mean, %.1f ms max)", ui.fps, ui.frame_ms_mean, ui.frame_ms_max);
   if (memory.peak_mib > 0) ImGui::Text("memory %.0f MiB (peak %.0f MiB)", memory.resident_mib, memory.peak_mib);
   if (!status.empty()) ImGui::TextColored(ImVec4(1, 0.4f, 0.3f, 1), "%s", status.c_str());

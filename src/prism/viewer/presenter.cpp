@@ -80,41 +80,4 @@ EncodedImage Presenter::read_framebuffer(int width, int height) {
   return read_pixels(width, height, 3);
 }
 
-UiCapture::UiCapture() {
-  glGenFramebuffers(1, &fbo_);
-  glGenTextures(1, &texture_);
-}
-
-UiCapture::~UiCapture() {
-  glDeleteTextures(1, &texture_);
-  glDeleteFramebuffers(1, &fbo_);
-}
-
-void UiCapture::begin(int width, int height) {
-  glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
-  if (width != width_ || height != height_) {
-    glBindTexture(GL_TEXTURE_2D, texture_);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_, 0);
-    width_ = width;
-    height_ = height;
-  }
-  glViewport(0, 0, width, height);
-  glClearColor(0, 0, 0, 0);
-  glClear(GL_COLOR_BUFFER_BIT);
-}
-
-EncodedImage UiCapture::end() {
-  EncodedImage rgba = read_pixels(width_, height_, 4);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  // ImGui blends colour with (α, 1 − α) and alpha with (1, 1 − α), so over a transparent
-  // target the colour is premultiplied: divide it back out.
-  for (std::size_t i = 0; i < rgba.samples.size(); i += 4) {
-    const unsigned a = rgba.samples[i + 3];
-    for (int c = 0; c < 3 && a > 0; ++c)
-      rgba.samples[i + c] = static_cast<std::uint16_t>(std::min(255u, (rgba.samples[i + c] * 255u + a / 2) / a));
-  }
-  return rgba;
-}
-
 }  // namespace prism::viewer

@@ -36,23 +36,4 @@ class Presenter {
   Viewport viewport_;
 };
 
-// An offscreen RGBA target the UI is drawn into (transparent background) so that it can be
-// composited into an HDR image by the display pipeline as an SDR overlay.
-class UiCapture {
- public:
-  UiCapture();
-  ~UiCapture();
-  UiCapture(const UiCapture&) = delete;
-  UiCapture& operator=(const UiCapture&) = delete;
-
-  // Binds the target (resized as needed) and clears it to transparent.
-  void begin(int width, int height);
-  // Reads it back as straight-alpha RGBA8 sRGB, rows top first, and rebinds the window.
-  EncodedImage end();
-
- private:
-  unsigned fbo_ = 0, texture_ = 0;
-  int width_ = 0, height_ = 0;
-};
-
 }  // namespace prism::viewer

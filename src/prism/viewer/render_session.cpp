@@ -106,7 +106,11 @@ void RenderSession::render_one(const RenderRequest& request, std::uint64_t gener
     auto frame = std::make_shared<FilmFrame>();
     frame->generation = generation;
     frame->film = ImageRgbF{film.width(), film.height(), film.mean_rgb()};
-    if (film.aovs().normal) frame->normals = film_aov_images(film, Mat3::identity()).normal;
+    if (film.aovs().normal || film.aovs().depth) {
+      AovImages aovs = film_aov_images(film, Mat3::identity());
+      if (film.aovs().normal) frame->normals = std::move(aovs.normal);
+      frame->coverage = std::move(aovs.depth_coverage);
+    }
     frame->film_space = film_space;
     frame->passes = groups;
     frame->spp = next_sample - request.settings.first_sample;

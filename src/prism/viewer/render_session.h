@@ -35,6 +35,9 @@ struct FilmFrame {
   std::uint64_t serial = 0;      // increases with every published frame
   ImageRgbF film;                // scene-linear means in film_space
   std::optional<ImageRgbF> normals;  // the normal AOV (world space), when the film keeps it
+  // Per pixel, the fraction of samples whose camera ray hit a surface (the depth AOV's
+  // coverage, when the film keeps it): what exposure metering counts. Empty otherwise.
+  std::vector<float> coverage;
   color::ColorSpace film_space;
   int passes = 0;                // progressive updates (groups of samples_per_pass samples)
   int spp = 0;                   // samples per pixel in the film

@@ -35,7 +35,6 @@ namespace prism::viewer {
 namespace {
 
 constexpr int kContinuousSpp = 1 << 24;  // interactive renders run until restarted
-constexpr double kUiCaptureInterval = 0.1;
 constexpr double kFrameBudgetSeconds = 1.0 / 60.0;
 
 double scene_diagonal(const Scene& scene) {
@@ -86,33 +85,27 @@ class ViewerApp {
         window_(window),
         camera_input_(orbit_pivot_camera(scene), scene_diagonal(scene)),
         session_(scene) {
+    // The first picture's defaults, shared with `prism render` (viewer_state.h), then the options.
+    InitialControls initial = initial_controls(scene);
+    render_ = std::move(initial.render);
+    display_ = std::move(initial.display);
     RenderSettings& s = render_.settings;
-    s.path.max_depth = options.max_depth;
+    if (options.max_depth) s.path.max_depth = *options.max_depth;
     if (!options.sampler.empty()) s.path.sampler = *parse_sampler(options.sampler);  // checked by run_viewer
     if (!options.normal_mapping.empty())
       s.path.normal_mapping = *parse_normal_mapping(options.normal_mapping);  // checked by run_viewer
-    else if (scene.default_normal_mapping)
-      s.path.normal_mapping = *scene.default_normal_mapping;
     s.samples_per_pass = std::max(options.samples_per_pass, 1);
     s.bounces_per_pass = options.bounces_per_pass;
     s.threads = options.threads;
     s.transport.kind = options.mode == "rgb" ? TransportKind::rgb : TransportKind::spectral;
     s.samples_per_pixel = options.frames > 0 ? options.frames * s.samples_per_pass : kContinuousSpp;
-    // The film always keeps the normal AOV, so the normal debug view needs no restart; it
-    // costs one surface evaluation per camera ray and 56 bytes per pixel.
-    s.aovs.normal = true;
     render_.resolution_scale = std::clamp(options.resolution_scale, 0.125, 1.0);
-    render_.camera = orbit_pivot_camera(scene);
-    render_.materials = scene.materials;
-    render_.lights = scene.lights;
+    render_.camera = orbit_pivot_camera(scene);  // the same view, its orbit target at the scene's depth
     display_.settings.odt = display::parse_odt(options.odt);
     if (!options.view.empty()) display_.view = display::parse_debug_view(options.view);
     if (options.ev100) {
       display_.auto_exposure = false;
       display_.ev100 = *options.ev100;
-    } else if (scene.camera.f_number > 0 && scene.camera.shutter_seconds > 0) {
-      display_.auto_exposure = false;
-      display_.ev100 = display::ev100_from_camera(scene.camera.f_number, scene.camera.shutter_seconds, scene.camera.iso);
     }
     save_.image_path = scene_name_ + "-view.png";
     save_.film_path = scene_name_ + "-view.exr";
@@ -233,37 +226,28 @@ class ViewerApp {
     if (save_.save_image || save_.save_film || save_.save_camera) log("save {}", save_message_);
   }
 
-  // Hands the display thread whatever changed: a new film, new controls or a new UI overlay.
+  // Hands the display thread whatever changed: a new film or new controls; and the same
+  // film again while auto exposure is still adapting toward the metered EV.
   void feed_display() {
     const std::shared_ptr<const FilmFrame> film = session_.latest();
     if (!film) return;
     // Until the restarted render's first pass arrives, keep showing the previous image.
-    if (film->serial == submitted_serial_ && display_version_ == submitted_version_ &&
-        overlay_serial_ == submitted_overlay_)
-      return;
-    DisplayJob job{film, display_, display_version_, hdr_output(display_) ? overlay_ : nullptr};
+    const bool adapting = shown_ && shown_->exposure_adapting && shown_->film_serial == submitted_serial_ &&
+                          shown_->controls_version == submitted_version_ && !display_worker_.busy();
+    if (film->serial == submitted_serial_ && display_version_ == submitted_version_ && !adapting) return;
+    DisplayJob job;
+    job.film = film;
+    job.controls = display_;
+    job.controls_version = display_version_;
     job.controls.settings.render_scale = render_.resolution_scale;
     display_worker_.submit(std::move(job));
     submitted_serial_ = film->serial;
     submitted_version_ = display_version_;
-    submitted_overlay_ = overlay_serial_;
   }
 
-  // HDR outputs: the UI is drawn offscreen and composited by the display pipeline.
-  void capture_ui_overlay(int w, int h) {
-    ui_capture_.begin(w, h);
-    window_.render_ui();
-    overlay_ = std::make_shared<const EncodedImage>(ui_capture_.end());
-    ++overlay_serial_;
-    last_capture_ = std::chrono::steady_clock::now();
-  }
-
+  // HDR targets are shown as their SDR preview (display_worker.cpp), so the UI is always
+  // drawn over the image by ImGui, as in SDR.
   bool present(int w, int h) {
-    const bool hdr = hdr_output(display_);
-    // A new UI capture only helps once the display thread can take it.
-    if (hdr && !display_worker_.busy() &&
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - last_capture_).count() >= kUiCaptureInterval)
-      capture_ui_overlay(w, h);
     if (shown_ && (shown_->film_serial != uploaded_serial_ || shown_->controls_version != uploaded_version_ ||
                    shown_.get() != uploaded_frame_)) {
       presenter_.upload(shown_->width, shown_->height, shown_->rgba);
@@ -272,21 +256,20 @@ class ViewerApp {
       uploaded_frame_ = shown_.get();
     }
     presenter_.draw(w, h);
-    const bool ui_in_image = shown_ && shown_->ui_composited && hdr;
-    if (!ui_in_image) window_.render_ui();
-    const bool done = headless_done(hdr);
+    window_.render_ui();
+    const bool done = headless_done();
     if (done) write_screenshot(w, h);
     window_.swap();
     return done;
   }
 
   // Headless: the film has all its passes and the window shows exactly that film.
-  bool headless_done(bool hdr) const {
+  bool headless_done() const {
     if (options_.frames <= 0) return false;
     const std::shared_ptr<const FilmFrame> film = session_.latest();
     if (!film || !film->finished || film->generation != session_.generation()) return false;
     return shown_ && shown_->film_serial == film->serial && shown_->controls_version == display_version_ &&
-           uploaded_frame_ == shown_.get() && (!hdr || shown_->ui_composited);
+           uploaded_frame_ == shown_.get();
   }
 
   void write_screenshot(int w, int h) {
@@ -313,7 +296,6 @@ class ViewerApp {
   RenderSession session_;
   DisplayWorker display_worker_;
   Presenter presenter_;
-  UiCapture ui_capture_;
   FrameStats stats_;
   MemoryMonitor memory_;
   RenderControls render_;
@@ -321,10 +303,8 @@ class ViewerApp {
   SaveRequest save_;
   std::string save_message_;
   std::shared_ptr<const DisplayFrame> shown_;
-  std::shared_ptr<const EncodedImage> overlay_;  // the UI for HDR compositing
-  std::chrono::steady_clock::time_point last_capture_{};
-  std::uint64_t display_version_ = 1, overlay_serial_ = 0;
-  std::uint64_t submitted_serial_ = 0, submitted_version_ = 0, submitted_overlay_ = 0;
+  std::uint64_t display_version_ = 1;
+  std::uint64_t submitted_serial_ = 0, submitted_version_ = 0;
   std::uint64_t uploaded_serial_ = 0, uploaded_version_ = 0, logged_serial_ = 0;
   const DisplayFrame* uploaded_frame_ = nullptr;
   int fb_w_ = 0, fb_h_ = 0;

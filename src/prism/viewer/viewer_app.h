@@ -24,7 +24,7 @@ struct ViewerOptions {
   std::string normal_mapping;      // classic | microfacet; empty: the scene's choice, else classic
   int samples_per_pass = 1;
   int bounces_per_pass = 0;        // > 0: show the film every N bounces inside a pass
-  int max_depth = 8;
+  std::optional<int> max_depth;    // none: the first picture's (render/first_picture.h)
   int threads = 0;
   double resolution_scale = 1.0;
   bool log_events = false;         // one line per event on stdout (tests, scripting)

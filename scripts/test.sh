@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds and runs the test suites (what CI runs, .ci/run):
 #   release     Release build, every test but the labels slow and fuzz-smoke (the gui
-#               tests start their own Xvfb);
+#               tests start their own Xvfb; the slurm test, as root, a one-node Slurm
+#               cluster: docs/farm-rendering.md);
 #   asan        clang AddressSanitizer + UndefinedBehaviorSanitizer (LeakSanitizer on):
 #               every unit and CLI test; the same build has the libFuzzer targets, and
 #   fuzz-smoke  runs each of them for 30 s on its seed corpus;

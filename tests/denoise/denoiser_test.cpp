@@ -76,9 +76,11 @@ TEST(Denoiser, ConstantImageUnchanged) {
     b.variance[i] = 0.01f;
   }
   const ImageRgbF out = denoise_image(b);
-  // Each output is Σ w·c / Σ w over at most 15² equal values: float rounding of 225 sums
-  // bounds the relative change by 225 · 2⁻²⁴ ≈ 1.4e-5.
-  for (std::size_t i = 0; i < out.rgb.size(); ++i) EXPECT_NEAR(out.rgb[i], b.color[i], 1.4e-5f * b.color[i]) << i;
+  // Each output is Σ w·c / Σ w over the (2r+1)² equal values of its window: float rounding
+  // of that many sums bounds the relative change by (2r+1)² · 2⁻²⁴.
+  const int window = 2 * NlmParameters{}.search_radius + 1;
+  const float tolerance = static_cast<float>(window * window) * 0x1p-24f;
+  for (std::size_t i = 0; i < out.rgb.size(); ++i) EXPECT_NEAR(out.rgb[i], b.color[i], tolerance * b.color[i]) << i;
 }
 
 TEST(Denoiser, NoiseFreeSmoothImageUnchanged) {
@@ -89,7 +91,7 @@ TEST(Denoiser, NoiseFreeSmoothImageUnchanged) {
     for (int x = 0; x < b.width; ++x)
       for (int c = 0; c < 3; ++c) b.color[3 * (y * b.width + x) + c] = 0.1f + 0.02f * x + 0.01f * y + 0.1f * c;
   const ImageRgbF out = denoise_image(b);
-  // 224 neighbours of weight ≤ 9.4e-14 each, colours within a factor 10 of the pixel's.
+  // At most 224 neighbours of weight ≤ 9.4e-14 each, colours within a factor 10 of the pixel's.
   for (std::size_t i = 0; i < out.rgb.size(); ++i) EXPECT_NEAR(out.rgb[i], b.color[i], 1e-6f * b.color[i]) << i;
 }
 
@@ -109,7 +111,7 @@ TEST(Denoiser, KeepsTheMeanAndRemovesNoise) {
     noisy_se += (b.color[i] - truth[i]) * (b.color[i] - truth[i]);
     out_se += (out.rgb[i] - truth[i]) * (out.rgb[i] - truth[i]);
   }
-  // A 15² window of independent noise could reduce the error up to 225×; 5× is well inside
+  // An 11² window of independent noise could reduce the error up to 121×; 5× is well inside
   // what the filter reaches on this slowly varying signal, and far from 1× (no filtering).
   EXPECT_LT(out_se, noisy_se / 5.0);
 }

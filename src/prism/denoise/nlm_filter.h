@@ -29,8 +29,8 @@ namespace prism::denoise {
 
 struct NlmParameters {
   // Defaults chosen by measurement on rendered scenes (docs/denoising.md, "Choices").
-  int search_radius = 7;                // r: window (2r+1)²
-  int patch_radius = 2;                 // f: patch (2f+1)²
+  int search_radius = 5;                // r: window (2r+1)²
+  int patch_radius = 1;                 // f: patch (2f+1)²
   float color_sensitivity = 0.45f;      // k_c (Rousselle et al. 2013, §5)
   float variance_cancellation = 1.0f;   // α
   float feature_sensitivity = 0.6f;     // k_f (Rousselle et al. 2013, §5)
@@ -46,10 +46,11 @@ struct NlmImage {
   int width = 0, height = 0;
   std::array<std::vector<float>, 3> color;     // planar
   std::array<std::vector<float>, 3> variance;  // planar, of the pixel means
-  std::vector<NlmFeature> features;
+  std::vector<NlmFeature> features;  // exactly: normal (3 channels), depth (1), albedo (3)
 };
 
-// The filtered colour, planar. Requires consistent sizes (the caller checks).
+// The filtered colour, planar. Requires consistent sizes (the caller checks); throws Error
+// for another set of features.
 std::array<std::vector<float>, 3> nlm_feature_filter(const NlmImage& image, const NlmParameters& parameters);
 
 }  // namespace prism::denoise

@@ -24,12 +24,14 @@
 #include "prism/core/parallel.h"
 #include "prism/core/process_memory.h"
 #include "prism/core/version.h"
+#include "prism/display/exposure_metering.h"
 #include "prism/io/atomic_file.h"
 #include "prism/io/exr.h"
 #include "prism/io/radiance_hdr_writer.h"
 #include "prism/io/png.h"
 #include "prism/render/aov_images.h"
 #include "prism/render/checkpoint.h"
+#include "prism/render/first_picture.h"
 #include "prism/render/memory_estimate.h"
 #include "prism/render/renderer.h"
 #include "prism/scene/camera_json.h"
@@ -45,7 +47,7 @@ struct RenderOptions {
   bool allow_external_paths = false;  // scene files may refer to files outside their folder
   std::vector<std::string> outputs;
   int spp = 64;
-  int max_depth = 8;
+  int max_depth = PathSettings{}.max_depth;  // the scene file's, when it names one (first_picture.h)
   std::uint64_t seed = 0;
   int threads = 0;
   bool threads_given = false;
@@ -150,7 +152,7 @@ ImageRgbF film_image(const Film& film, const color::ColorSpace& film_space, cons
 
 void write_outputs(const std::vector<std::filesystem::path>& outputs, const RenderResult& result,
                    const std::string& scene_name, const RenderSettings& settings, std::uint64_t fingerprint,
-                   const RenderOptions& o, const DisplayCliOptions& display) {
+                   const RenderOptions& o, const DisplayCliOptions& display, std::optional<double> ev100) {
   const color::ColorSpace& working = color::color_space(settings.transport.working_space);
   const std::optional<ImageRgbF> denoised =
       o.denoise ? std::optional(denoise_film(result.film, result.film_space, working)) : std::nullopt;
@@ -169,6 +171,8 @@ void write_outputs(const std::vector<std::filesystem::path>& outputs, const Rend
       meta.ints["prism:sampleBegin"] = settings.first_sample;
       meta.ints["prism:sampleEnd"] = result.next_sample;
       meta.strings["prism:fingerprint"] = hex(fingerprint);
+      // The exposure the display outputs used (metered or given): `--ev100` repeats them.
+      if (ev100) meta.doubles["prism:ev100"] = *ev100;
       // Pixel values are luminance-scaled: Y = 1 is one nit.
       const color::ColorSpace& space = o.exr_space == "film" ? result.film_space : working;
       if (settings.aovs.any()) meta.strings["prism:aovs"] = format_aov_list(settings.aovs);
@@ -263,14 +267,13 @@ int run_render(const RenderOptions& o) {
   for (std::size_t i = 1, n = 0; i <= scene.lights.size(); ++i)
     if (scene.lights[i - 1].type == LightType::environment && ++n == 2)
       fmt::print(stderr, "prism: warning: only the first environment light is used\n");
-  // A scene camera's physical exposure applies unless the command line sets one.
+  // The first picture's defaults (first_picture.h): the scene camera's physical exposure
+  // applies unless the command line sets one; without either the film is metered.
+  const FirstPicture first = first_picture_defaults(scene);
   DisplayCliOptions display = o.display;
-  if (!display.ev100 && !display.f_number && !display.auto_exposure && scene.camera.f_number > 0.0f &&
-      scene.camera.shutter_seconds > 0.0f) {
-    display.f_number = scene.camera.f_number;
-    display.shutter_s = scene.camera.shutter_seconds;
-    display.iso = scene.camera.iso;
-  }
+  const bool exposure_given = display.ev100 || display.f_number || display.shutter_s || display.iso;
+  if (!exposure_given && !display.auto_exposure && first.camera_ev100) display.ev100 = first.camera_ev100;
+  const bool metered = !display.ev100 && !display.f_number && !display.shutter_s && !display.iso;
   if (o.outputs.empty()) outputs = {scene.name + ".exr", scene.name + ".png"};
   for (const auto& p : outputs) {
     if (output_format(p) == OutputFormat::display)
@@ -281,7 +284,7 @@ int run_render(const RenderOptions& o) {
   settings.width = o.width > 0 ? o.width : scene.default_width;
   settings.height = o.height > 0 ? o.height : scene.default_height;
   if (o.spp_given == false && o.sample_range.empty() && scene.default_spp > 0) settings.samples_per_pixel = scene.default_spp;
-  if (!o.max_depth_given && scene.default_max_depth) settings.path.max_depth = *scene.default_max_depth;
+  if (!o.max_depth_given) settings.path.max_depth = first.path.max_depth;
   if (o.normal_mapping.empty() && scene.default_normal_mapping)
     settings.path.normal_mapping = *scene.default_normal_mapping;
   // --render-scale: render a fraction of the pixels; display outputs are upscaled back.
@@ -331,12 +334,25 @@ int run_render(const RenderOptions& o) {
     };
   }
   const std::string scene_name = scene.name;
-  RenderResult result = render(std::move(scene), settings, hooks, resume ? &*resume : nullptr);
+  // Prepared here rather than inside render() so that the metering's coverage pass can
+  // trace the same BVH afterwards.
+  const PreparedScene prepared(std::move(scene));
+  RenderResult result = render(prepared, settings, hooks, resume ? &*resume : nullptr);
   progress.finish();
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
 
-  write_outputs(outputs, result, scene_name, settings, fingerprint, o, display);
+  std::optional<double> ev100 = display.ev100;
+  if (metered) {
+    display::MeteringSettings metering = first.metering;
+    metering.key = display.key;
+    ev100 = meter_rendered_film(prepared, result.film, result.film_space, metering).ev100;
+    display.ev100 = ev100;
+    display.auto_exposure = false;
+  } else if (!ev100) {
+    ev100 = make_display_settings(display).exposure_ev100;  // --f-number/--shutter/--iso
+  }
+  write_outputs(outputs, result, scene_name, settings, fingerprint, o, display, ev100);
 
   const double samples = static_cast<double>(result.passes_done) * result.film.pixel_count();
   std::vector<std::string> written;
@@ -347,9 +363,10 @@ int run_render(const RenderOptions& o) {
   const std::string peak =
       peak_bytes ? fmt::format(", peak memory {} MiB", (*peak_bytes + (1u << 19)) >> 20) : std::string();
   const double samples_per_second = result.elapsed_seconds > 0 ? samples / result.elapsed_seconds : 0.0;
-  fmt::print("prism: rendered {} {}x{}, {} spp in {:.2f} s ({:.2f} M samples/s{}) -> {}\n", scene_name,
+  const std::string exposure = ev100 ? fmt::format(", EV100 {}{}", *ev100, metered ? " metered" : "") : "";
+  fmt::print("prism: rendered {} {}x{}, {} spp in {:.2f} s ({:.2f} M samples/s{}{}) -> {}\n", scene_name,
              settings.width, settings.height, result.passes_done, result.elapsed_seconds, samples_per_second * 1e-6,
-             peak, fmt::join(written, ", "));
+             peak, exposure, fmt::join(written, ", "));
   if (result.invalid_samples > 0)
     fmt::print("prism: {} invalid samples (NaN/Inf) discarded\n", result.invalid_samples);
   if (result.stop_reason == StopReason::time_limit)

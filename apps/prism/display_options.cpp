@@ -49,7 +49,7 @@ void add_display_options(CLI::App* cmd, DisplayCliOptions& o) {
                   "Remap to the display's primaries: a name (adobe-rgb, display-p3, …) or xr,yr,xg,yg,xb,yb,xw,yw");
   cmd->add_option("--render-scale", o.render_scale, "The film is this fraction (0, 1] of the output size: upscale bilinearly");
   cmd->add_option("--view", o.view,
-                  "Debug view: normal, luminance, luminance-display, gamut-clip, sdr-hdr-split, chromaticity; "
+                  "Debug view: normal, luminance, luminance-display, gamut-clip, sdr-hdr-split, chromaticity, bloom; "
                   "with --ocio-config/--display: the OCIO view");
   cmd->add_option("--sdr-white", o.sdr_white_nits, "sdr-hdr-split view: SDR white in nits (default 200)");
   cmd->add_option("--overlay", o.overlay, "RGBA sRGB PNG composited in HDR (same size as the output)");

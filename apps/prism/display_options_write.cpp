@@ -61,6 +61,8 @@ display::DisplaySettings output_settings(const std::string& ext, const DisplayCl
 std::vector<PngText> display_png_text(const display::DisplaySettings& s) {
   std::vector<PngText> text{{"prism:rendering", std::string(display::rendering_name(s.rendering))},
                             {"prism:displayTarget", std::string(display::odt_description(s.odt).name)}};
+  // The exposure used, exactly (shortest round-trip form): `--ev100` repeats the picture.
+  if (s.exposure_ev100) text.push_back({"prism:ev100", fmt::format("{}", *s.exposure_ev100)});
   return text;
 }
 

@@ -243,6 +243,9 @@ int run_render(const RenderOptions& o) {
   if (o.width < 0 || o.height < 0) throw UsageError("--width and --height must be positive");
   if (!o.aovs.empty()) settings.aovs = parse_aov_list(o.aovs);
   if (o.denoise) add_denoise_aovs(settings.aovs);
+  // A part of a farm split must stay noisy: `prism merge` adds parts' beauties and variances.
+  if (o.denoise && !o.sample_range.empty())
+    throw UsageError("--denoise cannot be combined with --sample-range: run `prism denoise` on the merged EXR");
   // A display output's normal view shows the normal AOV: keep it when that view is asked for.
   if (display::DebugView::normal == selected_debug_view(o.display)) settings.aovs.normal = true;
 

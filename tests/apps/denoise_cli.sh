@@ -37,5 +37,13 @@ rc=$?
 grep -q "^prism: error: .*normal (.*depth (.*variance (" "$work/err" || fail "missing layers not named: $(cat "$work/err")"
 [ ! -e "$work/bad.exr" ] || fail "denoise without guides wrote an output"
 
+# A farm part must stay noisy (prism merge adds the parts): --denoise with --sample-range is
+# a usage error.
+"$prism" render cornell-box --width 24 --height 16 --sample-range 0:2 --denoise -o "$work/part.exr" >"$work/out" 2>"$work/err"
+rc=$?
+[ "$rc" -eq 2 ] || fail "--denoise --sample-range: exit $rc, expected 2"
+grep -q "^prism: error: --denoise cannot be combined with --sample-range" "$work/err" || fail "no usage error: $(cat "$work/err")"
+[ ! -e "$work/part.exr" ] || fail "--denoise --sample-range wrote an output"
+
 echo "$failures failure(s)"
 [ "$failures" -eq 0 ]

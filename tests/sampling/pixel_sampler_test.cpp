@@ -227,8 +227,7 @@ TEST(PixelSampler, SobolBlockBatchesDrawTheScalarBits) {
 }
 
 TEST(PixelSampler, SobolLanesAreTheWidestSupported) {
-  // What the renderer takes, where the environment says nothing (the tests run without
-  // PRISM_SAMPLER_SCALAR and PRISM_SAMPLER_AVX2).
+  // What the renderer takes at `--simd auto`.
   const SobolLanes widest = padded_sobol_lanes_supported(SobolLanes::avx512) ? SobolLanes::avx512
                             : padded_sobol_lanes_supported(SobolLanes::avx2) ? SobolLanes::avx2
                                                                              : SobolLanes::none;

@@ -2,7 +2,6 @@
 
 #include <stdexcept>
 
-#include "prism/core/env_flag.h"
 #include "prism/sampling/padded_sobol.h"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
@@ -244,10 +243,7 @@ bool supported(SobolLanes lanes) {
 }
 
 SobolLanes detect_lanes() {
-  // PRISM_SAMPLER_SCALAR=1 takes the scalar path, PRISM_SAMPLER_AVX2=1 the AVX2 lanes where
-  // the processor has more (to compare them on one machine).
-  if (env_flag("PRISM_SAMPLER_SCALAR")) return SobolLanes::none;
-  if (!env_flag("PRISM_SAMPLER_AVX2") && supported(SobolLanes::avx512)) return SobolLanes::avx512;
+  if (supported(SobolLanes::avx512)) return SobolLanes::avx512;
   return supported(SobolLanes::avx2) ? SobolLanes::avx2 : SobolLanes::none;
 }
 

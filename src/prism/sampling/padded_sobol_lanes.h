@@ -16,22 +16,14 @@
 #include <span>
 
 #include "prism/sampling/pixel_sampler.h"
+#include "prism/sampling/sobol_lanes.h"
 
 namespace prism {
 
-enum class SobolLanes : unsigned char {
-  none,    // the scalar path
-  avx2,    // AVX2
-  avx512,  // AVX2 with AVX-512F/DQ/VL/BW and GFNI, on the same 256-bit registers (and
-           // 512-bit ones for two bounce blocks at once, padded_sobol_bounce_blocks_lanes)
-};
-
-// The lanes this build and processor run (decided once, before main): the widest the
-// processor has, or less where the environment says (PRISM_SAMPLER_SCALAR=1: none,
-// PRISM_SAMPLER_AVX2=1: at most avx2).
+// The widest lanes this build and processor run (decided once, before main).
 SobolLanes padded_sobol_lanes();
 bool padded_sobol_lanes_available();  // padded_sobol_lanes() != none
-// Whether the processor runs `lanes`, whatever the environment says (tests).
+// Whether the processor runs `lanes`.
 bool padded_sobol_lanes_supported(SobolLanes lanes);
 
 // camera_samples / bounce_samples of SamplerKind::sobol on padded_sobol_lanes(), which

@@ -129,29 +129,37 @@ std::optional<SamplerKind> parse_sampler(std::string_view name) {
 }
 
 CameraSamples camera_samples(SamplerKind kind, const PixelSample& s, bool lens) {
+  return camera_samples(kind, padded_sobol_lanes(), s, lens);
+}
+
+BounceSamples bounce_samples(SamplerKind kind, const PixelSample& s, int depth, unsigned needs) {
+  return bounce_samples(kind, padded_sobol_lanes(), s, depth, needs);
+}
+
+CameraSamples camera_samples(SamplerKind kind, SobolLanes lanes, const PixelSample& s, bool lens) {
   switch (kind) {
     case SamplerKind::sobol:
-      return padded_sobol_lanes_available() ? padded_sobol_camera_block_lanes(s, lens)
-                                            : camera_block(PaddedSobolDimensions{s}, lens);
+      return lanes != SobolLanes::none ? padded_sobol_camera_block_lanes(lanes, s, lens)
+                                       : camera_block(PaddedSobolDimensions{s}, lens);
     case SamplerKind::zsobol: return camera_block(ZSobolDimensions{s}, lens);
     case SamplerKind::independent: break;
   }
   return camera_block(IndependentDimensions{s}, lens);
 }
 
-BounceSamples bounce_samples(SamplerKind kind, const PixelSample& s, int depth, unsigned needs) {
+BounceSamples bounce_samples(SamplerKind kind, SobolLanes lanes, const PixelSample& s, int depth, unsigned needs) {
   switch (kind) {
     case SamplerKind::sobol:
-      return padded_sobol_lanes_available() ? padded_sobol_bounce_block_lanes(s, depth, needs)
-                                            : bounce_block(PaddedSobolDimensions{s}, depth, needs);
+      return lanes != SobolLanes::none ? padded_sobol_bounce_block_lanes(lanes, s, depth, needs)
+                                       : bounce_block(PaddedSobolDimensions{s}, depth, needs);
     case SamplerKind::zsobol: return bounce_block(ZSobolDimensions{s}, depth, needs);
     case SamplerKind::independent: break;
   }
   return bounce_block(IndependentDimensions{s}, depth, needs);
 }
 
-bool whole_bounce_blocks_are_cheap(SamplerKind kind) {
-  return kind == SamplerKind::sobol && padded_sobol_lanes_available();
+bool whole_bounce_blocks_are_cheap(SamplerKind kind, SobolLanes lanes) {
+  return kind == SamplerKind::sobol && lanes != SobolLanes::none;
 }
 
 float sample_1d(SamplerKind kind, const PixelSample& s, std::uint32_t dimension) {

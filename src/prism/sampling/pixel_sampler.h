@@ -35,6 +35,7 @@
 #include <string_view>
 
 #include "prism/core/vec.h"
+#include "prism/sampling/sobol_lanes.h"
 
 namespace prism {
 
@@ -85,9 +86,15 @@ enum BounceNeeds : unsigned {
 
 // One switch over the sampler per block, not per number. Without `lens` (pinhole
 // cameras) the lens numbers are left 0 and not drawn; their dimensions stay reserved.
+// The padded Sobol' sampler's blocks are drawn on `lanes` (sobol_lanes.h; the same bits on
+// every choice, which the processor must run), or without them on the widest lanes the
+// processor runs (padded_sobol_lanes.h).
 CameraSamples camera_samples(SamplerKind kind, const PixelSample& sample, bool lens = true);
 BounceSamples bounce_samples(SamplerKind kind, const PixelSample& sample, int depth,
                              unsigned needs = kNeedAllBounceSamples);
+CameraSamples camera_samples(SamplerKind kind, SobolLanes lanes, const PixelSample& sample, bool lens);
+BounceSamples bounce_samples(SamplerKind kind, SobolLanes lanes, const PixelSample& sample, int depth,
+                             unsigned needs);
 
 // The numbers of a whole block that `needs` asks for, the others 0: what bounce_samples
 // returns for `needs` (the integrator draws whole blocks ahead of shading, where that is
@@ -102,8 +109,8 @@ constexpr BounceSamples only_needed(BounceSamples b, unsigned needs) {
 }
 
 // Whether drawing a whole bounce block costs little more than the numbers a vertex reads:
-// the padded Sobol' sampler where the processor runs its AVX2 lanes (padded_sobol_lanes.h).
-bool whole_bounce_blocks_are_cheap(SamplerKind kind);
+// the padded Sobol' sampler on AVX2 or AVX-512 lanes (padded_sobol_lanes.h).
+bool whole_bounce_blocks_are_cheap(SamplerKind kind, SobolLanes lanes);
 
 // Single requests (tests, tools, and the numbers outside the blocks): dimension
 // `dimension` (and `dimension + 1` for 2D) of a sample, as laid out above.

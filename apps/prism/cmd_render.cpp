@@ -34,6 +34,7 @@
 #include "prism/render/first_picture.h"
 #include "prism/render/memory_estimate.h"
 #include "prism/render/renderer.h"
+#include "prism/render/simd_level.h"
 #include "prism/scene/camera_json.h"
 #include "prism/scene/camera_selection.h"
 #include "prism/scene/environment_override.h"
@@ -56,6 +57,7 @@ struct RenderOptions {
   std::string estimator = "mis";
   std::string normal_mapping;  // empty: the scene's choice, else classic
   std::string sampler = std::string(sampler_name(PathSettings{}.sampler));
+  std::string simd = "auto";
   std::string mode = "spectral";
   int wavelengths = 4;
   std::string wavelength_sampling = "cosh";
@@ -218,6 +220,8 @@ int run_render(const RenderOptions& o) {
     settings.path.normal_mapping = *model;
   }
   settings.path.sampler = parse_sampler_option(o.sampler);
+  settings.path.simd = parse_simd_level(o.simd);
+  require_simd_level(settings.path.simd);
   if (o.mode != "spectral" && o.mode != "rgb") throw UsageError(fmt::format("unknown --mode '{}' (spectral, rgb)", o.mode));
   settings.transport.kind = o.mode == "rgb" ? TransportKind::rgb : TransportKind::spectral;
   settings.transport.wavelengths = o.wavelengths;
@@ -416,6 +420,10 @@ void add_render_command(CLI::App& root, Action& action) {
                   "Random numbers of each path: independent (PCG32), sobol (padded Owen-scrambled Sobol', "
                   "stratified per pixel) or zsobol (blue-noise ordering across pixels, one layer per sample); "
                   "every choice is deterministic per (seed, pixel, sample, dimension)")
+      ->capture_default_str();
+  cmd->add_option("--simd", options->simd,
+                  "SIMD the fast paths may use: auto (the widest this processor runs), avx512, avx2, sse2 or "
+                  "scalar; every level renders the same image, bit for bit (for comparisons and older processors)")
       ->capture_default_str();
   cmd->add_option("--mode", options->mode,
                   "Transport: spectral (N wavelengths per path, film in CIE XYZ) or rgb (in --working-space)")

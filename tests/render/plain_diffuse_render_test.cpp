@@ -104,8 +104,8 @@ Scene cornell_box_with_smooth_sphere_and_delta_lights() {
 }
 
 // Hits shaded in lanes (WavefrontIntegrator::shade_plain_lanes: eight AVX2 lanes where the
-// processor has them, four SSE2 lanes with PRISM_SHADE_SSE2=1) against the same hits
-// shaded alone (PRISM_SHADE_SCALAR=1): the same bits, in every transport mode and
+// processor has them, four SSE2 lanes at SimdLevel::sse2) against the same hits shaded
+// alone (SimdLevel::scalar): the same bits, in every transport mode and
 // estimator, on flat and smooth meshes, with area, point and directional lights.
 TEST(PlainDiffuseLanes, SameImageAsShadingAlone) {
   // The lanes sample area-sampled triangle lights themselves and leave the other
@@ -119,12 +119,10 @@ TEST(PlainDiffuseLanes, SameImageAsShadingAlone) {
         RenderSettings s = settings_for(c);
         s.path.light = light;
         const RenderResult lanes = render(scene, s);  // eight lanes where the processor has AVX2
-        ASSERT_EQ(setenv("PRISM_SHADE_SSE2", "1", 1), 0);
+        s.path.simd = SimdLevel::sse2;
         const RenderResult four = render(scene, s);
-        unsetenv("PRISM_SHADE_SSE2");
-        ASSERT_EQ(setenv("PRISM_SHADE_SCALAR", "1", 1), 0);
+        s.path.simd = SimdLevel::scalar;
         const RenderResult alone = render(scene, s);
-        unsetenv("PRISM_SHADE_SCALAR");
         const std::string label = label_of(c) + (scene.lights.empty() ? "" : ", sphere and delta lights") +
                                   (light == solid_angle ? ", solid-angle triangles" : "");
         // Most hits are on the walls, blocks and sphere, all plain diffuse.

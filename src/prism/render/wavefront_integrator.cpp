@@ -10,7 +10,6 @@
 
 #include "prism/bsdf/plain_diffuse_bsdf.h"
 #include "prism/core/branch_free.h"
-#include "prism/core/env_flag.h"
 #include "prism/core/float_lanes.h"
 #include "prism/core/frame.h"
 #include "prism/core/parallel.h"
@@ -34,7 +33,7 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
                                                const PinholeCamera& camera, const ColorContext<Mode>& colors,
                                                const PathSettings& settings, int width, int height, std::uint64_t seed,
                                                bool regenerate)
-    : tables_(scene.materials), textures_(mip_pyramids), scene_(scene), accel_(accel), lights_(lights),
+    : shading_(scene, mip_pyramids, colors, settings.normal_mapping), scene_(scene), accel_(accel), lights_(lights),
       camera_(camera), colors_(colors), settings_(settings), width_(width), height_(height), seed_(seed),
       regenerate_(regenerate) {
   // Geometry that fits a core's L2 cache (≥ 512 KiB on current x86) is left to the hardware.
@@ -46,22 +45,14 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
   prefetch_geometry_ = geometry_bytes > (std::size_t{512} << 10);
   // Cheap only on the padded Sobol' lanes, which the shading loop then calls directly,
   // without bounce_samples' dispatch.
-  sobol_lanes_ = whole_bounce_blocks_are_cheap(settings_.sampler);
+  sampler_lanes_ = sampler_lanes(settings_.simd);
+  sobol_lanes_ = whole_bounce_blocks_are_cheap(settings_.sampler, sampler_lanes_);
   use_nee_ = settings_.estimator != LightEstimator::bsdf_only && !lights_.empty();
   weight_bsdf_hits_ = settings_.estimator == LightEstimator::mis;
-  if (mip_pyramids.size() != scene.textures.size())
-    throw std::invalid_argument("WavefrontIntegrator: one mip pyramid per scene texture expected");
-  for (const Material& m : scene.materials) {
-    plain_diffuse_.push_back(is_plain_diffuse(m) ? 1 : 0);
-    const bool textured = m.emission.texture >= 0 && static_cast<std::size_t>(m.emission.texture) < scene.textures.size();
-    const ColorPickerSpace texel_space =
-        textured ? scene.textures[static_cast<std::size_t>(m.emission.texture)].texel_space : ColorPickerSpace::srgb;
-    textured_emission_.push_back(
-        textured_emission_matrix(m.emission, picker_color_space(m.emission.color_space), texel_space));
-  }
-  lane_width_ = env_flag("PRISM_SHADE_SCALAR") ? 0 : lanes::sse2::kWidth;
+  for (const Material& m : scene.materials) plain_diffuse_.push_back(is_plain_diffuse(m) ? 1 : 0);
+  require_simd_level(settings_.simd);
+  lane_width_ = shading_lane_width(settings_.simd);
 #if PRISM_FLOAT_LANES_AVX2
-  if (lane_width_ > 0 && lanes::avx2_supported() && !env_flag("PRISM_SHADE_SSE2")) lane_width_ = lanes::avx2::kWidth;
   static_assert(lanes::avx2::kWidth <= kMaxLaneWidth);
 #endif
   static_assert(lanes::sse2::kWidth <= kMaxLaneWidth);
@@ -75,226 +66,6 @@ WavefrontIntegrator<Mode>::WavefrontIntegrator(const Scene& scene, const EmbreeA
 
 template <class Mode>
 WavefrontIntegrator<Mode>::~WavefrontIntegrator() = default;
-
-template <class Mode>
-Spectrum<Mode> WavefrontIntegrator<Mode>::base_color(const Material& m, const SurfaceInteraction& si, float cone_width,
-                                                     const Ray& ray, const Wavelengths<Mode>& wl) const {
-  // Untextured materials (most vertices) skip the texture lookup's call chain.
-  if (m.base_color_texture >= 0)
-    if (const auto rgb = textured_base_color(m, si, cone_width, ray))
-      return colors_.reflectance(*rgb, wl, m.base_color_space);
-  return colors_.base_color(si.material, wl);
-}
-
-template <class Mode>
-bool WavefrontIntegrator<Mode>::has_texture(int texture, std::uint32_t mesh) const {
-  return texture >= 0 && static_cast<std::size_t>(texture) < textures_.size() && !scene_.meshes[mesh].uvs.empty();
-}
-
-template <class Mode>
-TexelRgba WavefrontIntegrator<Mode>::texel_at(int texture, Vec2f uv, float level_of_detail) const {
-  const auto t = static_cast<std::size_t>(texture);
-  return sample_trilinear(textures_[t], apply_uv_transform(scene_.textures[t], uv), level_of_detail);
-}
-
-template <class Mode>
-std::optional<TexelRgba> WavefrontIntegrator<Mode>::texel_at_hit(int texture, const SurfaceInteraction& si,
-                                                                 float cone_width, const Ray& ray) const {
-  if (!has_texture(texture, si.mesh)) return std::nullopt;
-  return texel_at(texture, si.uv, level_of_detail_at_hit(texture, si, cone_width, ray));
-}
-
-template <class Mode>
-float WavefrontIntegrator<Mode>::level_of_detail_at_hit(int texture, const SurfaceInteraction& si, float cone_width,
-                                                        const Ray& ray) const {
-  return mip_level_from_ray_cone(textures_[static_cast<std::size_t>(texture)], cone_width,
-                                 std::abs(dot(ray.direction, si.geometric_normal)), si.uv_area, si.world_area);
-}
-
-template <class Mode>
-std::optional<Vec3f> WavefrontIntegrator<Mode>::textured_base_color(const Material& m, const SurfaceInteraction& si,
-                                                                   float cone_width, const Ray& ray) const {
-  const auto texel = texel_at_hit(m.base_color_texture, si, cone_width, ray);
-  if (!texel) return std::nullopt;
-  // Grey and two-channel textures come expanded to (g, g, g) (texture_sampling.h).
-  Vec3f rgb((*texel)[0], (*texel)[1], (*texel)[2]);
-  // Texels are Rec.709, or an OpenEXR's in the wide-gamut material's own space (the loader
-  // asked for it, texture.h's TextureContent): in the material's space before its factor
-  // multiplies them (Material::base_color_space; Rec.709 lies inside both wide spaces, so
-  // only round-off is clipped).
-  const ColorPickerSpace texel_space = scene_.textures[static_cast<std::size_t>(m.base_color_texture)].texel_space;
-  if (texel_space != m.base_color_space)
-    rgb = max(Vec3f(picker_space_conversion(texel_space, m.base_color_space) * Vec3d(rgb)), Vec3f(0.0f));
-  return rgb * m.base_color;
-}
-
-template <class Mode>
-std::optional<Frame> WavefrontIntegrator<Mode>::tangent_space_mapped_frame(int texture, float scale,
-                                                                         const SurfaceInteraction& si,
-                                                                         const Frame& unmapped, float cone_width,
-                                                                         const Ray& ray) const {
-  const auto texel = texel_at_hit(texture, si, cone_width, ray);
-  if (!texel) return std::nullopt;
-  Frame frame = unmapped;
-  float sign = si.bitangent_sign;
-  if (!si.tangent_from_mesh) {
-    // No per-vertex tangents: the triangle's dP/du, made perpendicular to the normal.
-    Vec3f dpdu;
-    if (!triangle_tangent(scene_.meshes[si.mesh], si.triangle, dpdu, sign)) return std::nullopt;
-    const auto with_tangent = Frame::from_normal_and_tangent(frame.n, dpdu);
-    if (!with_tangent) return std::nullopt;
-    frame = *with_tangent;
-  }
-  return normal_mapped_frame(frame, sign, Vec3f((*texel)[0], (*texel)[1], (*texel)[2]), scale, si.geometric_normal);
-}
-
-template <class Mode>
-void WavefrontIntegrator<Mode>::apply_normal_map(const Material& m, SurfaceInteraction& si, float cone_width,
-                                                 const Ray& ray) const {
-  if (const auto frame = tangent_space_mapped_frame(m.normal_texture, m.normal_scale, si, si.shading, cone_width, ray))
-    si.shading = *frame;
-}
-
-template <class Mode>
-std::optional<Frame> WavefrontIntegrator<Mode>::coat_frame(const Material& m, const SurfaceInteraction& si,
-                                                           const Frame& unmapped, float cone_width,
-                                                           const Ray& ray) const {
-  const auto coat = tangent_space_mapped_frame(m.clearcoat_normal_texture, m.clearcoat_normal_scale, si, unmapped,
-                                               cone_width, ray);
-  if (!coat) return std::nullopt;
-  const Frame& base = si.shading;
-  return Frame{base.to_local(coat->s), base.to_local(coat->t), base.to_local(coat->n)};
-}
-
-template <class Mode>
-void WavefrontIntegrator<Mode>::apply_bump_map(const Material& m, SurfaceInteraction& si, float cone_width,
-                                               const Ray& ray) const {
-  if (!has_texture(m.bump_texture, si.mesh)) return;
-  Vec3f dpdu, dpdv;
-  float det = 0.0f;
-  if (!triangle_position_derivatives(scene_.meshes[si.mesh], si.triangle, dpdu, dpdv, det)) return;
-  const float lod = level_of_detail_at_hit(m.bump_texture, si, cone_width, ray);
-  // Finite differences over half the ray footprint in uv (pbrt-v4: ½(|∂u/∂x| + |∂u/∂y|)),
-  // the footprint being the cone's width times the triangle's uv per scene unit, and at
-  // least half a texel of the finest level.
-  const float uv_per_unit = si.world_area > 0.0f ? std::sqrt(si.uv_area / si.world_area) : 0.0f;
-  const float half_footprint = 0.5f * cone_width * uv_per_unit;
-  const TextureImage& image = scene_.textures[static_cast<std::size_t>(m.bump_texture)];
-  const float du = std::max(half_footprint, 0.5f / static_cast<float>(image.width));
-  const float dv = std::max(half_footprint, 0.5f / static_cast<float>(image.height));
-  const float h = texel_at(m.bump_texture, si.uv, lod)[0];
-  const float h_u = texel_at(m.bump_texture, Vec2f(si.uv.x + du, si.uv.y), lod)[0];
-  const float h_v = texel_at(m.bump_texture, Vec2f(si.uv.x, si.uv.y + dv), lod)[0];
-  const Vec3f n = bumped_normal(si.shading.n, dpdu, dpdv, m.bump_scale * (h_u - h) / du, m.bump_scale * (h_v - h) / dv);
-  si.shading = frame_around_normal(si.shading, n, si.geometric_normal);
-}
-
-template <class Mode>
-std::optional<typename WavefrontIntegrator<Mode>::AnisotropyAtHit> WavefrontIntegrator<Mode>::anisotropy_at_hit(
-    const Material& m, const SurfaceInteraction& si, float cone_width, const Ray& ray) const {
-  const auto space = surface_tangent_space(scene_.meshes[si.mesh], si.triangle, si.shading, si.tangent_from_mesh,
-                                           si.bitangent_sign);
-  if (!space) return std::nullopt;
-  std::optional<Vec2f> rg;
-  float strength = m.anisotropy;
-  if (const auto texel = texel_at_hit(m.anisotropy_texture, si, cone_width, ray)) {
-    rg = Vec2f((*texel)[0], (*texel)[1]);
-    strength *= (*texel)[2];
-  }
-  const Vec2f d = anisotropy_direction_in_tangent_space(m.anisotropy_rotation_rad, rg);
-  return AnisotropyAtHit{space->tangent * d.x + space->bitangent * d.y, strength};
-}
-
-template <class Mode>
-std::optional<bsdf::NormalMapMicrosurface> WavefrontIntegrator<Mode>::apply_maps(const Material& m,
-                                                                               SurfaceInteraction& si,
-                                                                               float cone_width, const Ray& ray,
-                                                                               const Vec3f* anisotropy_direction) const {
-  Frame unmapped = si.shading;
-  if (m.normal_texture >= 0) apply_normal_map(m, si, cone_width, ray);
-  if (m.bump_texture >= 0) apply_bump_map(m, si, cone_width, ray);
-  // The lobe's frame runs along the anisotropy direction about whichever normal shades
-  // (the mapped one; the unmapped one the microsurface is expressed in).
-  if (anisotropy_direction) {
-    unmapped = frame_along(unmapped, *anisotropy_direction);
-    si.shading = frame_along(si.shading, *anisotropy_direction);
-  }
-  // Microfacet normal mapping: the mapped frame becomes facet p of a microsurface around
-  // the unmapped normal, and the vertex is shaded in the unmapped frame. Dielectrics (the
-  // only materials whose BSDFs transmit, material_bsdf.h) stay classic.
-  if (settings_.normal_mapping != NormalMapping::microfacet || m.type == MaterialType::dielectric) return std::nullopt;
-  auto microsurface = bsdf::NormalMapMicrosurface::between(unmapped, si.shading);
-  if (microsurface) si.shading = unmapped;
-  return microsurface;
-}
-
-template <class Mode>
-MaterialPoint WavefrontIntegrator<Mode>::material_point(const Material& m, const SurfaceInteraction& si,
-                                                        float cone_width, const Ray& ray) const {
-  if (const MaterialPoint* fixed = tables_.fixed_point(si.material)) return *fixed;
-  MaterialPoint point = untextured_point(m);
-  // glTF 2.0 §3.9.2: metallicRoughnessTexture's G channel scales roughnessFactor, B scales
-  // metallicFactor (linear data). Grey textures expand to (g, g, g), so both use g.
-  if (m.metallic_roughness_texture >= 0)
-    if (const auto texel = texel_at_hit(m.metallic_roughness_texture, si, cone_width, ray)) {
-      point.roughness *= (*texel)[1];
-      point.metallic *= (*texel)[2];
-    }
-  // KHR_materials_clearcoat: clearcoatTexture's R channel scales clearcoatFactor,
-  // clearcoatRoughnessTexture's G channel scales clearcoatRoughnessFactor.
-  if (point.clearcoat > 0.0f) {
-    if (m.clearcoat_texture >= 0)
-      if (const auto texel = texel_at_hit(m.clearcoat_texture, si, cone_width, ray)) point.clearcoat *= (*texel)[0];
-    if (m.clearcoat_roughness_texture >= 0)
-      if (const auto texel = texel_at_hit(m.clearcoat_roughness_texture, si, cone_width, ray))
-        point.clearcoat_roughness *= (*texel)[1];
-  }
-  // KHR_materials_sheen: sheenColorTexture (sRGB-encoded colour, decoded to linear)
-  // multiplies sheenColorFactor, sheenRoughnessTexture's A channel sheenRoughnessFactor.
-  if (__builtin_expect(point.has_sheen(), 0)) {
-    if (m.sheen_color_texture >= 0)
-      if (const auto texel = texel_at_hit(m.sheen_color_texture, si, cone_width, ray))
-        point.sheen_color *= Vec3f((*texel)[0], (*texel)[1], (*texel)[2]);  // greys come expanded
-    if (m.sheen_roughness_texture >= 0)
-      if (const auto texel = texel_at_hit(m.sheen_roughness_texture, si, cone_width, ray))
-        point.sheen_roughness *= (*texel)[3];
-  }
-  // KHR_materials_specular: specularTexture's A channel scales specularFactor,
-  // specularColorTexture (sRGB-encoded colour, decoded to linear) specularColorFactor.
-  if (m.specular_texture >= 0)
-    if (const auto texel = texel_at_hit(m.specular_texture, si, cone_width, ray)) point.specular *= (*texel)[3];
-  if (m.specular_color_texture >= 0)
-    if (const auto texel = texel_at_hit(m.specular_color_texture, si, cone_width, ray))
-      point.specular_color *= Vec3f((*texel)[0], (*texel)[1], (*texel)[2]);  // greys come expanded
-  // KHR_materials_iridescence: iridescenceTexture's R channel scales iridescenceFactor;
-  // iridescenceThicknessTexture's G channel mixes the thickness range's ends.
-  if (__builtin_expect(point.iridescence > 0.0f, 0)) {
-    if (m.iridescence_texture >= 0)
-      if (const auto texel = texel_at_hit(m.iridescence_texture, si, cone_width, ray)) point.iridescence *= (*texel)[0];
-    if (m.iridescence_thickness_texture >= 0)
-      if (const auto texel = texel_at_hit(m.iridescence_thickness_texture, si, cone_width, ray))
-        point.iridescence_thickness_nm =
-            m.iridescence_thickness_min_nm + (*texel)[1] * (m.iridescence_thickness_max_nm - m.iridescence_thickness_min_nm);
-  }
-  return point;
-}
-
-template <class Mode>
-Spectrum<Mode> WavefrontIntegrator<Mode>::textured_emitted_radiance(std::uint32_t material, Vec2f uv,
-                                                                    float level_of_detail,
-                                                                    const Wavelengths<Mode>& wl) const {
-  const int texture = scene_.materials[material].emission.texture;
-  if (texture < 0 || static_cast<std::size_t>(texture) >= textures_.size()) return colors_.emission(material, wl);
-  const TexelRgba t = texel_at(texture, uv, level_of_detail);
-  const bool colour = scene_.textures[static_cast<std::size_t>(texture)].channels >= 3;
-  const Vec3d texel = colour ? Vec3d(t[0], t[1], t[2]) : Vec3d(t[0]);
-  // Radiance in nits in the emission colour's space, then the transport's own conversion
-  // (as for environment texels): RGB modes convert to the working space, spectral modes
-  // upsample with that space's table and the E-relative scaling, so a grey texel gives the
-  // same spectrum as the untextured emitter, to the table's accuracy.
-  return colors_.rgb_radiance(Vec3f(textured_emission_[material] * texel), wl,
-                              scene_.materials[material].emission.color_space);
-}
 
 template <class Mode>
 PixelSample WavefrontIntegrator<Mode>::pixel_sample(const Paths& p, std::uint32_t slot) const {
@@ -355,11 +126,11 @@ std::size_t WavefrontIntegrator<Mode>::trace_camera_packet(Paths& p, std::size_t
     std::array<CameraBlockRequest, kLanes> requests;
     for (std::uint32_t i = 0; i < count; ++i)
       requests[i] = {p.sobol_pixel_key[first_slot + i], sample, u.data() + i};  // set_up made every lane's
-    padded_sobol_camera_blocks_lanes({requests.data(), count}, lens);
+    padded_sobol_camera_blocks_lanes(sampler_lanes_, {requests.data(), count}, lens);
   } else {
     for (std::uint32_t i = 0; i < count; ++i)
-      u.set(i, camera_samples(settings_.sampler, PixelSample{seed_, p.first_pixel + first_slot + i, width, sample},
-                              lens));
+      u.set(i, camera_samples(settings_.sampler, sampler_lanes_,
+                              PixelSample{seed_, p.first_pixel + first_slot + i, width, sample}, lens));
   }
   LaneSlots<Ray, kLanes> rays;  // every lane written, nothing cleared first (core/lane_slots.h)
   for (std::uint32_t i = 0; i < kLanes; ++i) {
@@ -478,8 +249,8 @@ void WavefrontIntegrator<Mode>::shade(Paths& p, std::uint32_t slot) const {
   Wavelengths<Mode>& wl = p.wavelengths[slot];
   const Ray& ray = p.ray[slot];
   if (p.depth[slot] == 0 && !p.first_hit_aovs.empty())
-    record_first_hit_aovs(p.first_hit_aovs[slot], ray, p.hit_found[slot] ? &p.hit[slot] : nullptr,
-                          p.cone_spread[slot]);
+    shading_.first_hit_aovs(p.first_hit_aovs[slot], ray, p.hit_found[slot] ? &p.hit[slot] : nullptr,
+                            p.cone_spread[slot]);
   // The segment that led here ran inside an absorbing dielectric: Beer–Lambert over its
   // length (ray directions are unit vectors, so t is in scene units), before anything at
   // its end is counted.
@@ -522,59 +293,19 @@ bool WavefrontIntegrator<Mode>::shades_in_lanes(const Paths& p, std::uint32_t sl
 template <class Mode>
 template <bool kPlainDiffuse>
 void WavefrontIntegrator<Mode>::shade_surface(Paths& p, std::uint32_t slot, SurfaceInteraction& si) const {
-  Spectrum<Mode>& beta = p.throughput[slot];
-  Spectrum<Mode>& L = p.radiance[slot];
   Wavelengths<Mode>& wl = p.wavelengths[slot];
   const Ray& ray = p.ray[slot];
   const Material& material = scene_.materials[si.material];
   p.cone_width[slot] += p.cone_spread[slot] * p.hit[slot].t;  // the ray cone's width at this hit
-  std::optional<bsdf::NormalMapMicrosurface> microsurface;
-  const Frame unmapped = si.shading;
-  std::optional<AnisotropyAtHit> anisotropy;
-  if constexpr (!kPlainDiffuse) {
-    if (__builtin_expect(material.has_anisotropy(), 0))
-      anisotropy = anisotropy_at_hit(material, si, p.cone_width[slot], ray);
-    if (material.normal_texture >= 0 || material.bump_texture >= 0)
-      microsurface = apply_maps(material, si, p.cone_width[slot], ray, anisotropy ? &anisotropy->direction : nullptr);
-    else if (anisotropy)
-      si.shading = frame_along(si.shading, anisotropy->direction);
-  }
-  // Rare (an opt-in mode on mapped materials): told so, GCC keeps the BSDF's own calls
-  // inlined on the common path (Cachegrind, BENCHMARKS.md "Session 17").
-  const bool on_microsurface = !kPlainDiffuse && __builtin_expect(microsurface.has_value(), 0);
-  if (material.is_emissive() && (si.front_face || material.emission.two_sided)) {
-    float w = 1.0f;
-    if (!p.prev_specular[slot] && use_nee_) {
-      if (weight_bsdf_hits_) {
-        const float light_pdf = lights_.pdf_triangle(p.hit[slot].mesh, p.hit[slot].triangle, p.prev_position[slot],
-                                                     si.position, p.prev_normal[slot]);
-        w = power_heuristic(p.prev_pdf[slot], light_pdf);
-      } else {
-        w = 0.0f;  // NEE only: emitters found by BSDF sampling are left to light sampling
-      }
-    }
-    // Emission textures: the ray cone's LOD only where the hit is counted alone (camera
-    // rays, after delta bounces: no NEE estimates the same light); where it is combined
-    // with NEE the finest level, as NEE evaluates it at its sampled point, so both
-    // techniques estimate one function and MIS stays unbiased.
-    float lod = 0.0f;
-    const int emission_texture = material.emission.texture;
-    const bool textured = !kPlainDiffuse && has_texture(emission_texture, si.mesh);
-    if (textured && p.prev_specular[slot])
-      lod = mip_level_from_ray_cone(textures_[static_cast<std::size_t>(emission_texture)], p.cone_width[slot],
-                                    std::abs(si.cos_wo_geometric), si.uv_area, si.world_area);
-    L += beta * (textured ? textured_emitted_radiance(si.material, si.uv, lod, wl)
-                          : untextured_emission(p, slot, si.material)) *
-         w;
-  }
+  MappedFrame mapped{si.shading, std::nullopt, std::nullopt};
+  if constexpr (!kPlainDiffuse) mapped = shading_.map_frame(material, si, p.cone_width[slot], ray);
+  if (SurfaceShading<Mode>::emits_toward(material, si)) add_surface_emission<kPlainDiffuse>(p, slot, si);
   if (p.depth[slot] + 1 > settings_.max_depth) {
     p.finished[slot] = 1;
     return;
   }
 
-  // The coat's own normal map (KHR_materials_clearcoat's clearcoatNormalTexture), in the
-  // base's frame; not on a microsurface (microfacet normal mapping shades the base alone).
-  // The coat points at the frame, which lives as long as the BSDF here.
+  // A clear-coat normal map's frame, which the coat points at: lives as long as the BSDF.
   std::optional<Frame> own_coat_frame;
   using PlainBsdf = bsdf::PlainDiffuseBsdf<Mode::kChannels>;
   auto bsdf = [&] {
@@ -583,21 +314,7 @@ void WavefrontIntegrator<Mode>::shade_surface(Paths& p, std::uint32_t slot, Surf
     if constexpr (kPlainDiffuse) {
       return PlainBsdf{{colors_.base_color(si.material, wl)}};
     } else {
-      MaterialPoint point = material_point(material, si, p.cone_width[slot], ray);
-      if (anisotropy) point.anisotropy = anisotropy->strength;
-      // A sheen's colour and a tinted specular F0 are upsampled here, where the path's
-      // wavelengths are known (rare: only the materials that have them pay for it).
-      LayerColors<Mode> layer_colors;
-      if (__builtin_expect(point.has_sheen(), 0)) layer_colors.sheen = colors_.reflectance(point.sheen_color, wl);
-      if (__builtin_expect(point.has_tinted_specular(), 0) && material.type == MaterialType::metallic_roughness)
-        layer_colors.specular_f0 = colors_.reflectance(tables_.dielectric_f0(si.material, point.specular_color), wl);
-      auto b = make_bsdf<Mode>(material, si.material, base_color(material, si, p.cone_width[slot], ray, wl), point, wl,
-                               tables_, layer_colors);
-      if (__builtin_expect(material.clearcoat_normal_texture >= 0, 0) && b.coat.present() && !on_microsurface) {
-        own_coat_frame = coat_frame(material, si, unmapped, p.cone_width[slot], ray);
-        if (own_coat_frame) b.coat.frame = &*own_coat_frame;
-      }
-      return b;
+      return shading_.bsdf(material, si, p.cone_width[slot], ray, wl, mapped, own_coat_frame);
     }
   }();
   if constexpr (Mode::kSpectral) {
@@ -615,60 +332,107 @@ void WavefrontIntegrator<Mode>::shade_surface(Paths& p, std::uint32_t slot, Surf
   if (bsdf.uses_direction_sample()) needs |= kNeedDirection;
   if (p.depth[slot] + 1 >= settings_.russian_roulette_depth) needs |= kNeedRoulette;
   const BounceSamples u = bounce_numbers(p, slot, needs);
+  if (light_sampled) queue_shadow_ray<kPlainDiffuse>(p, slot, si, bsdf, mapped, wo_local, u);
+  continue_path<kPlainDiffuse>(p, slot, si, bsdf, mapped, wo_local, u);
+}
 
-  if (light_sampled) {
-    if (const auto ls = lights_.sample(si.position, u.light_select, u.light, si.shading.n)) {
-      const Vec3f wi_local = si.shading.to_local(ls->wi);
-      // The geometric and the shading side must agree, or light leaks through edges.
-      if ((dot(ls->wi, si.geometric_normal) > 0.0f) == (wi_local.z > 0.0f) && ls->pdf > 0.0f) {
-        // (the microsurface_* functions are found by argument-dependent lookup, in prism::bsdf)
-        const bool weighted = !ls->is_delta && weight_bsdf_hits_;
-        float bsdf_pdf = 0.0f;
-        const Spectrum<Mode> f = [&] {
+template <class Mode>
+template <bool kPlainDiffuse>
+void WavefrontIntegrator<Mode>::add_surface_emission(Paths& p, std::uint32_t slot, const SurfaceInteraction& si) const {
+  const Material& material = scene_.materials[si.material];
+  const Spectrum<Mode>& beta = p.throughput[slot];
+  Spectrum<Mode>& L = p.radiance[slot];
+  const Wavelengths<Mode>& wl = p.wavelengths[slot];
+  float w = 1.0f;
+  if (!p.prev_specular[slot] && use_nee_) {
+    if (weight_bsdf_hits_) {
+      const float light_pdf = lights_.pdf_triangle(p.hit[slot].mesh, p.hit[slot].triangle, p.prev_position[slot],
+                                                   si.position, p.prev_normal[slot]);
+      w = power_heuristic(p.prev_pdf[slot], light_pdf);
+    } else {
+      w = 0.0f;  // NEE only: emitters found by BSDF sampling are left to light sampling
+    }
+  }
+  const bool textured = !kPlainDiffuse && shading_.has_texture(material.emission.texture, si.mesh);
+  if (textured) {
+    const float lod = shading_.emission_level_of_detail(material, si, p.cone_width[slot], p.prev_specular[slot]);
+    L += beta * shading_.textured_emitted_radiance(si.material, si.uv, lod, wl) * w;
+  } else {
+    L += beta * untextured_emission(p, slot, si.material) * w;
+  }
+}
+
+template <class Mode>
+template <bool kPlainDiffuse, class SurfaceBsdf>
+void WavefrontIntegrator<Mode>::queue_shadow_ray(Paths& p, std::uint32_t slot, const SurfaceInteraction& si,
+                                                 const SurfaceBsdf& bsdf, const MappedFrame& mapped,
+                                                 const Vec3f& wo_local, const BounceSamples& u) const {
+  const Spectrum<Mode>& beta = p.throughput[slot];
+  const Wavelengths<Mode>& wl = p.wavelengths[slot];
+  // Rare (an opt-in mode on mapped materials): told so, GCC keeps the BSDF's own calls
+  // inlined on the common path.
+  const bool on_microsurface = !kPlainDiffuse && __builtin_expect(mapped.microsurface.has_value(), 0);
+  if (const auto ls = lights_.sample(si.position, u.light_select, u.light, si.shading.n)) {
+    const Vec3f wi_local = si.shading.to_local(ls->wi);
+    // The geometric and the shading side must agree, or light leaks through edges.
+    if ((dot(ls->wi, si.geometric_normal) > 0.0f) == (wi_local.z > 0.0f) && ls->pdf > 0.0f) {
+      // (the microsurface_* functions are found by argument-dependent lookup, in prism::bsdf)
+      const bool weighted = !ls->is_delta && weight_bsdf_hits_;
+      float bsdf_pdf = 0.0f;
+      const Spectrum<Mode> f = [&] {
+        if constexpr (!kPlainDiffuse)
+          if (on_microsurface) return microsurface_eval(bsdf, *mapped.microsurface, wo_local, wi_local);
+        return bsdf.eval_with_pdf(wo_local, wi_local, weighted, bsdf_pdf);
+      }();
+      if (!f.is_black()) {
+        float w = 1.0f;
+        if (weighted) {
           if constexpr (!kPlainDiffuse)
-            if (on_microsurface) return microsurface_eval(bsdf, *microsurface, wo_local, wi_local);
-          return bsdf.eval_with_pdf(wo_local, wi_local, weighted, bsdf_pdf);
-        }();
-        if (!f.is_black()) {
-          float w = 1.0f;
-          if (weighted) {
-            if constexpr (!kPlainDiffuse)
-              if (on_microsurface) bsdf_pdf = microsurface_pdf(bsdf, *microsurface, wo_local, wi_local);
-            w = power_heuristic(ls->pdf, bsdf_pdf);
-          }
-          const Vec3f origin = offset_ray_origin(si.position, si.geometric_normal, ls->wi);
-          float t_max;
-          Vec3f dir = ls->wi;
-          if (std::isinf(ls->distance)) {
-            t_max = std::numeric_limits<float>::infinity();
-          } else {
-            const Vec3f target = ls->is_delta ? ls->position : offset_ray_origin(ls->position, ls->normal, -ls->wi);
-            const Vec3f segment = target - origin;
-            const float len = length(segment);
-            dir = segment / len;
-            t_max = len * (1.0f - 1e-4f);
-          }
-          p.shadow_ray[slot] = Ray{origin, dir, 0.0f, t_max};
-          const Spectrum<Mode> Le =
-              ls->has_rgb ? colors_.environment_radiance(ls->rgb, wl)
-                          : (ls->has_uv ? textured_emitted_radiance(ls->emitter, ls->uv, 0.0f, wl)
-                                        : untextured_emission(p, slot, ls->emitter)) *
-                                ls->scale;
-          p.shadow_contribution[slot] = beta * f * Le * (std::abs(wi_local.z) * w / ls->pdf);
-          // A light inside the same absorbing medium: the shadow ray's whole length runs
-          // through it (leaving it needs a crossing, which blocks the shadow ray).
-          if (p.inside_absorbing[slot])
-            p.shadow_contribution[slot] *=
-                beer_lambert_transmittance(p.interior_sigma[slot], std::isinf(ls->distance) ? ls->distance : t_max);
-          p.shadow_pending[slot] = 1;
+            if (on_microsurface) bsdf_pdf = microsurface_pdf(bsdf, *mapped.microsurface, wo_local, wi_local);
+          w = power_heuristic(ls->pdf, bsdf_pdf);
         }
+        const Vec3f origin = offset_ray_origin(si.position, si.geometric_normal, ls->wi);
+        float t_max;
+        Vec3f dir = ls->wi;
+        if (std::isinf(ls->distance)) {
+          t_max = std::numeric_limits<float>::infinity();
+        } else {
+          const Vec3f target = ls->is_delta ? ls->position : offset_ray_origin(ls->position, ls->normal, -ls->wi);
+          const Vec3f segment = target - origin;
+          const float len = length(segment);
+          dir = segment / len;
+          t_max = len * (1.0f - 1e-4f);
+        }
+        p.shadow_ray[slot] = Ray{origin, dir, 0.0f, t_max};
+        const Spectrum<Mode> Le =
+            ls->has_rgb ? colors_.environment_radiance(ls->rgb, wl)
+                        : (ls->has_uv ? shading_.textured_emitted_radiance(ls->emitter, ls->uv, 0.0f, wl)
+                                      : untextured_emission(p, slot, ls->emitter)) *
+                              ls->scale;
+        p.shadow_contribution[slot] = beta * f * Le * (std::abs(wi_local.z) * w / ls->pdf);
+        // A light inside the same absorbing medium: the shadow ray's whole length runs
+        // through it (leaving it needs a crossing, which blocks the shadow ray).
+        if (p.inside_absorbing[slot])
+          p.shadow_contribution[slot] *=
+              beer_lambert_transmittance(p.interior_sigma[slot], std::isinf(ls->distance) ? ls->distance : t_max);
+        p.shadow_pending[slot] = 1;
       }
     }
   }
+}
 
+template <class Mode>
+template <bool kPlainDiffuse, class SurfaceBsdf>
+void WavefrontIntegrator<Mode>::continue_path(Paths& p, std::uint32_t slot, const SurfaceInteraction& si,
+                                              const SurfaceBsdf& bsdf, const MappedFrame& mapped,
+                                              const Vec3f& wo_local, const BounceSamples& u) const {
+  Spectrum<Mode>& beta = p.throughput[slot];
+  const Wavelengths<Mode>& wl = p.wavelengths[slot];
+  const Material& material = scene_.materials[si.material];
+  const bool on_microsurface = !kPlainDiffuse && __builtin_expect(mapped.microsurface.has_value(), 0);
   const auto bs = [&] {
     if constexpr (!kPlainDiffuse)
-      if (on_microsurface) return microsurface_sample(bsdf, *microsurface, wo_local, u.lobe, u.direction, facet_numbers(p, slot));
+      if (on_microsurface) return microsurface_sample(bsdf, *mapped.microsurface, wo_local, u.lobe, u.direction, facet_numbers(p, slot));
     return bsdf.sample(wo_local, u.lobe, u.direction);
   }();
   if (!bs || bs->pdf <= 0.0f || bs->f.is_black()) {
@@ -860,8 +624,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
                                                     bool parallel, int bounces_per_pass,
                                                     const std::function<void()>* after_bounces) {
   PassStatistics stats;
-  std::atomic<std::uint64_t> shadow_rays{0}, invalid{0}, completed{0}, lane_shaded{0};
-  constexpr std::size_t kGrain = 1024;
+  QueueCounts counts;
   std::vector<std::uint32_t> survivor_counts, continuing_counts;  // per compaction chunk, reused every step
   // Stage 1's queue: the live paths past their camera ray (a path's first hit comes with
   // its camera ray, generate()), in queue order; none at the first step.
@@ -871,152 +634,165 @@ PassStatistics WavefrontIntegrator<Mode>::run_queue(Film& film, Paths& p, std::v
     stats.live_paths_per_step.push_back(static_cast<std::uint32_t>(live.size()));
     stats.rays += live.size();
     ++stats.steps;
-    // Stage 1: closest hits of the continuing paths' rays, traced as Embree ray streams.
-    for_range(parallel, continuing.size(), kGrain, [&](std::size_t b, std::size_t e) {
+    // Stage 1, intersect: closest hits of the continuing paths' rays, as Embree ray streams.
+    for_range(parallel, continuing.size(), kQueueGrain, [&](std::size_t b, std::size_t e) {
       accel_.intersect_slots(p.ray.data(), continuing.data() + b, e - b, p.hit.data(), p.hit_found.data());
     });
-    // Stage 2: shading emits continuation and shadow rays, with the geometry of the hits
-    // a few slots ahead prefetched (surface_interaction.h) where it is too big for the caches,
-    // and the hits' bounce blocks drawn first where that is cheap (sobol_lanes_).
-    for_range(parallel, live.size(), kGrain, [&](std::size_t b, std::size_t e) {
-      // Before shading slots[at … at + step): the indices of those twice as far on (at
-      // least 8), the vertices of those as far on (at least 4).
-      const auto prefetch_ahead = [&](const std::uint32_t* slots, std::size_t at, std::size_t count, std::size_t step) {
-        const std::size_t indices_at = at + std::max<std::size_t>(8, 2 * step);
-        const std::size_t vertices_at = at + std::max<std::size_t>(4, step);
-        for (std::size_t k = indices_at; k < std::min(count, indices_at + step); ++k)
-          if (p.hit_found[slots[k]]) prefetch_hit_indices(scene_, p.hit[slots[k]]);
-        for (std::size_t k = vertices_at; k < std::min(count, vertices_at + step); ++k)
-          if (p.hit_found[slots[k]]) prefetch_hit_vertices(scene_, p.hit[slots[k]]);
-      };
-      const auto width = static_cast<std::size_t>(lane_width_);
-      // The chunk's slots split without branches (whether a ray hit, and what, is a coin
-      // flip to a branch predictor): the hits that shades_in_lanes, shaded lane_width_ at a
-      // time, the last few alone; then every other slot alone. Each slot's bits are the
-      // same in any order. The same walk collects the hits' bounce-block requests.
-      std::array<std::uint32_t, kGrain> in_lanes, alone;
-      std::array<BounceBlockRequest, 64> requests;
-      for (std::size_t run = b; run < e; run += kGrain) {  // a tile's queue is one range
-        const std::size_t run_end = std::min(e, run + kGrain);
-        std::size_t in_lanes_count = 0, alone_count = 0, requested = 0;
-        for (std::size_t i = run; i < run_end; ++i) {
-          const std::uint32_t s = live[i];
-          const bool together = shades_in_lanes(p, s);
-          in_lanes[in_lanes_count] = s;
-          alone[alone_count] = s;
-          in_lanes_count += together;
-          alone_count += !together;
-          if (!sobol_lanes_) continue;  // the same for every slot
-          requests[requested] = {p.sobol_pixel_key[s], p.sample_index[s], p.depth[s], &p.bounce_block[s]};
-          requested += p.hit_found[s] != 0;  // a miss's request is overwritten by the next slot's
-          if (requested == requests.size()) {
-            padded_sobol_bounce_blocks_lanes({requests.data(), requested});
-            requested = 0;
-          }
-        }
-        if (sobol_lanes_) padded_sobol_bounce_blocks_lanes({requests.data(), requested});
-        std::size_t lane_shaded_count = 0;
-        for (; width > 0 && lane_shaded_count + width <= in_lanes_count; lane_shaded_count += width) {
-          if (prefetch_geometry_) prefetch_ahead(in_lanes.data(), lane_shaded_count, in_lanes_count, width);
-#if PRISM_FLOAT_LANES_AVX2
-          if (lane_width_ == lanes::avx2::kWidth)
-            shade_plain_lanes_avx2(p, in_lanes.data() + lane_shaded_count);
-          else
-#endif
-            shade_plain_lanes(p, in_lanes.data() + lane_shaded_count);
-        }
-        for (std::size_t k = lane_shaded_count; k < in_lanes_count; ++k) shade(p, in_lanes[k]);
-        for (std::size_t k = 0; k < alone_count; ++k) {
-          if (prefetch_geometry_) prefetch_ahead(alone.data(), k, alone_count, 1);
-          shade(p, alone[k]);
-        }
-        lane_shaded += lane_shaded_count;
-      }
-    });
-    // Stages 3 and 4 in one walk over the queue, per chunk: the chunk's shadow rays (one
-    // stream), then finished paths go to the film and their slot restarts with the pixel's
-    // next sample. Stage 5: compaction of the survivors, in queue order, in place: each chunk
-    // packs its survivors at its own start (a write never passes the read), then the packed
-    // runs move down to their prefix-sum offsets; likewise the survivors that did not
-    // restart, stage 1's next queue.
-    const std::size_t chunks = (live.size() + kGrain - 1) / kGrain;
+    // Stage 2, shade: emits continuation and shadow rays.
+    for_range(parallel, live.size(), kQueueGrain,
+              [&](std::size_t b, std::size_t e) { shade_stage(p, live, b, e, counts); });
+    // Stages 3 and 4, shadow and accumulate (and regenerate), in one walk over the queue
+    // per chunk; stage 5, compact: the survivors, in queue order, in place. Each chunk
+    // packs its survivors at its own start (a write never passes the read), then the
+    // packed runs move down to their prefix-sum offsets; likewise the survivors that did
+    // not restart, stage 1's next queue.
+    const std::size_t chunks = (live.size() + kQueueGrain - 1) / kQueueGrain;
     survivor_counts.assign(chunks, 0);
     continuing_counts.assign(chunks, 0);
     continuing.resize(live.size());
     for_range(parallel, chunks, 1, [&](std::size_t cb, std::size_t ce) {
-      // The chunk's finished slots, and which of them restart: the film and the new
-      // samples are done after the walk, each in a loop of its own, so that the CIE and
-      // wavelength tables and the sampler stay in the L1 cache for the whole run of slots
-      // instead of taking turns with the path state. Each slot's numbers are its own, so
-      // the order changes nothing.
-      std::array<std::uint32_t, kGrain> finished, restarted, next_sample;
-      for (std::size_t c = cb; c < ce; ++c) {
-        std::uint64_t local_invalid = 0, traced = 0;
-        std::size_t finished_count = 0, restarted_count = 0;
-        const std::size_t end = std::min(live.size(), (c + 1) * kGrain);
-        accel_.occluded_slots(p.shadow_ray.data(), live.data() + c * kGrain, end - c * kGrain,
-                              p.shadow_pending.data(), p.shadow_blocked.data());
-        std::size_t kept = c * kGrain, continues = c * kGrain;
-        // Without branches: whether a slot's shadow ray was traced and got through, and
-        // whether its path finished, are coin flips a predictor misses on (core/branch_free.h);
-        // each slot is written to every list and counted into those it belongs to.
-        for (std::size_t i = c * kGrain; i < end; ++i) {
-          const std::uint32_t s = live[i];
-          const bool pending = p.shadow_pending[s] != 0;
-          traced += pending;
-          p.radiance[s] = select_bits(pending & (p.shadow_blocked[s] == 0), p.radiance[s] + p.shadow_contribution[s],
-                                      p.radiance[s]);
-          const bool finished_now = p.finished[s] != 0;
-          const bool restarts = finished_now & regenerate_ & (p.sample_index[s] + 1 < p.sample_end[s]);
-          finished[finished_count] = s;
-          finished_count += finished_now;
-          restarted[restarted_count] = s;
-          restarted_count += restarts;
-          live[kept] = s;
-          kept += !finished_now | restarts;
-          continuing[continues] = s;
-          continues += !finished_now;
-        }
-        for (std::size_t k = 0; k < finished_count; ++k) {
-          const std::uint32_t s = finished[k];
-          const Vec3d value = colors_.to_film(p.radiance[s], p.wavelengths[s]);
-          if (is_finite(value)) {
-            film.add_sample(p.first_pixel + s, value);
-            if (!p.first_hit_aovs.empty()) film.add_aov_sample(p.first_pixel + s, p.first_hit_aovs[s]);
-          } else {
-            ++local_invalid;  // never written to the film; reported at the end
-          }
-        }
-        for (std::size_t k = 0; k < restarted_count; ++k) next_sample[k] = p.sample_index[restarted[k]] + 1;
-        generate(p, restarted.data(), next_sample.data(), restarted_count);
-        survivor_counts[c] = static_cast<std::uint32_t>(kept - c * kGrain);
-        continuing_counts[c] = static_cast<std::uint32_t>(continues - c * kGrain);
-        invalid += local_invalid;
-        completed += finished_count;
-        shadow_rays += traced;
-      }
+      for (std::size_t c = cb; c < ce; ++c)
+        shadow_and_accumulate_stage(film, p, live, continuing, c, survivor_counts[c], continuing_counts[c], counts);
     });
-    const auto pack = [&](std::vector<std::uint32_t>& queue, const std::vector<std::uint32_t>& counts) {
-      std::size_t packed = 0;
-      for (std::size_t c = 0; c < chunks; ++c) {
-        const auto first = queue.begin() + static_cast<std::ptrdiff_t>(c * kGrain);
-        std::copy(first, first + counts[c], queue.begin() + static_cast<std::ptrdiff_t>(packed));
-        packed += counts[c];
-      }
-      queue.resize(packed);
-    };
-    pack(live, survivor_counts);
-    pack(continuing, continuing_counts);
+    compact_queue(live, survivor_counts);
+    compact_queue(continuing, continuing_counts);
     if (bounces_per_pass > 0 && after_bounces && *after_bounces && !live.empty() &&
         stats.steps % bounces_per_pass == 0)
       (*after_bounces)();
   }
-  stats.shadow_rays = shadow_rays.load();
-  stats.invalid_samples = invalid.load();
-  stats.completed_samples = completed.load();
-  stats.lane_shaded_hits = lane_shaded.load();
+  stats.shadow_rays = counts.shadow_rays.load();
+  stats.invalid_samples = counts.invalid.load();
+  stats.completed_samples = counts.completed.load();
+  stats.lane_shaded_hits = counts.lane_shaded.load();
   stats.camera_packet_rays = p.camera_packet_rays.load();
   return stats;
+}
+
+template <class Mode>
+void WavefrontIntegrator<Mode>::shade_stage(Paths& p, const std::vector<std::uint32_t>& live, std::size_t b,
+                                            std::size_t e, QueueCounts& counts) const {
+  // Before shading slots[at … at + step): the indices of those twice as far on (at
+  // least 8), the vertices of those as far on (at least 4).
+  const auto prefetch_ahead = [&](const std::uint32_t* slots, std::size_t at, std::size_t count, std::size_t step) {
+    const std::size_t indices_at = at + std::max<std::size_t>(8, 2 * step);
+    const std::size_t vertices_at = at + std::max<std::size_t>(4, step);
+    for (std::size_t k = indices_at; k < std::min(count, indices_at + step); ++k)
+      if (p.hit_found[slots[k]]) prefetch_hit_indices(scene_, p.hit[slots[k]]);
+    for (std::size_t k = vertices_at; k < std::min(count, vertices_at + step); ++k)
+      if (p.hit_found[slots[k]]) prefetch_hit_vertices(scene_, p.hit[slots[k]]);
+  };
+  const auto width = static_cast<std::size_t>(lane_width_);
+  // The chunk's slots split without branches (whether a ray hit, and what, is a coin
+  // flip to a branch predictor): the hits that shades_in_lanes, shaded lane_width_ at a
+  // time, the last few alone; then every other slot alone. Each slot's bits are the
+  // same in any order. The same walk collects the hits' bounce-block requests.
+  std::array<std::uint32_t, kQueueGrain> in_lanes, alone;
+  std::array<BounceBlockRequest, 64> requests;
+  for (std::size_t run = b; run < e; run += kQueueGrain) {  // a tile's queue is one range
+    const std::size_t run_end = std::min(e, run + kQueueGrain);
+    std::size_t in_lanes_count = 0, alone_count = 0, requested = 0;
+    for (std::size_t i = run; i < run_end; ++i) {
+      const std::uint32_t s = live[i];
+      const bool together = shades_in_lanes(p, s);
+      in_lanes[in_lanes_count] = s;
+      alone[alone_count] = s;
+      in_lanes_count += together;
+      alone_count += !together;
+      if (!sobol_lanes_) continue;  // the same for every slot
+      requests[requested] = {p.sobol_pixel_key[s], p.sample_index[s], p.depth[s], &p.bounce_block[s]};
+      requested += p.hit_found[s] != 0;  // a miss's request is overwritten by the next slot's
+      if (requested == requests.size()) {
+        padded_sobol_bounce_blocks_lanes(sampler_lanes_, {requests.data(), requested});
+        requested = 0;
+      }
+    }
+    if (sobol_lanes_) padded_sobol_bounce_blocks_lanes(sampler_lanes_, {requests.data(), requested});
+    std::size_t lane_shaded_count = 0;
+    for (; width > 0 && lane_shaded_count + width <= in_lanes_count; lane_shaded_count += width) {
+      if (prefetch_geometry_) prefetch_ahead(in_lanes.data(), lane_shaded_count, in_lanes_count, width);
+#if PRISM_FLOAT_LANES_AVX2
+      if (lane_width_ == lanes::avx2::kWidth)
+        shade_plain_lanes_avx2(p, in_lanes.data() + lane_shaded_count);
+      else
+#endif
+        shade_plain_lanes(p, in_lanes.data() + lane_shaded_count);
+    }
+    for (std::size_t k = lane_shaded_count; k < in_lanes_count; ++k) shade(p, in_lanes[k]);
+    for (std::size_t k = 0; k < alone_count; ++k) {
+      if (prefetch_geometry_) prefetch_ahead(alone.data(), k, alone_count, 1);
+      shade(p, alone[k]);
+    }
+    counts.lane_shaded += lane_shaded_count;
+  }
+}
+
+template <class Mode>
+void WavefrontIntegrator<Mode>::shadow_and_accumulate_stage(Film& film, Paths& p, std::vector<std::uint32_t>& live,
+                                                            std::vector<std::uint32_t>& continuing, std::size_t c,
+                                                            std::uint32_t& survivors,
+                                                            std::uint32_t& continuing_count,
+                                                            QueueCounts& counts) const {
+  // The chunk's finished slots, and which of them restart: the film and the new samples
+  // are done after the walk, each in a loop of its own, so that the CIE and wavelength
+  // tables and the sampler stay in the L1 cache for the whole run of slots instead of
+  // taking turns with the path state. Each slot's numbers are its own, so the order
+  // changes nothing.
+  std::array<std::uint32_t, kQueueGrain> finished, restarted, next_sample;
+  std::uint64_t local_invalid = 0, traced = 0;
+  std::size_t finished_count = 0, restarted_count = 0;
+  const std::size_t end = std::min(live.size(), (c + 1) * kQueueGrain);
+  accel_.occluded_slots(p.shadow_ray.data(), live.data() + c * kQueueGrain, end - c * kQueueGrain,
+                        p.shadow_pending.data(), p.shadow_blocked.data());
+  std::size_t kept = c * kQueueGrain, continues = c * kQueueGrain;
+  // Without branches: whether a slot's shadow ray was traced and got through, and
+  // whether its path finished, are coin flips a predictor misses on (core/branch_free.h);
+  // each slot is written to every list and counted into those it belongs to.
+  for (std::size_t i = c * kQueueGrain; i < end; ++i) {
+    const std::uint32_t s = live[i];
+    const bool pending = p.shadow_pending[s] != 0;
+    traced += pending;
+    p.radiance[s] = select_bits(pending & (p.shadow_blocked[s] == 0), p.radiance[s] + p.shadow_contribution[s],
+                                p.radiance[s]);
+    const bool finished_now = p.finished[s] != 0;
+    const bool restarts = finished_now & regenerate_ & (p.sample_index[s] + 1 < p.sample_end[s]);
+    finished[finished_count] = s;
+    finished_count += finished_now;
+    restarted[restarted_count] = s;
+    restarted_count += restarts;
+    live[kept] = s;
+    kept += !finished_now | restarts;
+    continuing[continues] = s;
+    continues += !finished_now;
+  }
+  for (std::size_t k = 0; k < finished_count; ++k) {
+    const std::uint32_t s = finished[k];
+    const Vec3d value = colors_.to_film(p.radiance[s], p.wavelengths[s]);
+    if (is_finite(value)) {
+      film.add_sample(p.first_pixel + s, value);
+      if (!p.first_hit_aovs.empty()) film.add_aov_sample(p.first_pixel + s, p.first_hit_aovs[s]);
+    } else {
+      ++local_invalid;  // never written to the film; reported at the end
+    }
+  }
+  for (std::size_t k = 0; k < restarted_count; ++k) next_sample[k] = p.sample_index[restarted[k]] + 1;
+  generate(p, restarted.data(), next_sample.data(), restarted_count);
+  survivors = static_cast<std::uint32_t>(kept - c * kQueueGrain);
+  continuing_count = static_cast<std::uint32_t>(continues - c * kQueueGrain);
+  counts.invalid += local_invalid;
+  counts.completed += finished_count;
+  counts.shadow_rays += traced;
+}
+
+template <class Mode>
+void WavefrontIntegrator<Mode>::compact_queue(std::vector<std::uint32_t>& queue,
+                                              const std::vector<std::uint32_t>& counts) {
+  std::size_t packed = 0;
+  for (std::size_t c = 0; c < counts.size(); ++c) {
+    const auto first = queue.begin() + static_cast<std::ptrdiff_t>(c * kQueueGrain);
+    std::copy(first, first + counts[c], queue.begin() + static_cast<std::ptrdiff_t>(packed));
+    packed += counts[c];
+  }
+  queue.resize(packed);
 }
 
 template class WavefrontIntegrator<SpectralMode<3>>;

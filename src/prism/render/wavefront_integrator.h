@@ -45,6 +45,8 @@
 #include "prism/render/film.h"
 #include "prism/render/light_estimator.h"
 #include "prism/render/material_bsdf.h"
+#include "prism/render/simd_level.h"
+#include "prism/render/surface_shading.h"
 #include "prism/sampling/pixel_sampler.h"
 #include "prism/scene/camera_rays.h"
 #include "prism/scene/light_sampler.h"
@@ -72,6 +74,8 @@ struct PathSettings {
   // scene/triangle_light_sampling.h); the defaults by measurement (BENCHMARKS.md "Peer").
   LightSamplerOptions light;
   NormalMapping normal_mapping = NormalMapping::classic;  // bsdf/normal_mapping_model.h
+  // The SIMD the fast paths may use (render/simd_level.h): the same image at every level.
+  SimdLevel simd = SimdLevel::automatic;
 };
 
 // Pixels per tile: a tile's queue is run by one thread from its first step to its last, in
@@ -166,6 +170,24 @@ class WavefrontIntegrator {
   // plain hit shades to the same bits either way.
   template <bool kPlainDiffuse>
   void shade_surface(Paths& paths, std::uint32_t slot, SurfaceInteraction& si) const;
+  // shade_surface's stages, inlined into it (each runs once per hit; apart only to be read
+  // one at a time). `mapped`: the frame after the material's maps (SurfaceShading).
+  using MappedFrame = typename SurfaceShading<Mode>::MappedFrame;
+  // The hit emitter's radiance, MIS-weighted against light sampling, into the path.
+  template <bool kPlainDiffuse>
+  [[gnu::always_inline]] inline void add_surface_emission(Paths& paths, std::uint32_t slot,
+                                                          const SurfaceInteraction& si) const;
+  // Next-event estimation: a light sample, its contribution and its shadow ray, which
+  // stage 3 traces (Paths::shadow_pending).
+  template <bool kPlainDiffuse, class SurfaceBsdf>
+  [[gnu::always_inline]] inline void queue_shadow_ray(Paths& paths, std::uint32_t slot, const SurfaceInteraction& si,
+                                                      const SurfaceBsdf& bsdf, const MappedFrame& mapped,
+                                                      const Vec3f& wo_local, const BounceSamples& u) const;
+  // The BSDF sample that continues the path, the medium it enters, Russian roulette.
+  template <bool kPlainDiffuse, class SurfaceBsdf>
+  [[gnu::always_inline]] inline void continue_path(Paths& paths, std::uint32_t slot, const SurfaceInteraction& si,
+                                                   const SurfaceBsdf& bsdf, const MappedFrame& mapped,
+                                                   const Vec3f& wo_local, const BounceSamples& u) const;
   // Whether shade() of the slot's hit may run in lanes (shade_plain_lanes): a hit on a mesh
   // of lane_mesh_, on the path's first segment outside a medium, with a bounce left, and
   // no AOVs to record.
@@ -179,48 +201,6 @@ class WavefrontIntegrator {
   // The same for eight hits, in AVX2 (lanes::avx2): only where the processor has AVX2.
   [[gnu::target("avx2")]] void shade_plain_lanes_avx2(Paths& paths, const std::uint32_t* slots) const;
 #endif
-  Spectrum<Mode> base_color(const Material& material, const SurfaceInteraction& si, float cone_width,
-                            const Ray& ray, const Wavelengths<Mode>& wl) const;
-  // Base colour × texel of a textured material, in the material's base_color_space;
-  // nothing when untextured.
-  std::optional<Vec3f> textured_base_color(const Material& material, const SurfaceInteraction& si, float cone_width,
-                                           const Ray& ray) const;
-  // Texture `texture` at the hit, filtered at the ray cone's level of detail; nothing when
-  // the index is unset or the mesh has no uvs. Every material texture uses this LOD.
-  std::optional<TexelRgba> texel_at_hit(int texture, const SurfaceInteraction& si, float cone_width,
-                                        const Ray& ray) const;
-  TexelRgba texel_at(int texture, Vec2f uv, float level_of_detail) const;
-  // The mip level a hit's ray cone covers in `texture` (which the mesh must have uvs for).
-  float level_of_detail_at_hit(int texture, const SurfaceInteraction& si, float cone_width, const Ray& ray) const;
-  bool has_texture(int texture, std::uint32_t mesh) const;
-  // Applies the material's normal and bump maps to si.shading. With microfacet normal
-  // mapping (and a material that does not transmit), returns the microsurface of the
-  // mapped frame instead and leaves si.shading unmapped. With an anisotropy direction
-  // (world space), both frames are turned about their normals to run along it.
-  [[gnu::noinline]] std::optional<bsdf::NormalMapMicrosurface> apply_maps(const Material& material,
-                                                                          SurfaceInteraction& si, float cone_width,
-                                                                          const Ray& ray,
-                                                                          const Vec3f* anisotropy_direction) const;
-  // An anisotropic material's direction at the hit (world space, from the unmapped tangent
-  // space, render/anisotropy.h) and its strength (after the texture's B); nothing where the
-  // surface has no usable tangent.
-  struct AnisotropyAtHit {
-    Vec3f direction;
-    float strength;
-  };
-  [[gnu::noinline]] std::optional<AnisotropyAtHit> anisotropy_at_hit(const Material& material,
-                                                                    const SurfaceInteraction& si, float cone_width,
-                                                                    const Ray& ray) const;
-  // Replaces si.shading by the material's normal-mapped frame, where it has a normal map.
-  void apply_normal_map(const Material& material, SurfaceInteraction& si, float cone_width, const Ray& ray) const;
-  // `unmapped` perturbed by tangent-space normal map `texture` (scaled by `scale`) at the
-  // hit, in world space; nothing without the texel or a tangent.
-  std::optional<Frame> tangent_space_mapped_frame(int texture, float scale, const SurfaceInteraction& si,
-                                                  const Frame& unmapped, float cone_width, const Ray& ray) const;
-  // The coat's frame from the material's clearcoat normal map, around the unmapped normal,
-  // in si.shading's local coordinates (bsdf::Clearcoat::frame).
-  [[gnu::noinline]] std::optional<Frame> coat_frame(const Material& material, const SurfaceInteraction& si,
-                                                    const Frame& unmapped, float cone_width, const Ray& ray) const;
   // Microfacet normal mapping's two numbers for the slot's current bounce (pixel_sampler.h).
   Vec2f facet_numbers(const Paths& paths, std::uint32_t slot) const;
   // The numbers `needs` asks for of the slot's current bounce block: from the block drawn
@@ -228,43 +208,49 @@ class WavefrontIntegrator {
   BounceSamples bounce_numbers(const Paths& paths, std::uint32_t slot, unsigned needs) const;
   // The sampler's key of the slot's current sample.
   PixelSample pixel_sample(const Paths& paths, std::uint32_t slot) const;
-  // Replaces si.shading by the material's bump-mapped frame, where it has a bump map.
-  void apply_bump_map(const Material& material, SurfaceInteraction& si, float cone_width, const Ray& ray) const;
-  // Roughness and metallic after the metallic-roughness texture (G, B; linear).
-  MaterialPoint material_point(const Material& material, const SurfaceInteraction& si, float cone_width,
-                               const Ray& ray) const;
-  // Emitted radiance of an emissive material with an emission texture (and uvs): the
-  // texel at `uv`, filtered at `level_of_detail`, multiplies the emission colour. Untextured
-  // emitters go through untextured_emission.
-  Spectrum<Mode> textured_emitted_radiance(std::uint32_t material, Vec2f uv, float level_of_detail,
-                                           const Wavelengths<Mode>& wl) const;
   // An untextured emitter's spectrum at the wavelengths of slot's path, through the path's
   // one-entry cache.
   static constexpr std::uint32_t kNoCachedEmitter = ~std::uint32_t{0};
   Spectrum<Mode> untextured_emission(Paths& p, std::uint32_t slot, std::uint32_t emitter) const;
-  // Writes the AOVs of a camera ray (wavefront_integrator_aovs.cpp); `hit` is null when the
-  // ray escaped.
-  void record_first_hit_aovs(AovSample& aovs, const Ray& ray, const Hit* hit, float cone_spread) const;
   PassStatistics run_wave(Film& film, std::uint32_t first_sample, std::uint32_t count, int bounces_per_pass,
                           const std::function<void()>* after_bounces);
   // Steps the queue `live` (generated slots) until every path in it has its samples:
   // each stage split across the threads (`parallel`) or run on this thread (a tile).
   PassStatistics run_queue(Film& film, Paths& paths, std::vector<std::uint32_t>& live, bool parallel,
                            int bounces_per_pass, const std::function<void()>* after_bounces);
+  // The queue's stages work on chunks of this many slots (a tile's queue is one chunk).
+  static constexpr std::size_t kQueueGrain = 1024;
+  struct QueueCounts {
+    std::atomic<std::uint64_t> shadow_rays{0}, invalid{0}, completed{0}, lane_shaded{0};
+  };
+  // Stage 2, shade, of live[b, e): plain diffuse hits in lanes, the rest alone; the
+  // geometry of hits a few slots ahead prefetched where it outgrows the caches
+  // (surface_interaction.h), and the hits' bounce blocks drawn first where that is cheap
+  // (sobol_lanes_).
+  void shade_stage(Paths& paths, const std::vector<std::uint32_t>& live, std::size_t b, std::size_t e,
+                   QueueCounts& counts) const;
+  // Stages 3 and 4 of chunk c of the queue: its shadow rays traced (one stream), finished
+  // paths added to the film and their slots restarted with the pixel's next sample
+  // (regeneration). The chunk's survivors (and those of them that did not restart, stage
+  // 1's next queue) are packed at its start: `survivors` and `continuing_count` say how many.
+  void shadow_and_accumulate_stage(Film& film, Paths& paths, std::vector<std::uint32_t>& live,
+                                   std::vector<std::uint32_t>& continuing, std::size_t c, std::uint32_t& survivors,
+                                   std::uint32_t& continuing_count, QueueCounts& counts) const;
+  // Stage 5, compact: moves each chunk's packed run (counts[c] slots at c · kQueueGrain)
+  // down to its prefix-sum offset, in queue order.
+  static void compact_queue(std::vector<std::uint32_t>& queue, const std::vector<std::uint32_t>& counts);
   std::unique_ptr<Paths> acquire_tile_paths();
   void release_tile_paths(std::unique_ptr<Paths> paths);
 
   std::mutex tile_paths_mutex_;
   std::vector<std::unique_ptr<Paths>> idle_tile_paths_;  // tile path states not in use
   std::unique_ptr<Paths> whole_image_paths_;             // lockstep queue's, made on first use
-  MaterialTables tables_;
+  SurfaceShading<Mode> shading_;  // what a hit does, shared with the reference path tracer
   std::vector<std::uint8_t> plain_diffuse_;  // per material: is_plain_diffuse
   // Per mesh: a plain diffuse material that does not emit, and no tangents (whose frames
   // the lanes do not build), so shade_plain_lanes can shade its hits. All zero where
   // the lanes are off (lane_width_ 0).
   std::vector<std::uint8_t> lane_mesh_;
-  const std::vector<MipPyramid>& textures_;  // one per Scene::textures entry
-  std::vector<Mat3> textured_emission_;  // per material: texel → radiance in the emission colour's space (scene/emission.h)
   const Scene& scene_;
   const EmbreeAccel& accel_;
   const LightSampler& lights_;
@@ -282,12 +268,12 @@ class WavefrontIntegrator {
   // of a queue are independent of one another and overlap, where inside shade() they are a
   // link in each path's chain of dependent work (BENCHMARKS.md "Session 28", "Session 34").
   bool sobol_lanes_ = false;
+  SobolLanes sampler_lanes_ = SobolLanes::none;  // settings_.simd's lanes for the sampler
   bool use_nee_ = false;           // light samples at non-specular vertices (not bsdf_only, and lights exist)
   bool weight_bsdf_hits_ = false;  // MIS: light samples and emitters found by BSDF sampling weighted against each other
   // Hits on lane_mesh_ meshes are shaded lane_width_ at a time: eight with AVX2
-  // (shade_plain_lanes_avx2), else four (shade_plain_lanes). For comparisons (the image is
-  // the same): PRISM_SHADE_SSE2=1 takes four lanes where AVX2 would run, and
-  // PRISM_SHADE_SCALAR=1 shades every hit alone (lane_width_ 0).
+  // (shade_plain_lanes_avx2), four with SSE2 (shade_plain_lanes), or each alone (0), as
+  // settings_.simd says (shading_lane_width); the image is the same.
   int lane_width_ = 0;
   static constexpr int kMaxLaneWidth = 8;
 };

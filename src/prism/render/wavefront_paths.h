@@ -79,7 +79,7 @@ struct WavefrontIntegrator<Mode>::Paths {
 template <class Mode>
 BounceSamples WavefrontIntegrator<Mode>::bounce_numbers(const Paths& p, std::uint32_t slot, unsigned needs) const {
   return sobol_lanes_ ? only_needed(p.bounce_block[slot], needs)
-                              : bounce_samples(settings_.sampler, pixel_sample(p, slot), p.depth[slot], needs);
+                              : bounce_samples(settings_.sampler, sampler_lanes_, pixel_sample(p, slot), p.depth[slot], needs);
 }
 
 }  // namespace prism

@@ -58,6 +58,7 @@ struct RenderOptions {
   std::string normal_mapping;  // empty: the scene's choice, else classic
   std::string sampler = std::string(sampler_name(PathSettings{}.sampler));
   std::string simd = "auto";
+  std::string integrator = "wavefront";
   std::string mode = "spectral";
   int wavelengths = 4;
   std::string wavelength_sampling = "cosh";
@@ -165,6 +166,7 @@ void write_outputs(const std::vector<std::filesystem::path>& outputs, const Rend
       meta.strings["prism:scene"] = scene_name;
       meta.strings["prism:transport"] = describe(settings.transport);
       meta.strings["prism:sampler"] = std::string(sampler_name(settings.path.sampler));
+      meta.strings["prism:integrator"] = std::string(integrator_name(settings.integrator));
       meta.strings["prism:estimator"] = std::string(light_estimator_name(settings.path.estimator));
       meta.strings["prism:normalMapping"] = std::string(normal_mapping_name(settings.path.normal_mapping));
       meta.ints["prism:spp"] = result.passes_done;
@@ -220,6 +222,7 @@ int run_render(const RenderOptions& o) {
     settings.path.normal_mapping = *model;
   }
   settings.path.sampler = parse_sampler_option(o.sampler);
+  settings.integrator = parse_integrator(o.integrator);
   settings.path.simd = parse_simd_level(o.simd);
   require_simd_level(settings.path.simd);
   if (o.mode != "spectral" && o.mode != "rgb") throw UsageError(fmt::format("unknown --mode '{}' (spectral, rgb)", o.mode));
@@ -420,6 +423,10 @@ void add_render_command(CLI::App& root, Action& action) {
                   "Random numbers of each path: independent (PCG32), sobol (padded Owen-scrambled Sobol', "
                   "stratified per pixel) or zsobol (blue-noise ordering across pixels, one layer per sample); "
                   "every choice is deterministic per (seed, pixel, sample, dimension)")
+      ->capture_default_str();
+  cmd->add_option("--integrator", options->integrator,
+                  "wavefront (the fast one) or reference (one sample and one ray at a time, the textbook "
+                  "algorithm the wavefront integrator is tested against; same image in expectation, much slower)")
       ->capture_default_str();
   cmd->add_option("--simd", options->simd,
                   "SIMD the fast paths may use: auto (the widest this processor runs), avx512, avx2, sse2 or "

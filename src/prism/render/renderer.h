@@ -1,18 +1,30 @@
 #pragma once
 // Progressive driver: renders passes (a few samples of every pixel, sized to take about
-// half a second) with the wavefront integrator until the sample target, the time limit or
-// a cancellation request ends the render.
+// half a second) with the chosen integrator (the wavefront integrator, or the reference
+// path tracer it is tested against) until the sample target, the time limit or a
+// cancellation request ends the render.
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
 
 #include "prism/color/color_space.h"
 #include "prism/render/film.h"
+#include "prism/render/image_fingerprint.h"
 #include "prism/render/transport_mode.h"
 #include "prism/render/wavefront_integrator.h"
 #include "prism/scene/scene.h"
 
 namespace prism {
+
+// Which integrator renders: both estimate the same image (render/reference_path_tracer.h).
+enum class IntegratorKind { wavefront, reference };
+std::string_view integrator_name(IntegratorKind kind);
+// "wavefront" or "reference"; anything else: UsageError listing them.
+IntegratorKind parse_integrator(std::string_view name);
+std::vector<std::string> integrator_names();
 
 struct RenderSettings {
   int width = 512;
@@ -26,6 +38,7 @@ struct RenderSettings {
   int threads = 0;                  // 0: all hardware threads
   PathSettings path;
   TransportSettings transport;
+  IntegratorKind integrator = IntegratorKind::wavefront;
   int samples_per_pass = 0;         // 0: sized from the measured speed (about 0.5 s a pass)
   bool regenerate_paths = true;     // off: one wave per sample (for measuring the benefit)
   // > 0: RenderHooks::on_bounces sees the film after every this many bounces of the paths in
@@ -41,11 +54,6 @@ struct RenderSettings {
 // Validates ranges (sizes, spp, depth, threads); throws UsageError naming the option.
 void validate_render_settings(const RenderSettings& settings);
 
-// A fingerprint of everything that determines the pixel values of sample i: the scene,
-// image size, seed and path settings, sampler included (not spp, threads or time limits),
-// and the AOV set when it is not empty (the files then hold more layers). Checkpoints and
-// partial renders carry it so that only compatible states are resumed or merged.
-std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settings);
 
 struct RenderProgress {
   int passes_done = 0;

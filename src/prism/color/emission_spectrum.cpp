@@ -39,7 +39,12 @@ EmissionSpectrum emission_spectrum(const Vec3d& rgb_in, const ColorSpace& workin
     c = fitter.fit(grey * (1.0 - t) + target * t, c).coefficients;
   }
   EmissionSpectrum out{to_wavelength_nm(c), 1.0};
-  out.scale = luminance_nits / color::luminance_nits(out);
+  // Normalise the luminance the film will show. The film adapts the spectrum's E-relative
+  // XYZ back to the working white (spectral_xyz_to_rgb_matrix), and a Bradford adaptation
+  // keeps Y only for the white itself: an orange light's E-relative Y is about 0.6 % above
+  // its Y under D65, so normalising the E-relative Y filmed such lights that much dark.
+  const Vec3d filmed = adaptation_matrix(xy_to_XYZ(kWhiteE), white_XYZ(working), Cat::bradford) * spectrum_to_xyz(out);
+  out.scale = luminance_nits / (kMaxLuminousEfficacyLmPerW * filmed.y);
   return out;
 }
 

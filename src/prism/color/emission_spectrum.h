@@ -5,8 +5,9 @@
 //   2. a Jakob–Hanika sigmoid polynomial s(λ) is fitted to that colour relative to E
 //      (our Gauss–Newton fitter, directly per light; lights are few) — scaled to half the
 //      largest channel, so it sits well inside the [0, 1] range a sigmoid can reach;
-//   3. the spectrum is L(λ) = K s(λ) with K chosen so that 683 ∫ L ȳ dλ (trapezoid, 1 nm,
-//      380–780 nm) equals the requested luminance in nits.
+//   3. the spectrum is L(λ) = K s(λ) with K chosen so that the film shows the requested
+//      luminance in nits: 683 times the Y of ∫ L (x̄, ȳ, z̄) dλ (trapezoid, 1 nm, 380–780 nm)
+//      adapted back from E to the working white (for greys: 683 ∫ L ȳ dλ itself).
 // Consequence, and the convention a spectral film must follow: an equal-energy spectrum is
 // the neutral of a spectral render. A working-space white light becomes a flat spectrum,
 // whose XYZ is E's; converting rendered XYZ to working RGB must adapt E → working white

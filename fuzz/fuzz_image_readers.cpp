@@ -1,5 +1,5 @@
 // libFuzzer target: the texture image readers (PNG and JPEG through stb_image, Radiance .hdr
-// through scene/radiance_hdr.h, OpenEXR through prism::read_exr, which needs a file). The
+// through io/radiance_hdr_reader.h, OpenEXR through prism::read_exr, which needs a file). The
 // size limit is lowered so that headers claiming huge images are refused rather than
 // exhausting the fuzzer's memory. Images are read as colour textures in their own gamut, so
 // that the conversions from a file's primaries (and a Radiance header's factors) run too.

@@ -12,7 +12,7 @@
 #include "prism/display/rendering.h"
 #include "prism/io/exr.h"
 #include "prism/io/read_to_end.h"
-#include "prism/scene/radiance_hdr.h"
+#include "prism/io/radiance_hdr_reader.h"
 #include "prism/scene/texture_file.h"
 
 namespace prism::cli {
@@ -41,7 +41,7 @@ int run_tonemap(const TonemapOptions& o) {
     // Only a Radiance picture is read whole here; OpenEXR reads its own file.
     if (detect_image_file_format(o.input) == ImageFileFormat::radiance_hdr) {
       // Radiance: the space its header names (PRIMARIES, XYZE; Rec.709 without), its
-      // EXPOSURE and COLORCORR divided out (scene/radiance_hdr.h).
+      // EXPOSURE and COLORCORR divided out (io/radiance_hdr_reader.h).
       RadianceImage hdr = read_radiance_image(read_file_bytes(o.input, "image"), o.input);
       image = ImageRgbF{hdr.width, hdr.height, std::move(hdr.rgb)};
       space = std::move(hdr.space);

@@ -1,7 +1,7 @@
 #pragma once
 // Radiance picture (.hdr) output: linear scene-referred pixels as RGBE or XYZE texels
 // (Ward 1991, "Real Pixels", Graphics Gems II; the Radiance manual's picture format), the
-// format every HDRI tool reads. What Prism's own reader (scene/radiance_hdr.h) reads back:
+// format every HDRI tool reads. What Prism's own reader (io/radiance_hdr_reader.h) reads back:
 //   - the header names what the texels are: FORMAT=32-bit_rle_xyze for CIE XYZ relative to
 //     the equal-energy white (the spectral film's space, so a spectral render is written
 //     without a conversion and without clipping), otherwise FORMAT=32-bit_rle_rgbe and a

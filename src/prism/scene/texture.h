@@ -5,7 +5,7 @@
 // EOTF for colour textures, code/255 for data textures and alpha), the values decoding
 // them to floats at load time gave, in a quarter of the memory; or the shared-exponent
 // texels of a Radiance .hdr file as it holds them (Ward 1991, "Real Pixels", Graphics Gems
-// II; scene/radiance_hdr.h), 4 bytes per RGB texel instead of 12, decoded at each lookup
+// II; io/radiance_hdr_reader.h), 4 bytes per RGB texel instead of 12, decoded at each lookup
 // to exactly the floats stb_image's reader gives.
 #include <array>
 #include <cstdint>

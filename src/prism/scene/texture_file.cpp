@@ -29,7 +29,7 @@
 #include "prism/io/read_to_end.h"
 #include "prism/scene/emission.h"
 #include "prism/scene/image_color_tags.h"
-#include "prism/scene/radiance_hdr.h"
+#include "prism/io/radiance_hdr_reader.h"
 #include "prism/scene/texture_primaries.h"
 
 namespace prism {
@@ -388,7 +388,7 @@ std::string radiance_note(const RadianceHeader& header, bool changed_space, cons
   return note + clipped_texels_text(clipped, image);
 }
 
-// Radiance pictures are read by Prism's own reader (radiance_hdr.h): linear whatever the
+// Radiance pictures are read by Prism's own reader (io/radiance_hdr_reader.h): linear whatever the
 // encoding asked. A colour texture's texels are radiance in the space `content` asks for
 // (radiance_conversion); data is kept as stored.
 TextureImage decode_radiance(std::span<const unsigned char> bytes, std::string_view name, const TextureLimits& limits,

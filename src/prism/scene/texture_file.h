@@ -38,7 +38,7 @@ ImageFileFormat detect_image_file_format(const std::filesystem::path& path);
 // and TextureImage::texel_space says which. The file's space is an OpenEXR's
 // `chromaticities` attribute (Rec.709 without one), or a Radiance picture's PRIMARIES line
 // or XYZE format (Rec.709 without either; its EXPOSURE and COLORCORR factors are divided
-// out too, radiance_hdr.h), or a PNG's or JPEG's colour tags (cICP, an ICC profile, sRGB,
+// out too, io/radiance_hdr_reader.h), or a PNG's or JPEG's colour tags (cICP, an ICC profile, sRGB,
 // cHRM and gAMA; image_color_tags.h): an 8-bit image in sRGB, or without tags, keeps its
 // codes; one whose tags say otherwise is decoded through their curves into half floats
 // and converted. Data (normal, roughness, height maps) is read as stored.

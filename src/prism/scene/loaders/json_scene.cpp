@@ -7,7 +7,7 @@
 #include <fmt/ranges.h>
 
 #include "prism/core/error.h"
-#include "prism/io/json_tree.h"
+#include "prism/scene/loaders/json_tree.h"
 #include "prism/io/read_to_end.h"
 #include "prism/scene/loaders/json_scene_reader.h"
 #include "prism/scene/loaders/scene_camera.h"

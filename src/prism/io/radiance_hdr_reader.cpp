@@ -1,4 +1,4 @@
-#include "prism/scene/radiance_hdr.h"
+#include "prism/io/radiance_hdr_reader.h"
 
 #include <algorithm>
 #include <charconv>
@@ -11,7 +11,6 @@
 
 #include "prism/core/error.h"
 #include "prism/io/radiance_rle.h"
-#include "prism/scene/texture.h"
 
 namespace prism {
 namespace {
@@ -277,10 +276,15 @@ RadianceImage read_radiance_image(std::span<const unsigned char> bytes, std::str
 }
 
 std::vector<float> radiance_texels_as_floats(const std::vector<std::uint8_t>& rgbe, const Vec3d& factors) {
+  // One channel: mantissa · 2^(exponent − 136), 0 for exponent 0 (stb_image's conversion,
+  // as scene/texture.h's rgbe_value; exact in float).
+  const auto value = [](std::uint8_t mantissa, std::uint8_t exponent) {
+    return exponent == 0 ? 0.0f : static_cast<float>(std::ldexp(static_cast<double>(mantissa), exponent - 136));
+  };
   std::vector<float> rgb(rgbe.size() / 4 * 3);
   for (std::size_t t = 0; t < rgbe.size() / 4; ++t)
     for (std::size_t k = 0; k < 3; ++k)
-      rgb[3 * t + k] = static_cast<float>(rgbe_value(rgbe[4 * t + k], rgbe[4 * t + 3]) * factors[k]);
+      rgb[3 * t + k] = static_cast<float>(value(rgbe[4 * t + k], rgbe[4 * t + 3]) * factors[k]);
   return rgb;
 }
 

@@ -1,4 +1,4 @@
-// What a Radiance picture's header says its texels are (scene/radiance_hdr.h), applied when
+// What a Radiance picture's header says its texels are (io/radiance_hdr_reader.h), applied when
 // it is read as a colour texture (scene/texture_file.h): a PRIMARIES line is the texels'
 // colour space (an environment keeps it, as an OpenEXR sky keeps its chromaticities), XYZE
 // texels are CIE XYZ relative to the equal-energy white, and EXPOSURE and COLORCORR are
@@ -19,7 +19,7 @@
 #include "prism/scene/environment_override.h"
 #include "prism/scene/loaders/json_scene.h"
 #include "prism/scene/loaders/pbrt_scene.h"
-#include "prism/scene/radiance_hdr.h"
+#include "prism/io/radiance_hdr_reader.h"
 #include "prism/scene/texture_file.h"
 #include "scene/loaders/loader_test_files.h"
 

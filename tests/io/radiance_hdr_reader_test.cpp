@@ -1,4 +1,4 @@
-// Prism's Radiance picture reader (scene/radiance_hdr.h) against stb_image's, the reader it
+// Prism's Radiance picture reader (io/radiance_hdr_reader.h) against stb_image's, the reader it
 // replaced: the same texels for every file stb_image reads (the oracle: its floats are
 // mantissa · 2^(e − 136) of the same RGBE bytes), and a one-line error, not a hang, where
 // stb_image loops forever (a run-length scanline cut short).
@@ -14,7 +14,7 @@
 
 #include "prism/core/error.h"
 #include "prism/core/memory_budget.h"
-#include "prism/scene/radiance_hdr.h"
+#include "prism/io/radiance_hdr_reader.h"
 #include "prism/scene/texture_file.h"
 #include "scene/loaders/loader_test_files.h"
 

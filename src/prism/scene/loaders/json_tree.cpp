@@ -1,4 +1,4 @@
-#include "prism/io/json_tree.h"
+#include "prism/scene/loaders/json_tree.h"
 
 #include <algorithm>
 #include <bit>

@@ -3,7 +3,7 @@
 // strtod, an independent correctly rounded reader; and whole documents (the repository's
 // scenes, random trees, and random corruptions of them) are compared with nlohmann::json,
 // the parser JsonTree replaced, which must agree on what is accepted and on every value.
-#include "prism/io/json_tree.h"
+#include "prism/scene/loaders/json_tree.h"
 
 #include <gtest/gtest.h>
 

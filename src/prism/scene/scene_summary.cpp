@@ -4,29 +4,13 @@
 
 #include "prism/scene/emission.h"
 #include "prism/scene/surface_alpha.h"
+#include "prism/scene/type_names.h"
 
 namespace prism {
 
-std::string_view material_type_name(MaterialType type) {
-  switch (type) {
-    case MaterialType::diffuse: return "diffuse";
-    case MaterialType::mirror: return "mirror";
-    case MaterialType::conductor: return "conductor";
-    case MaterialType::dielectric: return "dielectric";
-    case MaterialType::metallic_roughness: return "metallic_roughness";
-  }
-  return "unknown";
-}
+std::string_view material_type_name(MaterialType type) { return enum_name(kMaterialTypeNames, type); }
 
-std::string_view light_type_name(LightType type) {
-  switch (type) {
-    case LightType::point: return "point";
-    case LightType::spot: return "spot";
-    case LightType::directional: return "directional";
-    case LightType::environment: return "environment";
-  }
-  return "unknown";
-}
+std::string_view light_type_name(LightType type) { return enum_name(kLightTypeNames, type); }
 
 SceneSummary summarize_scene(const Scene& scene) {
   SceneSummary s;

@@ -55,10 +55,7 @@ void JsonSceneReader::read_light_color(const JsonValue& value, Light& light) con
 }
 
 void JsonSceneReader::read_light(const JsonValue& value) {
-  const LightType type = value["type"].as_enum<LightType>({{"point", LightType::point},
-                                                           {"spot", LightType::spot},
-                                                           {"directional", LightType::directional},
-                                                           {"environment", LightType::environment}});
+  const LightType type = value["type"].as_enum(kLightTypeNames);
   if (type == LightType::environment) return read_environment(value);
   Light light;
   light.type = type;

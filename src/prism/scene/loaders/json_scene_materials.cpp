@@ -112,8 +112,7 @@ int JsonSceneReader::read_texture(const JsonValue& value, TextureEncoding defaul
                          std::move(check), content);
   value.expect_keys({"file", "encoding", "wrap", "wrap_u", "wrap_v"});
   const auto wrap_mode = [](const JsonValue& w) {
-    return w.as_enum<TextureWrap>(
-        {{"repeat", TextureWrap::repeat}, {"clamp", TextureWrap::clamp}, {"mirror", TextureWrap::mirror}});
+    return w.as_enum(kTextureWrapNames);
   };
   TextureWrap wrap_u = TextureWrap::repeat, wrap_v = TextureWrap::repeat;
   if (auto w = value.find("wrap")) wrap_u = wrap_v = wrap_mode(*w);
@@ -237,11 +236,7 @@ void JsonSceneReader::read_material(const JsonValue& value) {
   Material m;
   m.name = value["name"].as_string();
   if (material_indices.contains(m.name)) value["name"].fail(fmt::format("material '{}' is defined twice", m.name));
-  m.type = value["type"].as_enum<MaterialType>({{"diffuse", MaterialType::diffuse},
-                                                {"mirror", MaterialType::mirror},
-                                                {"conductor", MaterialType::conductor},
-                                                {"dielectric", MaterialType::dielectric},
-                                                {"metallic_roughness", MaterialType::metallic_roughness}});
+  m.type = value["type"].as_enum(kMaterialTypeNames);
   // Glass is untinted unless a colour is given (the 0.8 albedo default would darken it).
   m.base_color = value.get_vec3("base_color", m.type == MaterialType::dielectric ? Vec3f(1.0f) : m.base_color);
   if (min(m.base_color, Vec3f(0.0f)) != Vec3f(0.0f)) value["base_color"].fail("colour components must not be negative");
@@ -323,7 +318,7 @@ void JsonSceneReader::read_material(const JsonValue& value) {
   read_sheen(m, value);
   read_iridescence(m, value);
   if (auto a = value.find("alpha_mode"))
-    m.alpha_mode = a->as_enum<AlphaMode>({{"opaque", AlphaMode::opaque}, {"mask", AlphaMode::mask}, {"blend", AlphaMode::blend}});
+    m.alpha_mode = a->as_enum(kAlphaModeNames);
   m.alpha_cutoff = value.get_float("alpha_cutoff", m.alpha_cutoff, 0.0f, 1.0f);
   m.opacity = value.get_float("opacity", m.opacity, 0.0f, 1.0f);
   const auto index = static_cast<std::uint32_t>(scene.materials.size());

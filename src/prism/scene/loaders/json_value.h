@@ -2,6 +2,7 @@
 // A read-only view of a parsed JSON value that knows its path in the document
 // (`materials[2].roughness`), so every schema error can name where it is, and that collects
 // keys the reader did not expect (reported once as a warning).
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <initializer_list>
@@ -12,7 +13,8 @@
 #include <vector>
 
 #include "prism/core/vec.h"
-#include "prism/io/json_tree.h"
+#include "prism/scene/loaders/json_tree.h"
+#include "prism/scene/type_names.h"
 
 namespace prism::loaders {
 
@@ -81,6 +83,15 @@ class JsonValue {
       if (name == s) return value;
     std::string list;
     for (const auto& [name, value] : names) list += (list.empty() ? "" : ", ") + std::string(name);
+    fail("unknown value '" + s + "' (expected one of: " + list + ")");
+  }
+  // The same from a scene enum's name table (scene/type_names.h).
+  template <class Enum, std::size_t N>
+  Enum as_enum(const std::array<EnumName<Enum>, N>& names) const {
+    const std::string s = as_string();
+    if (const std::optional<Enum> value = enum_value(names, s)) return *value;
+    std::string list;
+    for (const EnumName<Enum>& e : names) list += (list.empty() ? "" : ", ") + std::string(e.name);
     fail("unknown value '" + s + "' (expected one of: " + list + ")");
   }
 

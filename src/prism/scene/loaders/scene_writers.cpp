@@ -18,6 +18,7 @@
 #include "prism/scene/emission.h"
 #include "prism/scene/loaders/texture_png.h"
 #include "prism/scene/surface_alpha.h"
+#include "prism/scene/type_names.h"
 
 namespace prism::loaders {
 namespace {
@@ -65,14 +66,7 @@ void check_writable(const Scene& scene) {
 
 std::string vec(const Vec3f& v) { return fmt::format("[{}, {}, {}]", v.x, v.y, v.z); }
 
-const char* wrap_name(TextureWrap w) {
-  switch (w) {
-    case TextureWrap::repeat: return "repeat";
-    case TextureWrap::clamp: return "clamp";
-    case TextureWrap::mirror: return "mirror";
-  }
-  return "repeat";
-}
+std::string_view wrap_name(TextureWrap w) { return enum_name(kTextureWrapNames, w); }
 
 // A prism-scene/1 texture reference: the PNG's name, with wrap modes when not repeat.
 std::string json_texture(const Scene& scene, const std::vector<std::string>& files, int index) {
@@ -85,25 +79,9 @@ std::string json_texture(const Scene& scene, const std::vector<std::string>& fil
                      wrap_name(t.wrap_v));
 }
 
-const char* alpha_mode_name(AlphaMode a) {
-  switch (a) {
-    case AlphaMode::opaque: return "opaque";
-    case AlphaMode::mask: return "mask";
-    case AlphaMode::blend: return "blend";
-  }
-  return "opaque";
-}
+std::string_view alpha_mode_name(AlphaMode a) { return enum_name(kAlphaModeNames, a); }
 
-const char* type_name(MaterialType t) {
-  switch (t) {
-    case MaterialType::diffuse: return "diffuse";
-    case MaterialType::mirror: return "mirror";
-    case MaterialType::conductor: return "conductor";
-    case MaterialType::dielectric: return "dielectric";
-    case MaterialType::metallic_roughness: return "metallic_roughness";
-  }
-  return "diffuse";
-}
+std::string_view type_name(MaterialType t) { return enum_name(kMaterialTypeNames, t); }
 
 // A colour as pbrt-v4 says it: the name of its space (pbrt's ColorSpace directive) and its
 // components there. pbrt-v4 has no ACEScg: an ACEScg colour is written in ACES2065-1 (AP0,

@@ -1,0 +1,64 @@
+#pragma once
+// The one table of names for each scene enum: what prism-scene/1 files say, what `prism
+// info` prints and what the scene writers write. A new material type, light type, texture
+// wrap or alpha mode gets its name here and every loader, summary and writer knows it.
+#include <array>
+#include <optional>
+#include <string_view>
+
+#include "prism/scene/light.h"
+#include "prism/scene/material.h"
+#include "prism/scene/texture.h"
+
+namespace prism {
+
+template <class Enum>
+struct EnumName {
+  Enum value;
+  std::string_view name;
+};
+
+inline constexpr std::array<EnumName<MaterialType>, 5> kMaterialTypeNames{{
+    {MaterialType::diffuse, "diffuse"},
+    {MaterialType::mirror, "mirror"},
+    {MaterialType::conductor, "conductor"},
+    {MaterialType::dielectric, "dielectric"},
+    {MaterialType::metallic_roughness, "metallic_roughness"},
+}};
+
+inline constexpr std::array<EnumName<LightType>, 4> kLightTypeNames{{
+    {LightType::point, "point"},
+    {LightType::spot, "spot"},
+    {LightType::directional, "directional"},
+    {LightType::environment, "environment"},
+}};
+
+inline constexpr std::array<EnumName<TextureWrap>, 3> kTextureWrapNames{{
+    {TextureWrap::repeat, "repeat"},
+    {TextureWrap::clamp, "clamp"},
+    {TextureWrap::mirror, "mirror"},
+}};
+
+inline constexpr std::array<EnumName<AlphaMode>, 3> kAlphaModeNames{{
+    {AlphaMode::opaque, "opaque"},
+    {AlphaMode::mask, "mask"},
+    {AlphaMode::blend, "blend"},
+}};
+
+// The value's name in `table` ("unknown" for a value the table lacks).
+template <class Enum, std::size_t N>
+constexpr std::string_view enum_name(const std::array<EnumName<Enum>, N>& table, Enum value) {
+  for (const EnumName<Enum>& e : table)
+    if (e.value == value) return e.name;
+  return "unknown";
+}
+
+// The value named `name` in `table`; nothing where no entry has that name.
+template <class Enum, std::size_t N>
+constexpr std::optional<Enum> enum_value(const std::array<EnumName<Enum>, N>& table, std::string_view name) {
+  for (const EnumName<Enum>& e : table)
+    if (e.name == name) return e.value;
+  return std::nullopt;
+}
+
+}  // namespace prism

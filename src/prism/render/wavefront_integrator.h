@@ -8,12 +8,12 @@
 // shaded several at a time, in SIMD lanes (shade_plain_lanes), to the same bits; the
 // stages' walks over the queue decide which list a slot joins (hit or miss, lanes or not,
 // shadow ray or not, finished or not) with masks and counts, not branches, since those
-// are coin flips to a branch predictor (BENCHMARKS.md "Session 34"). The image
-// is cut into tiles of kWavefrontTilePixels pixels, one queue each, and each thread runs
-// whole tiles: a tile's path state stays in cache across the stages (1.07× at 256²,
-// 1.13× at 512², one thread; BENCHMARKS.md "Session 6"). Only a pass that reports every
-// few bounces keeps one queue for the whole image, stepped in lockstep with each stage
-// split across the threads.
+// are coin flips to a branch predictor (BENCHMARKS.md "Sampler blocks and branch-free
+// walks"). The image is cut into tiles of kWavefrontTilePixels pixels, one queue each, and
+// each thread runs whole tiles: a tile's path state stays in cache across the stages
+// (1.07× at 256², 1.13× at 512², one thread; BENCHMARKS.md "Tiles and path state"). Only a
+// pass that reports every few bounces keeps one queue for the whole image, stepped in
+// lockstep with each stage split across the threads.
 //
 // Camera rays are traced in fixed packets (render/camera_packet_cache.h): those of eight
 // neighbouring pixels at one sample index, always together, about 0.4 × the time of the
@@ -81,8 +81,8 @@ struct PathSettings {
 // Pixels per tile: a tile's queue is run by one thread from its first step to its last, in
 // a path state of its own (unless a pass reports after every few bounces, which keeps one
 // whole-image queue). Any size gives the same image. 1024 to 16384 measured alike until
-// camera packets (BENCHMARKS.md "Session 6"); since, 1024, whose path state and camera
-// packets (≈ 300 + 512 KiB) fit a 1 MiB L2 cache, measured best ("Session 36").
+// camera packets; since, 1024, whose path state and camera packets (≈ 300 + 512 KiB) fit a
+// 1 MiB L2 cache, measured best (BENCHMARKS.md "Tiles and path state").
 inline constexpr std::size_t kWavefrontTilePixels = 1024;
 // Camera packets kept per block of pixels (camera_packet_cache.h): in a tile's path state,
 // and in the whole-image queue's, which has one slot per pixel of the image (there each
@@ -92,7 +92,7 @@ inline constexpr std::size_t kWavefrontTilePixels = 1024;
 // on the Cornell box, and 16 kept (1.00 / 1.00 / 1.07 ×) measured slower, their
 // 1 MiB no longer in L2; the whole-image queue's 4 (1.09 / 1.52 / 2.28 ×) keep a camera
 // ray below the 46 ns it takes alone at any pass length (18 ns in a packet; BENCHMARKS.md
-// "Session 36").
+// "Camera rays in fixed packets").
 inline constexpr std::size_t kTileCameraPacketsPerBlock = 8;
 inline constexpr std::size_t kWholeImageCameraPacketsPerBlock = 4;
 // Path state bytes per slot the camera packets add (the memory estimate's figure).
@@ -266,7 +266,8 @@ class WavefrontIntegrator {
   // hit's bounce block whole for the queue before shading (Paths::bounce_block), and the
   // camera blocks of each run of new samples; two blocks at a time with AVX-512. The draws
   // of a queue are independent of one another and overlap, where inside shade() they are a
-  // link in each path's chain of dependent work (BENCHMARKS.md "Session 28", "Session 34").
+  // link in each path's chain of dependent work (BENCHMARKS.md "Sampler blocks and
+  // branch-free walks").
   bool sobol_lanes_ = false;
   SobolLanes sampler_lanes_ = SobolLanes::none;  // settings_.simd's lanes for the sampler
   bool use_nee_ = false;           // light samples at non-specular vertices (not bsdf_only, and lights exist)

@@ -23,6 +23,8 @@ void add_display_options(CLI::App* cmd, DisplayCliOptions& o) {
     for (const auto& s : display::odt_names()) n += (n.empty() ? "" : ", ") + s;
     return n;
   }() + " (default srgb-100nit; with $OCIO set and neither --odt nor --rendering: the config's default display and view)");
+  cmd->add_option("--peak-nits", o.peak_nits,
+                  "aces2: the display's peak luminance, 100..10000 nits (default: the target's preset)");
   cmd->add_option("--encoding", o.encoding, "srgb, bt1886, pq or scrgb (default: the ODT's; scrgb for .exr)");
   cmd->add_option("--ev100", o.ev100, "Exposure value at ISO 100; max luminance 1.2·2^EV100 maps to 1.0");
   cmd->add_option("--f-number", o.f_number, "Camera aperture (with --shutter and --iso)");
@@ -98,6 +100,11 @@ display::DisplaySettings make_display_settings(const DisplayCliOptions& o) {
   s.rendering = o.rendering.empty() ? display::kDefaultRendering : display::parse_rendering(o.rendering);
   s.odt = display::parse_odt(o.odt.empty() ? "srgb-100nit" : o.odt);
   display::require_rendering_target(s.rendering, s.odt);
+  if (o.peak_nits) {
+    if (s.rendering != display::Rendering::aces2) throw UsageError("--peak-nits needs --rendering aces2");
+    if (!(*o.peak_nits >= 100.0 && *o.peak_nits <= 10000.0)) throw UsageError("--peak-nits must be in [100, 10000]");
+    s.peak_nits = *o.peak_nits;
+  }
   if (!o.encoding.empty()) s.encoding = display::parse_display_encoding(o.encoding);
   const bool camera = o.f_number || o.shutter_s || o.iso;
   if (int(o.ev100.has_value()) + int(camera) + int(o.auto_exposure) > 1)

@@ -22,6 +22,7 @@ struct DisplayCliOptions {
   std::string rendering;  // empty: the default rendering (display::kDefaultRendering)
   std::string odt;        // empty: srgb-100nit
   std::string encoding;
+  std::optional<double> peak_nits;  // --peak-nits, aces2 only
   std::optional<double> ev100, f_number, shutter_s, iso;
   bool auto_exposure = false;
   double key = 0.18, blue_correction = 0.0;

@@ -28,7 +28,7 @@ expect_usage_error() {
 }
 
 # Every rendering with every SDR target, and aces1 with an HDR one; the PNG names both.
-for rendering in aces1 agx pbr-neutral; do
+for rendering in aces1 aces2 agx pbr-neutral; do
   for odt in srgb-100nit rec709-100nit p3d65-100nit rec2020-100nit; do
     out="$work/$rendering-$odt.png"
     "$prism" tonemap "$work/in.exr" --rendering "$rendering" --odt "$odt" -o "$out" >"$work/log" 2>&1 ||
@@ -40,6 +40,21 @@ for rendering in aces1 agx pbr-neutral; do
 done
 "$prism" tonemap "$work/in.exr" --rendering aces1 --odt rec2020-pq-1000nit -o "$work/hdr.png" >/dev/null 2>&1 ||
   fail "aces1 with an HDR target"
+for odt in rec2020-pq-1000nit rec2020-pq-2000nit rec2020-pq-4000nit p3d65-pq-1000nit; do
+  "$prism" tonemap "$work/in.exr" --rendering aces2 --odt "$odt" -o "$work/aces2-$odt.png" >/dev/null 2>"$work/err" ||
+    fail "aces2 with $odt: $(cat "$work/err")"
+done
+"$prism" tonemap "$work/in.exr" --rendering aces2 --odt rec2020-pq-1000nit --peak-nits 600 -o "$work/peak.avif" \
+  >/dev/null 2>"$work/err" || fail "aces2 --peak-nits 600: $(cat "$work/err")"
+
+# ACES 2.0's inverse: the display image back to ACES2065-1, from a PNG or tonemap's scRGB EXR.
+"$prism" tonemap "$work/in.exr" --rendering aces2 -o "$work/fwd.png" >/dev/null 2>&1 &&
+  "$prism" tonemap "$work/fwd.png" --inverse --rendering aces2 -o "$work/back.exr" >/dev/null 2>"$work/err" &&
+  [ -s "$work/back.exr" ] || fail "tonemap --inverse from PNG: $(cat "$work/err")"
+"$prism" tonemap "$work/in.exr" --rendering aces2 --odt rec2020-pq-1000nit -o "$work/fwd.exr" >/dev/null 2>&1 &&
+  "$prism" tonemap "$work/fwd.exr" --inverse --rendering aces2 --odt rec2020-pq-1000nit -o "$work/back2.exr" \
+    >/dev/null 2>"$work/err" && [ -s "$work/back2.exr" ] || fail "tonemap --inverse from scRGB EXR: $(cat "$work/err")"
+grep -q -a "prism:inverseOf" "$work/back.exr" || fail "inverse EXR lacks prism:inverseOf"
 
 # Pairs that make no sense, unknown names.
 expect_usage_error e1.png --rendering agx --odt rec2020-pq-1000nit
@@ -49,6 +64,12 @@ expect_usage_error e3.png --rendering pbr-neutral --odt none
 expect_usage_error e4.png --rendering filmic
 expect_usage_error e5.png --rendering agx --blue-correction 0.5
 expect_usage_error e6.exr --display-primaries adobe-rgb
+expect_usage_error e8.png --rendering aces2 --odt none
+expect_usage_error e9.png --rendering aces2 --peak-nits 50
+expect_usage_error e10.png --rendering aces2 --peak-nits 20000
+expect_usage_error e11.png --rendering agx --peak-nits 400
+expect_usage_error e12.png --inverse --rendering agx
+expect_usage_error e13.png --inverse --rendering aces2
 
 # --help lists every valid rendering × target pair.
 help=$("$prism" tonemap --help)
@@ -56,6 +77,7 @@ echo "$help" | grep -q "agx: srgb-100nit rec709-100nit p3d65-100nit rec2020-100n
 echo "$help" | grep -q "pbr-neutral: srgb-100nit rec709-100nit p3d65-100nit rec2020-100nit$" ||
   fail "--help lacks pbr-neutral's targets"
 echo "$help" | grep -q "aces1: none srgb-100nit .* p3d65-pq-1000nit$" || fail "--help lacks aces1's targets"
+echo "$help" | grep -q "aces2: srgb-100nit .* p3d65-pq-1000nit$" || fail "--help lacks aces2's targets"
 
 # prism render takes --rendering for its display outputs.
 "$prism" render cornell-box --width 16 --height 12 --spp 1 --rendering agx -o "$work/r.png" >"$work/log" 2>&1 ||

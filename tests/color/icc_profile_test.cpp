@@ -53,6 +53,7 @@ double decode(IccToneCurve curve, double v) {
     case IccToneCurve::srgb: return srgb_decode(v);
     case IccToneCurve::gamma_2_4: return std::pow(v, 2.4);
     case IccToneCurve::gamma_2_2: return std::pow(v, 563.0 / 256.0);
+    case IccToneCurve::gamma_2_6: return std::pow(v, 2.6);
   }
   return 0.0;
 }
@@ -62,7 +63,9 @@ cmsToneCurve* lcms_curve(IccToneCurve curve) {
     const double p[5] = {2.4, 1.0 / 1.055, 0.055 / 1.055, 1.0 / 12.92, 0.04045};
     return cmsBuildParametricToneCurve(nullptr, 4, p);  // lcms type 4 = ICC type 3
   }
-  return cmsBuildGamma(nullptr, curve == IccToneCurve::gamma_2_4 ? 2.4 : 563.0 / 256.0);
+  return cmsBuildGamma(nullptr, curve == IccToneCurve::gamma_2_4   ? 2.4
+                                : curve == IccToneCurve::gamma_2_6 ? 2.6
+                                                                   : 563.0 / 256.0);
 }
 
 Profile lcms_reference(const ColorSpace& s, IccToneCurve curve) {
@@ -152,7 +155,8 @@ INSTANTIATE_TEST_SUITE_P(Spaces, IccProfile,
                          ::testing::Values(Case{"srgb", IccToneCurve::srgb}, Case{"display-p3", IccToneCurve::srgb},
                                            Case{"adobe-rgb", IccToneCurve::gamma_2_2},
                                            Case{"rec2020", IccToneCurve::gamma_2_4},
-                                           Case{"dci-p3", IccToneCurve::gamma_2_4}));
+                                           Case{"dci-p3", IccToneCurve::gamma_2_4},
+                                           Case{"display-p3", IccToneCurve::gamma_2_6}));
 
 // The white of every space lands on the PCS illuminant (D50) through its colorants: the
 // sum of the colorant columns is chad · white = D50 (ICC.1 §D.3).

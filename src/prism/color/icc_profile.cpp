@@ -75,6 +75,9 @@ std::vector<std::uint8_t> para_tag(IccToneCurve curve) {
     case IccToneCurve::gamma_2_2:
       w.u16(0), w.u16(0), w.s15f16(563.0 / 256.0);
       break;
+    case IccToneCurve::gamma_2_6:
+      w.u16(0), w.u16(0), w.s15f16(2.6);
+      break;
   }
   return w.bytes;
 }

@@ -17,6 +17,7 @@ enum class IccToneCurve {
   srgb,         // IEC 61966-2-1 piecewise curve (function type 3)
   gamma_2_4,    // pure power 2.4: BT.1886 with zero black (function type 0)
   gamma_2_2,    // pure power 563/256 ≈ 2.1992: Adobe RGB (1998) §4.3.4.2 (function type 0)
+  gamma_2_6,    // pure power 2.6: the DCI/P3 cinema display EOTF (SMPTE RP 431-2) (function type 0)
 };
 
 // The PCS illuminant of ICC.1 (§7.2.16): D50 as XYZ (0.9642, 1, 0.8249).

@@ -62,7 +62,7 @@ const Log2SpacedTable& dim_table() {
 // 0 costs nothing; sRGB is linear there anyway); ST 2084 on nits in [0, 10000] (at 2^-40 nit
 // the PQ code is within 1e-6 of its value at 0).
 const Log2SpacedTable* encode_table(DisplayEncoding e) {
-  static std::array<std::once_flag, 8> once;  // one per DisplayEncoding (5 today)
+  static std::array<std::once_flag, 8> once;  // one per DisplayEncoding (6 today)
   static std::array<std::unique_ptr<Log2SpacedTable>, 8> tables;
   if (e == DisplayEncoding::scrgb) return nullptr;  // linear
   const auto id = static_cast<std::size_t>(e);

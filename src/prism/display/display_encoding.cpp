@@ -20,7 +20,8 @@ DisplayEncoding parse_display_encoding(std::string_view name) {
   if (n == "pq" || n == "st2084") return DisplayEncoding::pq;
   if (n == "scrgb") return DisplayEncoding::scrgb;
   if (n == "gamma22" || n == "gamma2.2") return DisplayEncoding::gamma22;
-  throw UsageError("unknown encoding '" + std::string(name) + "' (valid: srgb, bt1886, pq, scrgb, gamma22)");
+  if (n == "gamma26" || n == "gamma2.6") return DisplayEncoding::gamma26;
+  throw UsageError("unknown encoding '" + std::string(name) + "' (valid: srgb, bt1886, pq, scrgb, gamma22, gamma26)");
 }
 
 std::string_view display_encoding_name(DisplayEncoding e) {
@@ -30,11 +31,12 @@ std::string_view display_encoding_name(DisplayEncoding e) {
     case DisplayEncoding::pq: return "pq";
     case DisplayEncoding::scrgb: return "scrgb";
     case DisplayEncoding::gamma22: return "gamma22";
+    case DisplayEncoding::gamma26: return "gamma26";
   }
   return "?";
 }
 
-std::vector<std::string> display_encoding_names() { return {"srgb", "bt1886", "pq", "scrgb", "gamma22"}; }
+std::vector<std::string> display_encoding_names() { return {"srgb", "bt1886", "pq", "scrgb", "gamma22", "gamma26"}; }
 
 bool is_float_encoding(DisplayEncoding e) { return e == DisplayEncoding::scrgb; }
 
@@ -43,6 +45,7 @@ color::IccToneCurve icc_tone_curve(DisplayEncoding e) {
     case DisplayEncoding::srgb: return color::IccToneCurve::srgb;
     case DisplayEncoding::bt1886: return color::IccToneCurve::gamma_2_4;
     case DisplayEncoding::gamma22: return color::IccToneCurve::gamma_2_2;
+    case DisplayEncoding::gamma26: return color::IccToneCurve::gamma_2_6;
     default: break;
   }
   throw UsageError(fmt::format("the {} encoding has no ICC tone curve (it is not a relative SDR curve)",
@@ -56,6 +59,7 @@ double encode_display_nits(DisplayEncoding e, double nits, double white_nits) {
     case DisplayEncoding::pq: return color::pq_encode_nits(std::clamp(nits, 0.0, color::kPqPeakNits));
     case DisplayEncoding::scrgb: return color::scrgb_from_nits(nits);
     case DisplayEncoding::gamma22: return std::pow(std::clamp(nits / white_nits, 0.0, 1.0), 1.0 / 2.2);
+    case DisplayEncoding::gamma26: return std::pow(std::clamp(nits / white_nits, 0.0, 1.0), 1.0 / 2.6);
   }
   return 0.0;
 }
@@ -67,6 +71,7 @@ double decode_display_nits(DisplayEncoding e, double code, double white_nits) {
     case DisplayEncoding::pq: return color::pq_decode_nits(code);
     case DisplayEncoding::scrgb: return color::scrgb_to_nits(code);
     case DisplayEncoding::gamma22: return std::pow(std::max(code, 0.0), 2.2) * white_nits;
+    case DisplayEncoding::gamma26: return std::pow(std::max(code, 0.0), 2.6) * white_nits;
   }
   return 0.0;
 }

@@ -17,9 +17,10 @@ enum class DisplayEncoding {
   pq,      // absolute: ST 2084, 1.0 = 10000 nits
   scrgb,   // linear Rec.709, 1.0 = 80 nits, negatives and values above 1 kept
   gamma22, // relative: nits / display white, pure power 1/2.2 (black 0)
+  gamma26, // relative: nits / display white, pure power 1/2.6 (black 0): ACES 2.0's P3-D65 SDR
 };
 
-// "srgb", "bt1886" (alias "rec709"), "pq" (alias "st2084"), "scrgb", "gamma22";
+// "srgb", "bt1886" (alias "rec709"), "pq" (alias "st2084"), "scrgb", "gamma22", "gamma26";
 // case-insensitive.
 // Unknown: UsageError listing the names.
 DisplayEncoding parse_display_encoding(std::string_view name);
@@ -30,7 +31,7 @@ std::vector<std::string> display_encoding_names();
 bool is_float_encoding(DisplayEncoding e);
 // The ICC tone curve of a relative (SDR) encoding: srgb → IEC 61966-2-1, bt1886 → γ 2.4
 // (zero black), gamma22 → γ 563/256 (the ICC curve closest to 2.2 that prism::color writes:
-// decoded light within 0.25 % of γ 2.2 down to code 0.04, below an 8-bit step). PQ and scRGB have none: UsageError.
+// decoded light within 0.25 % of γ 2.2 down to code 0.04, below an 8-bit step), gamma26 → γ 2.6. PQ and scRGB have none: UsageError.
 color::IccToneCurve icc_tone_curve(DisplayEncoding e);
 
 // Display light (nits) → code value; relative encodings divide by white_nits first and

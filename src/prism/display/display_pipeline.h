@@ -34,6 +34,8 @@ struct DisplaySettings {
   Rendering rendering = Rendering::aces1;
   OdtId odt = OdtId::srgb_100nit;
   std::optional<DisplayEncoding> encoding;      // default: default_encoding(rendering, odt)
+  // aces2 only: the display's peak luminance, 100–10000 nits (default: the target's preset).
+  std::optional<double> peak_nits;
   std::optional<bool> stretch_black;            // default: the Academy's (on)
   std::uint64_t dither_seed = 0x70726973;       // "pris"
   BloomSettings bloom;                          // strength 0: off

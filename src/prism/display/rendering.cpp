@@ -14,8 +14,9 @@ struct RenderingName {
   std::string_view name;
 };
 
-constexpr std::array<RenderingName, 3> kRenderings{{
+constexpr std::array<RenderingName, 4> kRenderings{{
     {Rendering::aces1, "aces1"},
+    {Rendering::aces2, "aces2"},
     {Rendering::agx, "agx"},
     {Rendering::pbr_neutral, "pbr-neutral"},
 }};
@@ -50,6 +51,7 @@ std::vector<std::string> rendering_names() {
 
 bool rendering_supports_target(Rendering r, OdtId target) {
   if (r == Rendering::aces1) return true;
+  if (r == Rendering::aces2) return target != OdtId::none;
   const OdtDescription& odt = odt_description(target);
   return target != OdtId::none && !odt.hdr;
 }
@@ -70,7 +72,25 @@ void require_rendering_target(Rendering r, OdtId target) {
 DisplayEncoding default_encoding(Rendering r, OdtId target) {
   const DisplayEncoding odt_encoding = odt_description(target).default_encoding;
   if (r == Rendering::agx && odt_encoding == DisplayEncoding::srgb) return DisplayEncoding::gamma22;
+  // ACES 2.0's SDR P3-D65 preset encodes with γ 2.6 (OCIO's "G2.6-P3-D65" display).
+  if (r == Rendering::aces2 && target == OdtId::p3d65_100nit) return DisplayEncoding::gamma26;
   return odt_encoding;
+}
+
+Aces2Preset aces2_preset(OdtId target) {
+  const OdtDescription& odt = odt_description(target);
+  switch (target) {
+    case OdtId::srgb_100nit:
+    case OdtId::rec709_100nit:
+    case OdtId::rec2020_100nit: return {100.0, "srgb"};
+    case OdtId::p3d65_100nit: return {100.0, "display-p3"};
+    case OdtId::rec2020_pq_1000nit:
+    case OdtId::rec2020_pq_2000nit:
+    case OdtId::rec2020_pq_4000nit: return {odt.white_nits, "rec2020"};
+    case OdtId::p3d65_pq_1000nit: return {odt.white_nits, "display-p3"};
+    case OdtId::none: break;
+  }
+  throw UsageError("--rendering aces2 has no output for --odt none");
 }
 
 }  // namespace prism::display

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "prism/color/chromatic_adaptation.h"
@@ -23,9 +24,25 @@ void check_settings(const DisplaySettings& s, DisplayEncoding encoding) {
   if (s.blue_correction != 0.0)
     throw UsageError("--blue-correction is an ACES 1 LMT: it does not apply to --rendering " + name);
   if (s.overlay) throw UsageError("--overlay composites in the ACES 1 ODT: it needs --rendering aces1");
+  if (s.stretch_black) throw UsageError("--odt-stretch-black and --no-odt-stretch-black are ACES 1 settings");
+  if (s.peak_nits && s.rendering != Rendering::aces2) throw UsageError("--peak-nits needs --rendering aces2");
   if (s.display_primaries && encoding == DisplayEncoding::scrgb)
     throw UsageError("scRGB is defined on Rec.709 primaries: --display-primaries needs another encoding");
 }
+
+// The light of one pixel under the rendering, in its light space: agx/pbr-neutral take linear
+// Rec.709 and return light relative to white (× white_nits here); aces2 takes ACES2065-1 and
+// returns nits in the target's primaries.
+struct RenderingLight {
+  Rendering rendering;
+  double white_nits;
+  std::optional<Aces2OutputTransform> aces2;
+  Vec3d operator()(const Vec3d& in) const {
+    if (aces2) return aces2->display_nits(in);
+    const Vec3d rel = rendering_display_linear(rendering, in);
+    return {rel[0] * white_nits, rel[1] * white_nits, rel[2] * white_nits};
+  }
+};
 
 }  // namespace
 
@@ -33,9 +50,17 @@ Vec3d rendering_display_linear(Rendering rendering, const Vec3d& rec709_linear) 
   switch (rendering) {
     case Rendering::agx: return agx_display_linear(rec709_linear);
     case Rendering::pbr_neutral: return pbr_neutral(rec709_linear);
-    case Rendering::aces1: break;
+    case Rendering::aces1:
+    case Rendering::aces2: break;
   }
-  throw UsageError("rendering_display_linear: aces1 runs through AcesOutputTransform");
+  throw UsageError("rendering_display_linear: only agx and pbr-neutral are relative renderings");
+}
+
+Aces2Parameters aces2_parameters(const DisplaySettings& s) {
+  const Aces2Preset preset = aces2_preset(s.odt);
+  const double peak = s.peak_nits.value_or(preset.peak_nits);
+  if (!(peak >= 100.0 && peak <= 10000.0)) throw UsageError("--peak-nits must be in [100, 10000]");
+  return {peak, std::string(preset.limiting_primaries), std::string(odt_description(s.odt).display_space)};
 }
 
 DisplayImage apply_rendering_pipeline(const ImageRgbF& film_in, const color::ColorSpace& film_space,
@@ -44,8 +69,13 @@ DisplayImage apply_rendering_pipeline(const ImageRgbF& film_in, const color::Col
   DisplayImage out;
   out.encoding = s.encoding.value_or(default_encoding(s.rendering, s.odt));
   check_settings(s, out.encoding);
-  out.white_nits = target.white_nits;
-  out.y_max_nits = target.white_nits;
+  const bool aces2 = s.rendering == Rendering::aces2;
+  RenderingLight light_of{s.rendering, target.white_nits, std::nullopt};
+  if (aces2) light_of.aces2.emplace(aces2_parameters(s));
+  // The display's peak: relative encodings put code 1 there; gamut remaps clip to it.
+  const double peak = aces2 ? light_of.aces2->parameters().peak_luminance_nits : target.white_nits;
+  out.white_nits = peak;
+  out.y_max_nits = peak;
   out.exposure_scale = exposure_scale(s, film_in, film_space);
   out.width = upscaled_size(film_in.width, s.render_scale);
   out.height = upscaled_size(film_in.height, s.render_scale);
@@ -53,22 +83,22 @@ DisplayImage apply_rendering_pipeline(const ImageRgbF& film_in, const color::Col
   // Output primaries: the user's display, Rec.709 for scRGB, else the target's.
   const color::ColorSpace& rec709 = color::color_space("srgb");
   const color::ColorSpace& target_space = color::color_space(target.display_space);
+  const color::ColorSpace& light_space = aces2 ? target_space : rec709;
   Mat3 to_output;
   if (s.display_primaries) {
     out.primaries = s.display_primaries->name;
-    to_output = gamut_remap_matrix(target_space, *s.display_primaries) * color::conversion_matrix(rec709, target_space);
+    to_output = gamut_remap_matrix(target_space, *s.display_primaries) * color::conversion_matrix(light_space, target_space);
   } else if (out.encoding == DisplayEncoding::scrgb) {
     out.primaries = "srgb";
-    to_output = Mat3::identity();
+    to_output = color::conversion_matrix(light_space, rec709);
   } else {
     out.primaries = std::string(target.display_space);
-    to_output = color::conversion_matrix(rec709, target_space);
+    to_output = color::conversion_matrix(light_space, target_space);
   }
-  for (auto& row : to_output.m)
-    for (double& v : row) v *= target.white_nits;
 
-  // Exposure (and bloom, which thresholds exposed values) in the film's space, then to Rec.709.
-  Mat3 to_rec709 = color::conversion_matrix(film_space, rec709);
+  // Exposure (and bloom, which thresholds exposed values) in the film's space, then to the
+  // rendering's input space.
+  Mat3 to_input = color::conversion_matrix(film_space, color::color_space(aces2 ? "aces2065-1" : "srgb"));
   const ImageRgbF* film = &film_in;
   ImageRgbF exposed;
   if (s.bloom.strength > 0.0) {
@@ -77,7 +107,7 @@ DisplayImage apply_rendering_pipeline(const ImageRgbF& film_in, const color::Col
     exposed = apply_bloom(exposed, s.bloom);
     film = &exposed;
   } else {
-    for (auto& row : to_rec709.m)
+    for (auto& row : to_input.m)
       for (double& v : row) v *= out.exposure_scale;
   }
 
@@ -90,9 +120,8 @@ DisplayImage apply_rendering_pipeline(const ImageRgbF& film_in, const color::Col
       Vec3d rgb{film->rgb[3 * i], film->rgb[3 * i + 1], film->rgb[3 * i + 2]};
       for (int c = 0; c < 3; ++c)
         if (!std::isfinite(rgb[c])) rgb[c] = 0.0;  // NaN/inf samples show as black
-      const Vec3d nits = to_output * rendering_display_linear(s.rendering, to_rec709 * rgb);
-      for (int c = 0; c < 3; ++c)
-        light.rgb[3 * i + c] = static_cast<float>(clip ? std::clamp(nits[c], 0.0, target.white_nits) : nits[c]);
+      const Vec3d nits = to_output * light_of(to_input * rgb);
+      for (int c = 0; c < 3; ++c) light.rgb[3 * i + c] = static_cast<float>(clip ? std::clamp(nits[c], 0.0, peak) : nits[c]);
     }
   });
   if (light.width != out.width || light.height != out.height) light = upscale_bilinear(light, out.width, out.height);
@@ -104,6 +133,30 @@ DisplayImage apply_rendering_pipeline(const ImageRgbF& film_in, const color::Col
       out.code[i] = static_cast<float>(encode_display_nits(out.encoding, out.nits[i], out.white_nits));
   });
   return out;
+}
+
+ImageRgbF aces2_inverse(const ImageRgbF& code, DisplayEncoding encoding, const DisplaySettings& s) {
+  if (s.rendering != Rendering::aces2) throw UsageError("--inverse needs --rendering aces2");
+  require_rendering_target(s.rendering, s.odt);
+  const Aces2OutputTransform transform(aces2_parameters(s));
+  const double peak = transform.parameters().peak_luminance_nits;
+  const color::ColorSpace& target_space = color::color_space(odt_description(s.odt).display_space);
+  const Mat3 to_target = encoding == DisplayEncoding::scrgb
+                             ? color::conversion_matrix(color::color_space("srgb"), target_space)
+                             : Mat3::identity();
+  ImageRgbF aces{code.width, code.height, std::vector<float>(code.rgb.size())};
+  parallel_for(code.rgb.size() / 3, kPixelsPerTask, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      Vec3d nits;
+      for (int c = 0; c < 3; ++c) {
+        const double v = std::isfinite(code.rgb[3 * i + c]) ? code.rgb[3 * i + c] : 0.0;
+        nits[c] = decode_display_nits(encoding, v, peak);
+      }
+      const Vec3d a = transform.aces_from_display_nits(to_target * nits);
+      for (int c = 0; c < 3; ++c) aces.rgb[3 * i + c] = static_cast<float>(a[c]);
+    }
+  });
+  return aces;
 }
 
 }  // namespace prism::display

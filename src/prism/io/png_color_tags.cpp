@@ -26,11 +26,12 @@ PngColorMetadata sdr_png_color_metadata(const color::ColorSpace& primaries, colo
     return meta;
   }
   // H.273 TransferCharacteristics: 13 = IEC 61966-2-1, 1 = BT.709/BT.1886 (decoded as γ 2.4
-  // by displays); a pure 2.2 power has no code point of its own.
-  if (cp != 0 && curve != color::IccToneCurve::gamma_2_2)
+  // by displays); pure 2.2 and 2.6 powers are left to the ICC profile.
+  if (cp != 0 && (curve == color::IccToneCurve::srgb || curve == color::IccToneCurve::gamma_2_4))
     meta.cicp = CicpInfo{cp, std::uint8_t(curve == color::IccToneCurve::srgb ? 13 : 1), 0, 1};
   const char* curve_name = curve == color::IccToneCurve::srgb ? "sRGB curve"
-                           : curve == color::IccToneCurve::gamma_2_4 ? "gamma 2.4" : "gamma 2.2";
+                           : curve == color::IccToneCurve::gamma_2_4 ? "gamma 2.4"
+                           : curve == color::IccToneCurve::gamma_2_6 ? "gamma 2.6" : "gamma 2.2";
   const std::string name = primaries.name.empty() ? std::string("custom primaries") : primaries.name;
   meta.icc_profile = color::make_icc_display_profile(primaries, curve, "Prism " + name + ", " + curve_name);
   meta.icc_profile_name = "Prism " + name;

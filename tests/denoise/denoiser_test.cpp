@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <random>
 
 #include "prism/color/chromatic_adaptation.h"
@@ -192,6 +193,18 @@ TEST(Denoiser, SameResultForAnyThreadCount) {
   ASSERT_EQ(one.rgb.size(), two.rgb.size());
   EXPECT_EQ(std::memcmp(one.rgb.data(), two.rgb.data(), one.rgb.size() * sizeof(float)), 0);
   EXPECT_EQ(std::memcmp(one.rgb.data(), three.rgb.data(), one.rgb.size() * sizeof(float)), 0);
+}
+
+TEST(Denoiser, NonFiniteAndHugeInputsGiveFiniteOutput) {
+  DenoiseBuffers b = flat_wall(20, 20);
+  for (std::size_t i = 0; i < b.color.size(); ++i) b.color[i] = 0.5f, b.variance[i] = 0.01f;
+  b.color[30] = std::numeric_limits<float>::infinity();
+  b.color[31] = std::numeric_limits<float>::quiet_NaN();
+  b.color[90] = b.color[93] = 3e38f;  // neighbours: their difference would overflow
+  b.variance[90] = b.variance[93] = 3e38f;
+  b.depth[50] = std::numeric_limits<float>::infinity();  // a miss
+  const ImageRgbF out = denoise_image(b);
+  for (float v : out.rgb) EXPECT_TRUE(std::isfinite(v));
 }
 
 TEST(Denoiser, RefusesInconsistentBuffers) {

@@ -11,6 +11,12 @@
 namespace prism::denoise {
 namespace {
 
+// Bounds that keep every term of the colour distance finite (squared differences up to
+// 4e30, variance sums up to 2e30), so that no NaN can arise from inf − inf; far beyond any
+// radiance a render produces.
+constexpr float kMaxMagnitude = 1e15f;
+constexpr float kMaxVariance = 1e30f;
+
 std::vector<float> channel(const std::vector<float>& interleaved, int c, int stride) {
   std::vector<float> out(interleaved.size() / stride);
   for (std::size_t i = 0; i < out.size(); ++i) out[i] = interleaved[i * stride + c];
@@ -68,8 +74,8 @@ ImageRgbF denoise_image(const DenoiseBuffers& b, const DenoiseSettings& settings
     for (std::size_t i = 0; i < n; ++i) {
       const float u = b.color[3 * i + c], v = b.variance[3 * i + c], d = divisor[3 * i + c];
       const bool ok = std::isfinite(u);
-      im.color[c][i] = ok ? u / d : 0.0f;
-      im.variance[c][i] = ok && std::isfinite(v) && v > 0.0f ? v / (d * d) : 0.0f;
+      im.color[c][i] = ok ? std::clamp(u / d, -kMaxMagnitude, kMaxMagnitude) : 0.0f;
+      im.variance[c][i] = ok && std::isfinite(v) && v > 0.0f ? std::min(v / (d * d), kMaxVariance) : 0.0f;
     }
   }
   im.features.push_back(rgb_feature(b.normal));

@@ -15,6 +15,7 @@
 #include "prism/color/color_space.h"
 #include "prism/sampling/warps.h"
 #include "prism/scene/emission.h"
+#include "prism/scene/environment_lookup.h"
 #include "prism/scene/environment_mapping.h"
 #include "prism/scene/texture_sampling.h"
 
@@ -284,24 +285,21 @@ LightSampler::LightSampler(const Scene& scene, const Bounds3f& world, const Ligh
       escapable_emitters_.push_back(static_cast<std::uint32_t>(i));
 }
 
-namespace {
-
-Vec3f texel_rgb(const TextureImage& t, Vec2f uv) {
-  const int x = std::clamp(static_cast<int>(uv.x * t.width), 0, t.width - 1);
-  const int y = std::clamp(static_cast<int>(uv.y * t.height), 0, t.height - 1);
-  return texel_rgb(t, x, y);
-}
-
-}  // namespace
-
-// Sampling density ∝ luminance × dω/d(uv) of the texel's centre, so that the density over
-// solid angle follows the luminance (pbrt-v4 §12.5.2). For the equal-area octahedral map
-// the Jacobian is the constant 4π and drops out: the distribution is the luminance itself.
+// Sampling density ∝ the texel's mean luminance × dω/d(uv) of its centre, so that the
+// density over solid angle follows the luminance (pbrt-v4 §12.5.2). The mean is that of the
+// bilinearly filtered radiance the estimators read (environment_lookup.h), so the density is
+// positive wherever that radiance is. For the equal-area octahedral map the Jacobian is the
+// constant 4π and drops out: the distribution is the luminance itself.
 double LightSampler::build_environment_distribution(const Emitter& e) {
   if (!e.texture) return 1.0;
   const TextureImage& t = *e.texture;
   // Luminance weights of the space the texels are in (an OpenEXR keeps its own gamut).
   const Vec3d y_row = picker_color_space(t.texel_space).rgb_to_xyz.row(1);
+  std::vector<float> luminance(static_cast<std::size_t>(t.width) * t.height);
+  for (int y = 0; y < t.height; ++y)
+    for (int x = 0; x < t.width; ++x)
+      luminance[static_cast<std::size_t>(y) * t.width + x] =
+          static_cast<float>(std::max(0.0, dot(y_row, Vec3d(texel_rgb(t, x, y)))));
   double weighted = 0.0, weight = 0.0;
   // Row by row (rows in order, so the sums are those of one pass over the image).
   environment_distribution_ = PiecewiseConstant2D(t.width, t.height, [&](int y, std::span<float> row) {
@@ -309,8 +307,7 @@ double LightSampler::build_environment_distribution(const Emitter& e) {
     // sine per texel.
     const double jacobian = environment_solid_angle_per_uv_area(e.mapping, Vec2f(0.5f, (y + 0.5f) / t.height));
     for (int x = 0; x < t.width; ++x) {
-      const Vec3f rgb = texel_rgb(t, x, y);  // the texel whose centre is ((x + ½)/width, (y + ½)/height)
-      const double lum = std::max(0.0, dot(y_row, Vec3d(rgb)));
+      const double lum = environment_texel_mean(luminance, e.mapping, x, y, t.width, t.height);
       row[static_cast<std::size_t>(x)] = static_cast<float>(lum * jacobian);
       weighted += lum * jacobian;
       weight += jacobian;
@@ -320,7 +317,7 @@ double LightSampler::build_environment_distribution(const Emitter& e) {
 }
 
 Vec3f LightSampler::environment_rgb_at(const Emitter& e, Vec2f uv) {
-  return texel_rgb(*e.texture, uv) * e.intensity_nits;
+  return environment_radiance_bilinear(*e.texture, e.mapping, uv) * e.intensity_nits;
 }
 
 float LightSampler::environment_pdf_at(EnvironmentMapping mapping, Vec2f uv) const {

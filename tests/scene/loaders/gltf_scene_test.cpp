@@ -118,11 +118,58 @@ TEST(GltfLoader, UriEscapingTheFolderIsRefused) {
     const std::string message = parse_error(quad_document(uri), dir / "scene");
     EXPECT_NE(message.find("outside the scene's folder"), std::string::npos) << uri << ": " << message;
   }
-  // tinygltf reads an absolute uri below the base folder, where it does not exist.
-  EXPECT_NE(parse_error(quad_document((dir / "outside.bin").string()), dir / "scene").find("test.gltf: "), std::string::npos);
+  const std::string absolute = (dir / "outside.bin").string();
+  EXPECT_EQ(parse_error(quad_document(absolute), dir / "scene"),
+            "test.gltf: buffer or image uri: absolute path '" + absolute +
+                "' refused (scene files may only refer to files in their own folder; use --allow-external-paths to "
+                "permit it)");
+  EXPECT_EQ(parse_error(quad_document("../outside.bin"), dir / "scene"),
+            "test.gltf: buffer or image uri: path '../outside.bin' leads outside the scene's folder (refused; use "
+            "--allow-external-paths to permit it)");
+  // A scene without a folder (read from memory) refers to no file at all.
+  EXPECT_NE(parse_error(quad_document("quad.bin")).find("cannot refer to the file 'quad.bin'"), std::string::npos);
   LoadOptions allow;
   allow.allow_external_paths = true;
   EXPECT_EQ(parse(quad_document("../outside.bin"), dir / "scene", allow).meshes.size(), 1u);
+  EXPECT_EQ(parse(quad_document(absolute), dir / "scene", allow).meshes.size(), 1u);
+}
+
+// A buffer the scene's folder lacks is looked for nowhere else (tinygltf would try the
+// process's working folder next).
+TEST(GltfLoader, UriIsNotLookedForInTheWorkingFolder) {
+  test::ScratchFolder dir;
+  std::filesystem::create_directories(dir / "scene");
+  dir.write("quad.bin", quad_buffer());
+  const auto previous = std::filesystem::current_path();
+  std::filesystem::current_path(dir.path());
+  const std::string message = parse_error(quad_document("quad.bin"), dir / "scene");
+  std::filesystem::current_path(previous);
+  EXPECT_NE(message.find("File not found : quad.bin"), std::string::npos) << message;
+}
+
+std::string with_asset(const std::string& asset) {
+  std::string doc = quad_document(kDataUri + base64(quad_buffer()));
+  const std::string original = R"("asset": {"version": "2.0"})";
+  return doc.replace(doc.find(original), original.size(), R"("asset": )" + asset);
+}
+
+// glTF 2.0 §3.2: minVersion, when given, must be supported; otherwise version's major.
+TEST(GltfLoader, OnlyGltfTwoIsRead) {
+  EXPECT_EQ(parse(with_asset(R"({"version": "2.1"})")).instances.size(), 2u);  // minor versions add, compatibly
+  EXPECT_EQ(parse(with_asset(R"({"version": "3.0", "minVersion": "2.0"})")).instances.size(), 2u);
+  EXPECT_EQ(parse_error(with_asset(R"({"version": "7.0"})")),
+            "test.gltf: glTF version 7.0 (asset.version) is not supported; Prism reads glTF 2.0");
+  EXPECT_EQ(parse_error(with_asset(R"({"version": "1.0"})")),
+            "test.gltf: glTF version 1.0 (asset.version) is not supported; Prism reads glTF 2.0");
+  EXPECT_EQ(parse_error(with_asset(R"({"version": "2.1", "minVersion": "2.1"})")),
+            "test.gltf: the file needs glTF 2.1 (asset.minVersion); Prism reads glTF 2.0");
+  EXPECT_EQ(parse_error(with_asset(R"({"version": "two"})")),
+            "test.gltf: asset.version 'two' is not a glTF version (MAJOR.MINOR); Prism reads glTF 2.0");
+  EXPECT_EQ(parse_error(with_asset(R"({"version": "2."})")),
+            "test.gltf: asset.version '2.' is not a glTF version (MAJOR.MINOR); Prism reads glTF 2.0");
+  // The version is reported even where the rest of the file does not read as glTF 2.0.
+  EXPECT_EQ(parse_error(R"({"asset": {"version": "7.0"}, "buffers": [{"byteLength": "many"}]})"),
+            "test.gltf: glTF version 7.0 (asset.version) is not supported; Prism reads glTF 2.0");
 }
 
 TEST(GltfLoader, MaterialsExtensionsAndLights) {

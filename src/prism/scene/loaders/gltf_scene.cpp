@@ -3,9 +3,14 @@
 #include "prism/scene/loaders/gltf_scene.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <numbers>
+#include <optional>
+#include <string_view>
+#include <utility>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -27,8 +32,31 @@ constexpr int kMaxNodeDepth = 256;
 
 struct FileGuard {
   std::filesystem::path dir;
+  std::string base;     // the folder as tinygltf was given it
+  std::string where;    // "scene.gltf: buffer or image uri", for messages
   bool allow_external = false;
+  std::string refusal;  // why the first refused uri was refused
 };
+
+// tinygltf looks for a uri at JoinPath(base, uri), then at "./" + uri (the process's
+// working folder); it passes each through this before asking whether the file exists. The
+// first is resolved against the scene's folder by the rule every loader follows
+// (path_safety.h); the second is not a reference relative to the scene, and is not looked
+// at. A refused uri becomes the empty path (which does not exist), and the reason is kept:
+// tinygltf itself would only report "File not found".
+std::string expand_path(const std::string& joined, void* user) {
+  auto* guard = static_cast<FileGuard*>(user);
+  const std::string prefix = guard->base.ends_with('/') ? guard->base : guard->base + "/";
+  if (!joined.starts_with(prefix)) return {};
+  try {
+    return resolve_scene_reference(guard->dir, std::string_view(joined).substr(prefix.size()),
+                                   guard->allow_external, guard->where)
+        .string();
+  } catch (const std::exception& e) {  // not thrown through tinygltf: kept, thrown after it returns
+    if (guard->refusal.empty()) guard->refusal = e.what();
+    return {};
+  }
+}
 
 // tinygltf reads buffers and images through these: a file outside the scene's folder is
 // refused here, whatever the uri looked like before tinygltf decoded and joined it.
@@ -54,10 +82,8 @@ bool guarded_read(std::vector<unsigned char>* out, std::string* err, const std::
 
 bool file_exists(const std::string& path, void*) {
   std::error_code ec;
-  return std::filesystem::is_regular_file(path, ec);
+  return !path.empty() && std::filesystem::is_regular_file(path, ec);
 }
-
-std::string expand_path(const std::string& path, void*) { return path; }
 
 bool no_write(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
   if (err) *err += "writing is not allowed";
@@ -100,6 +126,42 @@ Transform node_transform(const tinygltf::Node& n) {
                                            static_cast<float>(n.translation[2]))),
                 t);
   return t;
+}
+
+// A glTF version "MAJOR.MINOR" (the schema's pattern ^[0-9]+\.[0-9]+$), or nothing.
+std::optional<std::pair<unsigned long, unsigned long>> parse_gltf_version(std::string_view text) {
+  const std::size_t dot = text.find('.');
+  if (dot == std::string_view::npos) return std::nullopt;
+  const auto number = [](std::string_view digits) -> std::optional<unsigned long> {
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string_view::npos) return std::nullopt;
+    unsigned long value = 0;
+    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
+    return ec == std::errc() ? value : std::numeric_limits<unsigned long>::max();  // too large: no version read
+  };
+  const auto major = number(text.substr(0, dot)), minor = number(text.substr(dot + 1));
+  if (!major || !minor) return std::nullopt;
+  return std::pair{*major, *minor};
+}
+
+// glTF 2.0 §3.2 (Asset): a reader checks minVersion if it is given (major and minor must
+// be supported: the author declares that a reader of that version can read the file),
+// otherwise the major version of `version`. Prism reads glTF 2.0; a file of another major
+// version is laid out differently and is refused, not guessed at.
+void check_gltf_version(const tinygltf::Asset& asset, std::string_view source) {
+  const auto version = parse_gltf_version(asset.version);
+  if (!version)
+    throw SceneError(fmt::format("{}: asset.version '{}' is not a glTF version (MAJOR.MINOR); Prism reads glTF 2.0",
+                                 source, asset.version));
+  if (!asset.minVersion.empty()) {
+    const auto needed = parse_gltf_version(asset.minVersion);
+    if (!needed || needed->first != 2 || needed->second > 0)
+      throw SceneError(fmt::format("{}: the file needs glTF {} (asset.minVersion); Prism reads glTF 2.0", source,
+                                   asset.minVersion));
+    return;
+  }
+  if (version->first != 2)
+    throw SceneError(fmt::format("{}: glTF version {} (asset.version) is not supported; Prism reads glTF 2.0",
+                                 source, asset.version));
 }
 
 bool finite(const Transform& t) {
@@ -376,17 +438,23 @@ Scene parse_gltf_scene(std::span<const unsigned char> bytes, std::string_view so
   std::error_code ec;
   if (!scene_dir.empty()) guard.dir = std::filesystem::weakly_canonical(scene_dir, ec);
   guard.allow_external = options.allow_external_paths;
+  guard.base = guard.dir.empty() ? std::string("/nonexistent-prism-scene-dir") : guard.dir.string();
+  guard.where = fmt::format("{}: buffer or image uri", source);
   loader.SetFsCallbacks(tinygltf::FsCallbacks{&file_exists, &expand_path, &guarded_read, &no_write, &guard});
   loader.SetImageLoader(&keep_image_bytes, nullptr);
   tinygltf::Model model;
   std::string err, warn;
-  const std::string base = guard.dir.empty() ? std::string("/nonexistent-prism-scene-dir") : guard.dir.string();
+  const std::string& base = guard.base;
   const bool binary = bytes.size() >= 4 && std::string_view(reinterpret_cast<const char*>(bytes.data()), 4) == "glTF";
   if (bytes.size() > 0x7fffffffu) throw SceneError(fmt::format("{}: the file is too large", source));
   const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
                                                        static_cast<unsigned int>(bytes.size()), base)
                          : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
                                                       static_cast<unsigned int>(bytes.size()), base);
+  // tinygltf reads `asset` first: a file of another major version is reported as such,
+  // whatever else went wrong with it, and a refused uri rather than "File not found".
+  if (!model.asset.version.empty() || ok) check_gltf_version(model.asset, source);
+  if (!guard.refusal.empty()) throw SceneError(guard.refusal);
   if (!ok || !err.empty()) {
     std::string message = err.empty() ? std::string("malformed glTF") : err;
     for (char& c : message)

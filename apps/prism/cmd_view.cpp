@@ -22,6 +22,8 @@ void add_view_command(CLI::App& root, Action& action) {
   cmd->add_option("--ev100", o->ev100,
                   "Initial exposure (EV100); default: the scene camera's, else metered as render meters it "
                   "(docs/display-pipeline.md), adapting smoothly as the view changes");
+  cmd->add_option("--rendering", o->rendering,
+                  "Initial rendering: aces1, aces2, agx or pbr-neutral (default aces1; see prism tonemap --help)");
   cmd->add_option("--odt", o->odt, "Initial output transform (see prism tonemap --help)")->capture_default_str();
   cmd->add_option("--view", o->view,
                   "Initial debug view: normal (shading-normal AOV as 0.5 + 0.5·N), luminance, luminance-display, "

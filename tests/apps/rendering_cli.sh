@@ -85,6 +85,14 @@ echo "$help" | grep -q "aces2: srgb-100nit .* p3d65-pq-1000nit$" || fail "--help
 grep -q -a "prism:rendering.agx" "$work/r.png" || fail "render: no prism:rendering agx text"
 grep -q "rendering agx, target srgb-100nit" "$work/log" || fail "render summary: $(cat "$work/log")"
 
+# prism view checks --rendering against --odt before it opens a window.
+for args in "--rendering agx --odt rec2020-pq-1000nit" "--rendering filmic"; do
+  # shellcheck disable=SC2086
+  env -u DISPLAY -u WAYLAND_DISPLAY "$prism" view cornell-box $args >/dev/null 2>"$work/err"
+  rc=$?
+  [ "$rc" -eq 2 ] && grep -q "rendering" "$work/err" || fail "view $args: exit $rc ($(cat "$work/err"))"
+done
+
 # $OCIO: its default display and view unless --rendering or --odt is named.
 cat >"$work/config.ocio" <<'OCIO'
 ocio_profile_version: 2

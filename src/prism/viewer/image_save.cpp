@@ -24,6 +24,8 @@ std::uint8_t cicp_transfer(display::DisplayEncoding e) {
   switch (e) {
     case display::DisplayEncoding::pq: return 16;
     case display::DisplayEncoding::bt1886: return 1;
+    case display::DisplayEncoding::gamma22: return 4;  // H.273: "assumed display gamma 2.2"
+    case display::DisplayEncoding::gamma26: return 2;  // no code point: unspecified (the ICC profile says)
     default: return 13;
   }
 }

@@ -50,7 +50,19 @@ bool bloom_section(display::DisplaySettings& s) {
 
 bool odt_section(display::DisplaySettings& s) {
   bool changed = false;
-  const std::vector<std::string> odts = display::odt_names();
+  // The rendering first: it decides which targets there are (rendering.h).
+  const std::vector<std::string> renderings = display::rendering_names();
+  int rendering = 0;
+  for (std::size_t i = 0; i < renderings.size(); ++i)
+    if (display::parse_rendering(renderings[i]) == s.rendering) rendering = static_cast<int>(i);
+  if (combo("rendering", rendering, renderings)) {
+    s.rendering = display::parse_rendering(renderings[static_cast<std::size_t>(rendering)]);
+    if (!display::rendering_supports_target(s.rendering, s.odt)) s.odt = display::OdtId::srgb_100nit;
+    s.encoding.reset();
+    s.peak_nits.reset();
+    changed = true;
+  }
+  const std::vector<std::string> odts = display::rendering_target_names(s.rendering);
   int odt = 0;
   for (std::size_t i = 0; i < odts.size(); ++i)
     if (display::parse_odt(odts[i]) == s.odt) odt = static_cast<int>(i);

@@ -102,6 +102,7 @@ class ViewerApp {
     render_.resolution_scale = std::clamp(options.resolution_scale, 0.125, 1.0);
     render_.camera = orbit_pivot_camera(scene);  // the same view, its orbit target at the scene's depth
     display_.settings.odt = display::parse_odt(options.odt);
+    if (!options.rendering.empty()) display_.settings.rendering = display::parse_rendering(options.rendering);
     if (!options.view.empty()) display_.view = display::parse_debug_view(options.view);
     if (options.ev100) {
       display_.auto_exposure = false;
@@ -324,7 +325,9 @@ int run_viewer(const ViewerOptions& options) {
   if (!options.normal_mapping.empty() && !parse_normal_mapping(options.normal_mapping))
     throw UsageError(fmt::format("unknown --normal-mapping '{}' ({})", options.normal_mapping, kNormalMappingNames));
   if (options.threads < 0) throw UsageError("--threads must be at least 1 (omit it to use all cores)");
-  display::parse_odt(options.odt);
+  display::require_rendering_target(
+      options.rendering.empty() ? display::kDefaultRendering : display::parse_rendering(options.rendering),
+      display::parse_odt(options.odt));
   if (!options.view.empty()) display::parse_debug_view(options.view);
   // Loading, preparing the scene (BVH, mip pyramids) and the display's work keep to
   // --threads as well as the render.

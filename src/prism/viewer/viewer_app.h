@@ -17,6 +17,7 @@ struct ViewerOptions {
   int frames = 0;                  // > 0: render this many passes, then exit (headless use)
   std::string screenshot;          // with frames: write what the window shows (PNG)
   std::optional<double> ev100;     // initial exposure; none: auto exposure
+  std::string rendering;           // initial rendering (display/rendering.h); empty: the default
   std::string odt = "srgb-100nit";
   std::string view;                // initial debug view (display/debug_views.h); empty: none
   std::string mode = "spectral";   // spectral | rgb

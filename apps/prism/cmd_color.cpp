@@ -32,7 +32,7 @@ namespace {
 
 namespace color = prism::color;
 
-constexpr const char* kNegativeNote = "Negative numbers are written as they are: -0.5.";
+constexpr const char* kNegativeNote = "Negative numbers are written as they are (-0.5), or after `--`.";
 
 
 void print_numbers(const std::vector<double>& values) {
@@ -60,24 +60,18 @@ void add_space_pair_options(CLI::App& cmd, std::string& from, std::string& to, s
 void add_convert(CLI::App& color, Action& action) {
   struct Options {
     std::string from, to, cat = "bradford";
+    std::vector<std::string> rgb;
   };
   auto opt = std::make_shared<Options>();
   CLI::App* cmd = color.add_subcommand(
       "convert", "Convert one linear RGB triple between colour spaces (adapting whites)");
   add_space_pair_options(*cmd, opt->from, opt->to, opt->cat);
-  // R G B are taken from the unparsed arguments so that negative values after `--` work.
-  cmd->allow_extras();
-  cmd->footer(std::string("Arguments: R G B (linear values in the source space).\n"
-                          "Output: one line, the three converted values printed with %.9g.\n") +
-              kNegativeNote);
-  cmd->callback([cmd, opt, &action] {
-    const std::vector<std::string> rgb_text = cmd->remaining();
-    action = [opt, rgb_text] {
-      std::vector<double> values;
-      for (const std::string& text : rgb_text) values.push_back(parse_number(text, "convert (expects R G B)"));
-      if (values.size() != 3)
-        throw UsageError("convert needs exactly three numbers R G B, got " + std::to_string(values.size()));
-      const Vec3d rgb{values[0], values[1], values[2]};
+  // Read as text and parsed strictly below (parse_number), as every number of `prism color`.
+  cmd->add_option("rgb", opt->rgb, "Linear R G B in the source space")->expected(3)->required();
+  cmd->footer(std::string("Output: one line, the three converted values printed with %.9g.\n") + kNegativeNote);
+  cmd->callback([opt, &action] {
+    action = [opt] {
+      const Vec3d rgb{parse_number(opt->rgb[0], "R"), parse_number(opt->rgb[1], "G"), parse_number(opt->rgb[2], "B")};
       const Mat3 m = color::conversion_matrix(color::parse_color_space(opt->from),
                                               color::parse_color_space(opt->to), color::parse_cat(opt->cat));
       const Vec3d out = m * rgb;

@@ -3,24 +3,29 @@
 #include <exception>
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "command.h"
+#include "command_line.h"
 #include "prism/core/error.h"
+#include "prism/core/printable_text.h"
 #include "prism/core/version.h"
 
 namespace {
 
+// Messages may quote the input (a file name, a scene's text, bytes of a binary file):
+// printed through printable_text, so that they stay one line of text on any terminal.
 int report_error(const std::string& what, int exit_code) {
-  std::cerr << "prism: error: " << what << '\n';
+  std::cerr << "prism: error: " << prism::printable_text(what) << '\n';
   return exit_code;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"Prism: a spectral, colour-managed path tracer"};
+  CLI::App app{"Prism: a spectral, colour-managed path tracer", "prism"};
   app.set_version_flag("--version", std::string("prism ") + prism::kVersion);
   app.require_subcommand(0, 1);
 
@@ -35,8 +40,12 @@ int main(int argc, char** argv) {
   prism::cli::add_generate_command(app, action);
   prism::cli::add_denoise_command(app, action);
 
+  if (argc <= 1) {  // `prism` alone asks what it does: it must not start rendering
+    std::cout << app.help();
+    return 0;
+  }
   try {
-    app.parse(argc, argv);
+    prism::cli::parse_command_line(app, std::vector<std::string>(argv + 1, argv + argc));
   } catch (const CLI::CallForHelp& e) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
@@ -48,14 +57,7 @@ int main(int argc, char** argv) {
   }
 
   try {
-    if (!action) {
-      // No subcommand: render the default scene, as `prism render` would.
-      CLI::App fallback{"prism"};
-      prism::cli::Action render_action;
-      prism::cli::add_render_command(fallback, render_action);
-      fallback.parse(std::vector<std::string>{"render"});
-      return render_action();
-    }
+    if (!action) return report_error("no subcommand given (see prism --help)", 2);
     return action();
   } catch (const prism::UsageError& e) {
     return report_error(e.what(), 2);

@@ -17,11 +17,13 @@
 #include "environment_options.h"
 #include "progress_reporter.h"
 #include "render_denoise.h"
+#include "render_outputs.h"
 #include "prism/color/chromatic_adaptation.h"
 #include "prism/color/color_space.h"
 #include "prism/color/wavelength_sampling.h"
 #include "prism/core/error.h"
 #include "prism/core/parallel.h"
+#include "prism/core/printable_text.h"
 #include "prism/core/process_memory.h"
 #include "prism/core/version.h"
 #include "prism/display/exposure_metering.h"
@@ -272,7 +274,7 @@ int run_render(const RenderOptions& o) {
   if (!o.camera_json.empty()) scene.camera = read_camera_json(o.camera_json, scene.camera);
   apply_environment_override(scene, o.environment,
                              LoadOptions{.allow_external_paths = true, .memory_budget = &load_budget});
-  for (const std::string& w : scene.warnings) fmt::print(stderr, "prism: warning: {}\n", w);
+  for (const std::string& w : scene.warnings) fmt::print(stderr, "prism: warning: {}\n", printable_text(w));
   if (const auto warning = no_emitters_warning(scene)) fmt::print(stderr, "prism: warning: {}\n", *warning);
   for (std::size_t i = 1, n = 0; i <= scene.lights.size(); ++i)
     if (scene.lights[i - 1].type == LightType::environment && ++n == 2)
@@ -284,7 +286,9 @@ int run_render(const RenderOptions& o) {
   const bool exposure_given = display.ev100 || display.f_number || display.shutter_s || display.iso;
   if (!exposure_given && !display.auto_exposure && first.camera_ev100) display.ev100 = first.camera_ev100;
   const bool metered = !display.ev100 && !display.f_number && !display.shutter_s && !display.iso;
-  if (o.outputs.empty()) outputs = {scene.name + ".exr", scene.name + ".png"};
+  const RenderOutputs chosen = render_outputs(scene, o.outputs);  // the scene's own Film "filename", or -o
+  outputs = chosen.paths;
+  if (!chosen.note.empty()) fmt::print(stderr, "prism: note: {}\n", printable_text(chosen.note));
   for (const auto& p : outputs) {
     if (output_format(p) == OutputFormat::display)
       validate_display_output(p, display);  // bad display options fail before rendering

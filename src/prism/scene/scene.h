@@ -69,6 +69,9 @@ struct Scene {
   // Names of the material variants the file defines (glTF KHR_materials_variants), in its
   // order; LoadOptions::material_variant picks one.
   std::vector<std::string> material_variants;
+  // The image file the scene file names for its render (pbrt-v4's Film "filename"), as
+  // written; empty: none. Not part of the image: `prism render` writes it when no -o is given.
+  std::string output_file;
   std::vector<std::string> warnings;  // loader warnings (unsupported features), one line each
 
   std::size_t triangle_count() const;

@@ -299,7 +299,7 @@ void PbrtBuilder::film(const std::string& type, const PbrtParams& p) {
     throw SceneError(fmt::format("{}:{}: Film: resolution {}×{} is out of range", p.source, p.line, w, h));
   scene_.default_width = w;
   scene_.default_height = h;
-  p.find("filename");  // the output file is chosen on Prism's command line
+  scene_.output_file = p.get_string("filename", "");  // prism render writes it unless -o is given
   note_unused("Film", p);
 }
 

@@ -31,7 +31,7 @@ void add_display_options(CLI::App* cmd, DisplayCliOptions& o) {
   cmd->add_option("--shutter", o.shutter_s, "Camera shutter time in seconds");
   cmd->add_option("--iso", o.iso, "Camera ISO sensitivity");
   cmd->add_flag("--auto-exposure", o.auto_exposure,
-                "Meter the image (the 40th-60th percentile mean of log luminance over zones that see a surface, "
+                "Meter the image (the 10th-90th percentile mean of log luminance over zones that see a surface, "
                 "docs/display-pipeline.md) and expose it to --key; render does this unless an exposure is given");
   cmd->add_option("--key", o.key, "Auto-exposure key value (default 0.18)");
   cmd->add_option("--blue-correction", o.blue_correction, "Blue-light-artifact LMT strength 0..1 (default 0)");

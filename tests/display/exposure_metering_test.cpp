@@ -52,7 +52,7 @@ TEST(ExposureMetering, VoidIsNotMeteredContentGoesToTheKey) {
 
 TEST(ExposureMetering, DarkestAndBrightestTailsAreIgnored) {
   // 32 rows of zones (side 4): 2 rows of light sources (1e3 nit), 2 of deep shadow
-  // (1e-3 nit), the rest 2 nit. Each tail (6.25 %) lies inside the discarded 40 %.
+  // (1e-3 nit), the rest 2 nit. Each tail (6.25 %) lies inside the discarded 10 %.
   const int w = 128, h = 128;
   ImageRgbF film = grey_film(w, h, 2.0f);
   for (int y = 0; y < 8; ++y)
@@ -101,11 +101,12 @@ TEST(ExposureMetering, CentreWeightingFavoursTheCentre) {
   centre.centre_weight = 1.0;
   const double ev_uniform = meter_exposure(film, kRec709Y, {}, uniform).ev100;
   const double ev_centre = meter_exposure(film, kRec709Y, {}, centre).ev100;
-  // Uniform: 75 % dim, so the 40–60 % window holds only dim zones.
+  // Uniform: 75 % dim, above the default window's upper end, which holds only dim zones.
+  ASSERT_LE(uniform.high_percentile, 0.75);
   EXPECT_NEAR(ev_uniform, ev_for(0.25), kEvTolerance);
   // Centre-weighted: each zone (4² pixels) weighs exp(−r²/(2·0.4²)), r its centre's
   // distance from the image centre in half-diagonals; the bright square's share b of the
-  // weight sets the window: dim from 40 % to 1 − b, bright from 1 − b to 60 %.
+  // weight sets the window: dim from the low quantile to 1 − b, bright from 1 − b to the high.
   double bright = 0, total = 0;
   for (int zy = 0; zy < n / 4; ++zy)
     for (int zx = 0; zx < n / 4; ++zx) {
@@ -115,10 +116,11 @@ TEST(ExposureMetering, CentreWeightingFavoursTheCentre) {
       if (zx >= n / 16 && zx < 3 * n / 16 && zy >= n / 16 && zy < 3 * n / 16) bright += wgt;
     }
   const double b = bright / total;
-  ASSERT_GT(b, 0.4);  // the square (a quarter of the pixels) carries far more than a quarter
-  ASSERT_LT(b, 0.6);  // … and the window holds both kinds of zone
-  const double dim_kept = (1.0 - b) - 0.4, bright_kept = 0.6 - (1.0 - b);
-  EXPECT_NEAR(ev_centre, (dim_kept * std::log2(0.25) + bright_kept * std::log2(4.0)) / 0.2 - std::log2(0.216),
+  const double lo = centre.low_percentile, hi = centre.high_percentile;
+  ASSERT_GT(b, 1.0 - hi);  // the square (a quarter of the pixels) carries far more than a quarter
+  ASSERT_LT(b, 1.0 - lo);  // … and the window holds both kinds of zone
+  const double dim_kept = (1.0 - b) - lo, bright_kept = hi - (1.0 - b);
+  EXPECT_NEAR(ev_centre, (dim_kept * std::log2(0.25) + bright_kept * std::log2(4.0)) / (hi - lo) - std::log2(0.216),
               kEvTolerance);
   EXPECT_GT(ev_centre, ev_uniform + 0.5);
   // Symmetric content: centre weighting changes nothing.

@@ -87,7 +87,8 @@ void fill_frame(const DisplayJob& job, DisplayFrame& out) {
   // An HDR target in this SDR window: show the SDR preview, say so, save the HDR image.
   std::shared_ptr<const display::DisplayImage> shown = image;
   if (hdr) {
-    shown = std::make_shared<display::DisplayImage>(display::apply_display_pipeline(film, space, sdr_preview_settings(s)));
+    shown = std::make_shared<display::DisplayImage>(
+        display::apply_display_pipeline(film, space, sdr_preview_settings(s)));
     out.preview_note = "SDR preview (srgb-100nit) of the HDR output " +
                        std::string(display::odt_description(s.odt).name) + "; saved images are HDR";
   }
@@ -105,8 +106,8 @@ void fill_frame(const DisplayJob& job, DisplayFrame& out) {
     }
     case DebugView::sdr_hdr_split:
       if (!hdr) throw UsageError("the SDR/HDR split view needs an HDR ODT");
-      show(display::sdr_preview_of_display_light(display::sdr_hdr_split_view(film, space, s, job.controls.sdr_white_nits),
-                                                 job.controls.sdr_white_nits),
+      show(display::sdr_preview_of_display_light(
+               display::sdr_hdr_split_view(film, space, s, job.controls.sdr_white_nits), job.controls.sdr_white_nits),
            s.dither_seed, out);
       return;
     case DebugView::bloom:

@@ -10,7 +10,8 @@ spp=${2:-64}
 tool=${PRISM_FPE_TOOL:-$build/bench/prism_first_picture_exposure}
 shared=$root/../shared/scenes
 status=0
-"$tool" --spp "$spp" cornell-box cornell-box-measured material-test dispersion-prism "$root"/bench/scenes/*.json ||
+"$tool" --spp "$spp" cornell-box cornell-box-measured "$root"/data/scenes/material-test.json dispersion-prism \
+  "$root"/bench/scenes/*.json ||
   status=1
 for env in "$shared"/envmaps/*.hdr; do
   models=()

@@ -104,7 +104,8 @@ TEST(ExposureMetering, CentreWeightingFavoursTheCentre) {
   // Uniform: 75 % of the weight dim, 25 % bright; the window [lo, hi] keeps the dim zones
   // from lo to 0.75 and the bright ones from 0.75 to hi (10–90 %: 65 % dim, 15 % bright).
   const auto trimmed_ev = [](double lo, double hi, double dim_share) {
-    const double dim = std::max(0.0, std::min(dim_share, hi) - lo), bright = std::max(0.0, hi - std::max(dim_share, lo));
+    const double dim = std::max(0.0, std::min(dim_share, hi) - lo);
+    const double bright = std::max(0.0, hi - std::max(dim_share, lo));
     return (dim * std::log2(0.25) + bright * std::log2(4.0)) / (hi - lo) - std::log2(0.216);
   };
   EXPECT_NEAR(ev_uniform, trimmed_ev(uniform.low_percentile, uniform.high_percentile, 0.75), kEvTolerance);

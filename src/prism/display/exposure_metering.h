@@ -42,7 +42,7 @@ struct MeteringSettings {
   // 10–20 % of SDR white). Wide rather than narrow: on a bimodal image (half in hard sun,
   // half in shadow) a narrow window sits on the boundary between the modes, where framing or
   // a 1-spp film's noise move the reading by a stop (measured: 40–60 % put render and view
-  // of dispersion-prism 1.07 EV apart, 10–90 % 0.19 EV; docs/display-pipeline.md).
+  // of dispersion-prism 1.07 EV apart, 10–90 % 0.43 EV; docs/display-pipeline.md).
   double low_percentile = 0.10;
   double high_percentile = 0.90;
   double centre_weight = 0.0;  // k in [0, 1]; 0: every covered zone counts the same

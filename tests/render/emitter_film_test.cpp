@@ -12,6 +12,7 @@
 
 #include "prism/color/chromatic_adaptation.h"
 #include "prism/color/color_space.h"
+#include "prism/color/emission_spectrum.h"
 #include "prism/color/wavelength_sampling.h"
 #include "prism/render/renderer.h"
 #include "support/test_scenes.h"
@@ -22,7 +23,7 @@ namespace {
 constexpr Vec3d kLightRgb{17.0, 12.0, 4.0};
 
 Scene enclosure_emitting_light_rgb() {
-  Scene scene = make_emitting_enclosure(0.0f, 1.0f);
+  Scene scene = test::make_emitting_enclosure(0.0f, 1.0f);
   Material& wall = scene.materials[0];
   wall.emission.color = Vec3f(kLightRgb / kLightRgb.x);
   wall.emission.luminance_nits = static_cast<float>((color::color_space("srgb").rgb_to_xyz * kLightRgb).y);
@@ -34,12 +35,14 @@ struct ImageMean {
   Vec3d mean, standard_error;
 };
 
-ImageMean image_mean(const Film& film) {
+// The image's mean in working RGB: a spectral film holds E-relative CIE XYZ, which the
+// output adapts to the working white (color::spectral_xyz_to_rgb_matrix).
+ImageMean image_mean(const Film& film, const Mat3& film_to_working) {
   ImageMean m;
   const auto n = static_cast<double>(film.pixel_count());
   for (std::size_t p = 0; p < film.pixel_count(); ++p) {
-    m.mean += film.mean(p) / n;
-    m.standard_error += film.variance_of_mean(p) / (n * n);
+    m.mean += film_to_working * film.mean(p) / n;
+    m.standard_error += film.variance_of_mean(p, film_to_working) / (n * n);
   }
   for (int c = 0; c < 3; ++c) m.standard_error[c] = std::sqrt(m.standard_error[c]);
   return m;
@@ -50,10 +53,13 @@ void expect_films_light_rgb(const TransportSettings& transport, const std::strin
   s.width = s.height = 32;
   s.samples_per_pixel = 64;
   s.transport = transport;
+  s.aovs.variance = true;  // the variance of each working-space channel of a spectral film
   const RenderResult r = render(enclosure_emitting_light_rgb(), s);
   const color::ColorSpace& working = color::color_space(transport.working_space);
   const Vec3d expected = color::conversion_matrix(color::color_space("srgb"), working) * kLightRgb;
-  const ImageMean m = image_mean(r.film);
+  const Mat3 film_to_working =
+      transport.kind == TransportKind::spectral ? color::spectral_xyz_to_rgb_matrix(working) : Mat3::identity();
+  const ImageMean m = image_mean(r.film, film_to_working);
   for (int c = 0; c < 3; ++c) {
     EXPECT_NEAR(m.mean[c] / expected[c], 1.0, 1e-3) << label << " channel " << c << ": " << m.mean[c];
     EXPECT_LT(std::abs(m.mean[c] - expected[c]), 4.0 * m.standard_error[c] + 1e-6 * expected[c])

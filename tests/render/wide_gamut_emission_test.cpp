@@ -63,10 +63,12 @@ Vec3d acescg_xyz_under_e(const Vec3d& rgb) {
 
 TEST(WideGamutEmission, AnAcescgLampFilmsAsItsColourInSpectralTransportWhateverTheWorkingSpace) {
   const Scene scene = ceiling(acescg_lamp(kLampNits));
-  // The emission rule: the colour adapted to E, its spectrum scaled so that the film's Y
-  // (683 ∫ L ȳ dλ) is the luminance.
+  // The emission rule: the colour adapted to E, its spectrum scaled so that the luminance
+  // the film shows in the lamp's own space (the E-relative XYZ adapted back to the ACES
+  // white) is the lamp's: that is the colour's own Y there, which Bradford does not keep
+  // for a saturated red (the E-relative Y is about 4 % higher).
   const Vec3d adapted = acescg_xyz_under_e(kLampAcescg);
-  const Vec3d expected = adapted * (kLampNits / adapted.y);
+  const Vec3d expected = adapted * (kLampNits / (color::color_space("acescg").rgb_to_xyz * kLampAcescg).y);
   // Clipped to Rec.709 as the sRGB working space did before (the same rule on the clip).
   const Mat3 to_rec709 = color::conversion_matrix(color::color_space("acescg"), color::color_space("srgb"));
   const Vec3d clip = color::working_to_e_adaptation(color::color_space("srgb")) *

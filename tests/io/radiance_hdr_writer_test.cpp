@@ -15,7 +15,7 @@
 #include "prism/io/atomic_file.h"
 #include "prism/io/radiance_hdr_writer.h"
 #include "prism/io/radiance_rle.h"
-#include "prism/scene/radiance_hdr.h"
+#include "prism/io/radiance_hdr_reader.h"
 #include "prism/scene/texture.h"
 #include "prism/scene/texture_file.h"
 #include "scene/loaders/loader_test_files.h"

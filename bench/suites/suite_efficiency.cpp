@@ -43,7 +43,7 @@ std::vector<Variant> variants() {
       {"light: solid angle + receiver-cosine warp",
        [](RenderSettings& s) { s.path.light.triangle = TriangleLightSampling::solid_angle_cosine; }},
       {"roulette from bounce 2 (pbrt-v4)", [](RenderSettings& s) { s.path.russian_roulette_depth = 2; }},
-      {"wavelengths: cosh3 (three lobes, the default before session 15)",
+      {"wavelengths: cosh3 (three lobes, the earlier default)",
        [](RenderSettings& s) { s.transport.wavelength_strategy = color::WavelengthStrategy::cosh3; }, true},
       {"sampler: independent", [](RenderSettings& s) { s.path.sampler = SamplerKind::independent; }},
       {"sampler: zsobol", [](RenderSettings& s) { s.path.sampler = SamplerKind::zsobol; }},

@@ -111,4 +111,17 @@ ImageRgbF apply_bloom(const ImageRgbF& image, const BloomSettings& s) {
   return out;
 }
 
+const ImageRgbF& expose_and_bloom(const ImageRgbF& film, double exposure_scale, const BloomSettings& bloom,
+                                  ImageRgbF& storage, Mat3& to_input) {
+  if (bloom.strength <= 0.0) {
+    for (auto& row : to_input.m)
+      for (double& v : row) v *= exposure_scale;
+    return film;
+  }
+  storage = film;
+  for (float& v : storage.rgb) v = std::isfinite(v) ? static_cast<float>(v * exposure_scale) : 0.0f;
+  storage = apply_bloom(storage, bloom);
+  return storage;
+}
+
 }  // namespace prism::display

@@ -15,6 +15,7 @@
 // instead of adding light: away from the borders the image's total energy is unchanged.
 #include <string_view>
 
+#include "prism/core/mat3.h"
 #include "prism/io/image.h"
 
 namespace prism::display {
@@ -43,5 +44,13 @@ ImageRgbF bloom_component(const ImageRgbF& image, const BloomSettings& settings)
 
 // The whole stage on an exposed scene-linear image. Strength 0 returns the input unchanged.
 ImageRgbF apply_bloom(const ImageRgbF& image, const BloomSettings& settings);
+
+// Exposure and bloom ahead of a display transform whose input matrix (from the film's
+// space) is `to_input`. Bloom thresholds exposed values, so with bloom on, the film is
+// exposed (non-finite samples become 0) and bloomed into `storage`, which the result then
+// refers to; with bloom off, the exposure scale folds into `to_input` and the film itself is
+// returned, untouched.
+const ImageRgbF& expose_and_bloom(const ImageRgbF& film, double exposure_scale, const BloomSettings& bloom,
+                                  ImageRgbF& storage, Mat3& to_input);
 
 }  // namespace prism::display

@@ -115,17 +115,8 @@ DisplayImage apply_display_pipeline(const ImageRgbF& film_in, const color::Color
 
   // Exposure (and bloom, which thresholds exposed values) in the film's space.
   Mat3 to_aces = film_to_aces_matrix(film_space, s.blue_correction);
-  const ImageRgbF* film = &film_in;
   ImageRgbF exposed;
-  if (s.bloom.strength > 0.0) {
-    exposed = film_in;
-    for (float& v : exposed.rgb) v = std::isfinite(v) ? static_cast<float>(v * out.exposure_scale) : 0.0f;
-    exposed = apply_bloom(exposed, s.bloom);
-    film = &exposed;
-  } else {
-    for (auto& row : to_aces.m)
-      for (double& v : row) v *= out.exposure_scale;
-  }
+  const ImageRgbF* film = &expose_and_bloom(film_in, out.exposure_scale, s.bloom, exposed, to_aces);
   const AcesOutputTransform transform(s.odt, s.stretch_black.value_or(true));
   const std::size_t n_in = static_cast<std::size_t>(film->width) * film->height;
   const std::size_t n = static_cast<std::size_t>(out.width) * out.height;

@@ -4,17 +4,13 @@
 #include <cctype>
 #include <string>
 
+#include "prism/core/enum_names.h"
 #include "prism/core/error.h"
 
 namespace prism::display {
 namespace {
 
-struct RenderingName {
-  Rendering id;
-  std::string_view name;
-};
-
-constexpr std::array<RenderingName, 4> kRenderings{{
+constexpr std::array<EnumName<Rendering>, 4> kRenderings{{
     {Rendering::aces1, "aces1"},
     {Rendering::aces2, "aces2"},
     {Rendering::agx, "agx"},
@@ -32,22 +28,13 @@ std::string joined(const std::vector<std::string>& names) {
 Rendering parse_rendering(std::string_view name) {
   std::string n(name);
   for (char& c : n) c = c == '_' ? '-' : static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  for (const RenderingName& r : kRenderings)
-    if (n == r.name) return r.id;
-  throw UsageError("unknown rendering '" + std::string(name) + "' (valid: " + joined(rendering_names()) + ")");
+  if (const std::optional<Rendering> r = enum_value(kRenderings, n)) return *r;
+  throw UsageError("unknown rendering '" + std::string(name) + "' (valid: " + enum_name_list(kRenderings) + ")");
 }
 
-std::string_view rendering_name(Rendering r) {
-  for (const RenderingName& e : kRenderings)
-    if (e.id == r) return e.name;
-  return "?";
-}
+std::string_view rendering_name(Rendering r) { return enum_name(kRenderings, r); }
 
-std::vector<std::string> rendering_names() {
-  std::vector<std::string> names;
-  for (const RenderingName& r : kRenderings) names.emplace_back(r.name);
-  return names;
-}
+std::vector<std::string> rendering_names() { return enum_names(kRenderings); }
 
 bool rendering_supports_target(Rendering r, OdtId target) {
   if (r == Rendering::aces1) return true;

@@ -9,6 +9,7 @@
 #include "prism/core/error.h"
 #include "prism/core/parallel.h"
 #include "prism/display/agx.h"
+#include "prism/display/bloom.h"
 #include "prism/display/display_primaries.h"
 #include "prism/display/pbr_neutral.h"
 #include "prism/display/resampling.h"
@@ -99,17 +100,8 @@ DisplayImage apply_rendering_pipeline(const ImageRgbF& film_in, const color::Col
   // Exposure (and bloom, which thresholds exposed values) in the film's space, then to the
   // rendering's input space.
   Mat3 to_input = color::conversion_matrix(film_space, color::color_space(aces2 ? "aces2065-1" : "srgb"));
-  const ImageRgbF* film = &film_in;
   ImageRgbF exposed;
-  if (s.bloom.strength > 0.0) {
-    exposed = film_in;
-    for (float& v : exposed.rgb) v = std::isfinite(v) ? static_cast<float>(v * out.exposure_scale) : 0.0f;
-    exposed = apply_bloom(exposed, s.bloom);
-    film = &exposed;
-  } else {
-    for (auto& row : to_input.m)
-      for (double& v : row) v *= out.exposure_scale;
-  }
+  const ImageRgbF* film = &expose_and_bloom(film_in, out.exposure_scale, s.bloom, exposed, to_input);
 
   // Display light (nits, output primaries) at the film's size.
   const std::size_t n_in = static_cast<std::size_t>(film->width) * film->height;

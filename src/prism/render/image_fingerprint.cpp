@@ -19,6 +19,12 @@ class Fnv1a {
   void value(const T& v) {
     bytes(&v, sizeof v);
   }
+  // Only where `v` differs from its default, so that scenes without the field keep the
+  // fingerprints of versions that did not hash it (and their checkpoints still resume).
+  template <typename T>
+  void value_if_changed(const T& v, const T& default_value) {
+    if (v != default_value) value(v);
+  }
   std::uint64_t digest() const { return hash_; }
 
  private:
@@ -76,14 +82,14 @@ void hash_geometry_details(Fnv1a& h, const Scene& scene) {
 void hash_material_details(Fnv1a& h, const Scene& scene) {
   const Material plain;
   for (const Material& m : scene.materials) {
-    if (m.base_color_texture != plain.base_color_texture) h.value(m.base_color_texture);
-    if (m.metallic_roughness_texture != plain.metallic_roughness_texture) h.value(m.metallic_roughness_texture);
+    h.value_if_changed(m.base_color_texture, plain.base_color_texture);
+    h.value_if_changed(m.metallic_roughness_texture, plain.metallic_roughness_texture);
     if (m.emission.texture != plain.emission.texture) h.value(m.emission.texture);
     if (m.emission.two_sided != plain.emission.two_sided) h.value(m.emission.two_sided);
-    if (m.anisotropy != plain.anisotropy) h.value(m.anisotropy);
-    if (m.anisotropy_rotation_rad != plain.anisotropy_rotation_rad) h.value(m.anisotropy_rotation_rad);
-    if (m.anisotropy_texture != plain.anisotropy_texture) h.value(m.anisotropy_texture);
-    if (m.microfacet != plain.microfacet) h.value(m.microfacet);
+    h.value_if_changed(m.anisotropy, plain.anisotropy);
+    h.value_if_changed(m.anisotropy_rotation_rad, plain.anisotropy_rotation_rad);
+    h.value_if_changed(m.anisotropy_texture, plain.anisotropy_texture);
+    h.value_if_changed(m.microfacet, plain.microfacet);
     if (m.conductor_fresnel != plain.conductor_fresnel) {
       h.value(m.conductor_fresnel);
       h.bytes(m.conductor_name.data(), m.conductor_name.size());
@@ -92,21 +98,21 @@ void hash_material_details(Fnv1a& h, const Scene& scene) {
       h.value(m.dispersion);
       h.value(m.dispersion_coefficients);
     }
-    if (m.thin_walled != plain.thin_walled) h.value(m.thin_walled);
-    if (m.transmission != plain.transmission) h.value(m.transmission);
+    h.value_if_changed(m.thin_walled, plain.thin_walled);
+    h.value_if_changed(m.transmission, plain.transmission);
     if (m.alpha_mode != plain.alpha_mode) {
       h.value(m.alpha_mode);
       h.value(m.alpha_cutoff);
     }
-    if (m.opacity != plain.opacity) h.value(m.opacity);
+    h.value_if_changed(m.opacity, plain.opacity);
     if (m.absorbs_inside()) {
       h.value(m.attenuation_color);
       h.value(m.attenuation_distance);
     }
-    if (m.specular != plain.specular) h.value(m.specular);
-    if (m.specular_color != plain.specular_color) h.value(m.specular_color);
-    if (m.specular_texture != plain.specular_texture) h.value(m.specular_texture);
-    if (m.specular_color_texture != plain.specular_color_texture) h.value(m.specular_color_texture);
+    h.value_if_changed(m.specular, plain.specular);
+    h.value_if_changed(m.specular_color, plain.specular_color);
+    h.value_if_changed(m.specular_texture, plain.specular_texture);
+    h.value_if_changed(m.specular_color_texture, plain.specular_color_texture);
     if (m.has_clearcoat()) {
       h.value(m.clearcoat);
       h.value(m.clearcoat_roughness);
@@ -138,15 +144,15 @@ void hash_material_details(Fnv1a& h, const Scene& scene) {
 void hash_light_details(Fnv1a& h, const Scene& scene) {
   const Light point;
   for (const Light& l : scene.lights) {
-    if (l.color_space != point.color_space) h.value(l.color_space);
+    h.value_if_changed(l.color_space, point.color_space);
     if (l.type == LightType::spot) {
       h.value(l.spot_inner_angle_degrees);
       h.value(l.spot_outer_angle_degrees);
     }
-    if (l.angular_diameter_degrees != point.angular_diameter_degrees) h.value(l.angular_diameter_degrees);
+    h.value_if_changed(l.angular_diameter_degrees, point.angular_diameter_degrees);
     if (l.type == LightType::environment) {
-      if (l.environment_texture != point.environment_texture) h.value(l.environment_texture);
-      if (l.environment_mapping != point.environment_mapping) h.value(l.environment_mapping);
+      h.value_if_changed(l.environment_texture, point.environment_texture);
+      h.value_if_changed(l.environment_mapping, point.environment_mapping);
       if (!(l.environment_to_world == Transform{})) {
         h.value(l.environment_to_world.m);
         h.value(l.environment_to_world.translation);

@@ -1,11 +1,14 @@
 #include "prism/render/renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstring>
+#include <optional>
 
 #include <fmt/format.h>
 
+#include "prism/core/enum_names.h"
 #include "prism/core/error.h"
 #include "prism/core/parallel.h"
 #include "prism/core/sample_stream.h"
@@ -36,17 +39,19 @@ void validate_render_settings(const RenderSettings& s) {
 }
 
 
-std::string_view integrator_name(IntegratorKind kind) {
-  return kind == IntegratorKind::reference ? "reference" : "wavefront";
-}
+constexpr std::array<EnumName<IntegratorKind>, 2> kIntegratorNames{{
+    {IntegratorKind::wavefront, "wavefront"},
+    {IntegratorKind::reference, "reference"},
+}};
+
+std::string_view integrator_name(IntegratorKind kind) { return enum_name(kIntegratorNames, kind); }
 
 IntegratorKind parse_integrator(std::string_view name) {
-  for (IntegratorKind k : {IntegratorKind::wavefront, IntegratorKind::reference})
-    if (name == integrator_name(k)) return k;
-  throw UsageError(fmt::format("unknown --integrator '{}' (wavefront, reference)", name));
+  if (const std::optional<IntegratorKind> kind = enum_value(kIntegratorNames, name)) return *kind;
+  throw UsageError(fmt::format("unknown --integrator '{}' ({})", name, enum_name_list(kIntegratorNames)));
 }
 
-std::vector<std::string> integrator_names() { return {"wavefront", "reference"}; }
+std::vector<std::string> integrator_names() { return enum_names(kIntegratorNames); }
 
 namespace {
 

@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "prism/core/enum_names.h"
 #include "prism/core/error.h"
 #include "prism/core/float_lanes.h"
 #include "prism/sampling/padded_sobol_lanes.h"
@@ -9,11 +10,7 @@
 namespace prism {
 namespace {
 
-struct SimdLevelName {
-  SimdLevel level;
-  std::string_view name;
-};
-constexpr std::array<SimdLevelName, 5> kNames{{
+constexpr std::array<EnumName<SimdLevel>, 5> kNames{{
     {SimdLevel::automatic, "auto"},
     {SimdLevel::avx512, "avx512"},
     {SimdLevel::avx2, "avx2"},
@@ -31,25 +28,15 @@ bool avx2_shading_supported() {
 
 }  // namespace
 
-std::string_view simd_level_name(SimdLevel level) {
-  for (const SimdLevelName& n : kNames)
-    if (n.level == level) return n.name;
-  return "unknown";
-}
+std::string_view simd_level_name(SimdLevel level) { return enum_name(kNames, level); }
 
 SimdLevel parse_simd_level(std::string_view name) {
-  for (const SimdLevelName& n : kNames)
-    if (n.name == name) return n.level;
-  std::string list;
-  for (const SimdLevelName& n : kNames) list += (list.empty() ? "" : ", ") + std::string(n.name);
-  throw UsageError("unknown --simd level '" + std::string(name) + "' (expected one of: " + list + ")");
+  if (const std::optional<SimdLevel> level = enum_value(kNames, name)) return *level;
+  throw UsageError("unknown --simd level '" + std::string(name) + "' (expected one of: " + enum_name_list(kNames) +
+                   ")");
 }
 
-std::vector<std::string> simd_level_names() {
-  std::vector<std::string> names;
-  for (const SimdLevelName& n : kNames) names.emplace_back(n.name);
-  return names;
-}
+std::vector<std::string> simd_level_names() { return enum_names(kNames); }
 
 bool simd_level_supported(SimdLevel level) {
   switch (level) {

@@ -3,20 +3,13 @@
 // info` prints and what the scene writers write. A new material type, light type, texture
 // wrap or alpha mode gets its name here and every loader, summary and writer knows it.
 #include <array>
-#include <optional>
-#include <string_view>
 
+#include "prism/core/enum_names.h"
 #include "prism/scene/light.h"
 #include "prism/scene/material.h"
 #include "prism/scene/texture.h"
 
 namespace prism {
-
-template <class Enum>
-struct EnumName {
-  Enum value;
-  std::string_view name;
-};
 
 inline constexpr std::array<EnumName<MaterialType>, 5> kMaterialTypeNames{{
     {MaterialType::diffuse, "diffuse"},
@@ -44,21 +37,5 @@ inline constexpr std::array<EnumName<AlphaMode>, 3> kAlphaModeNames{{
     {AlphaMode::mask, "mask"},
     {AlphaMode::blend, "blend"},
 }};
-
-// The value's name in `table` ("unknown" for a value the table lacks).
-template <class Enum, std::size_t N>
-constexpr std::string_view enum_name(const std::array<EnumName<Enum>, N>& table, Enum value) {
-  for (const EnumName<Enum>& e : table)
-    if (e.value == value) return e.name;
-  return "unknown";
-}
-
-// The value named `name` in `table`; nothing where no entry has that name.
-template <class Enum, std::size_t N>
-constexpr std::optional<Enum> enum_value(const std::array<EnumName<Enum>, N>& table, std::string_view name) {
-  for (const EnumName<Enum>& e : table)
-    if (e.name == name) return e.value;
-  return std::nullopt;
-}
 
 }  // namespace prism

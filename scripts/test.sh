@@ -7,7 +7,7 @@
 #               every unit and CLI test; the same build has the libFuzzer targets, and
 #   fuzz-smoke  runs each of them for 30 s on its seed corpus;
 #   tsan        ThreadSanitizer: the render, checkpoint, determinism and viewer render
-#               worker tests (the `tsan` test preset's name filter).
+#               worker tests (the test files the `tsan` configure preset builds).
 # Any sanitizer report fails the run. Options and suppressions (third-party code only) are
 # in the test presets and tests/sanitizers/; docs/reliability.md explains them.
 # PRISM_SANITIZERS=0 runs the Release stage only (a quick local check, not what CI runs).

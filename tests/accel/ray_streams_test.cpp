@@ -15,6 +15,7 @@
 #include "prism/sampling/warps.h"
 #include "prism/scene/builtin_scenes.h"
 #include "prism/scene/camera_rays.h"
+#include "support/same_bits.h"
 
 namespace prism {
 namespace {
@@ -44,7 +45,7 @@ std::vector<std::uint32_t> shuffled_queue(std::size_t slots) {
   return queue;
 }
 
-bool same_bits(float a, float b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+using test::same_bits;  // support/same_bits.h
 
 TEST(RayStreams, ClosestHitsMatchOneRayQueriesSlotBySlot) {
   const Scene scene = make_cornell_box();

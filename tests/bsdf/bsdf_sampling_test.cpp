@@ -20,12 +20,11 @@ namespace {
 using Spectrum3 = color::SampledSpectrum<3>;
 using test_helpers::direction_at;
 using test_helpers::rgb;
-constexpr double kAlphaTotal = 0.01;
 // Histograms drawn in this file (Šidák split): lambert 4, conductor 5 kinds × 9 = 45,
 // metallic-roughness 7 × 3 = 21, rough dielectric 3 α × 5 wo × 2 halves = 30, dispersive 2,
 // smooth-dielectric lobe choice 4, coated lobes 3 bases × 2 coat roughnesses × 3 wo = 18 plus
 // a smooth coat's non-delta part 3, anisotropic lobes 12 + 2 + 4, tilted coats 6.
-constexpr int kChiSquareTests = 4 + 45 + 21 + 30 + 2 + 4 + 18 + 3 + 15 + 18 + 6;
+constexpr int kBsdfChiSquareTests = 4 + 45 + 21 + 30 + 2 + 4 + 18 + 3 + 15 + 18 + 6;
 constexpr long kSamples = 100'000;
 
 // Draws (u_lobe, u) from the harness's 2D uniform by splitting u.x: the high bits pick the
@@ -71,7 +70,7 @@ double bsdf_p_value(const Bsdf<3>& bsdf, const Vec3f& wo, Vec3f axis, float s, i
       },
       [&](const Vec3f& wi) { return in_side(wi) ? double(bsdf.pdf(wo, wi)) : 0.0; }, axis, s, kSamples,
       seed, cos_bins, phi_bins, simpson_intervals);
-  if (r.p_value <= test::sidak_alpha(kAlphaTotal, kChiSquareTests)) ADD_FAILURE() << r.message << " (wo = " << wo.x << ' ' << wo.y << ' ' << wo.z
+  if (r.p_value <= test::sidak_alpha(test::kAlphaTotal, kBsdfChiSquareTests)) ADD_FAILURE() << r.message << " (wo = " << wo.x << ' ' << wo.y << ' ' << wo.z
                   << ", stretch " << s << ", side " << side << ", seed " << seed << ')';
   return r.p_value;
 }
@@ -269,7 +268,7 @@ TEST(BsdfSampling, SmoothDielectricChoosesLobesByFresnel) {
     const double observed[] = {reflections, kChoices - reflections};
     const double expected[] = {kChoices * double(F), kChoices * (1.0 - F)};
     const auto r = test::chi_square_test(observed, expected);
-    EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+    EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kBsdfChiSquareTests)) << r.message;
   }
 }
 
@@ -323,7 +322,7 @@ TEST(BsdfSampling, CoatedLobesMatchPdf) {
         },
         [&](const Vec3f& wi) { return double(smooth.pdf(wo, wi)); }, Vec3f(0, 0, 1), 1.0f, kSamples,
         ++seed, 20, 40, 8);
-    EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message << " theta " << theta;
+    EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kBsdfChiSquareTests)) << r.message << " theta " << theta;
   }
 }
 

@@ -18,6 +18,13 @@ inline Vec3f direction_at(double theta_deg, double phi_deg = 0.0) {
           static_cast<float>(std::cos(t))};
 }
 
+// The unit direction at polar angle theta (degrees) about +z in the xz-plane (y exactly +0),
+// for tests that tilt a direction towards +x only.
+inline Vec3f direction_in_xz_plane(double theta_deg) {
+  const double t = theta_deg * std::numbers::pi / 180.0;
+  return {static_cast<float>(std::sin(t)), 0.0f, static_cast<float>(std::cos(t))};
+}
+
 inline color::SampledSpectrum<3> rgb(float r, float g, float b) {
   color::SampledSpectrum<3> s;
   s[0] = r;

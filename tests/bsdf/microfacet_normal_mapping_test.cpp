@@ -20,14 +20,14 @@ namespace {
 using Spectrum3 = color::SampledSpectrum<3>;
 constexpr float kDegree = std::numbers::pi_v<float> / 180.0f;
 
-Vec3f direction_at(float theta_deg, float phi_deg) {
+Vec3f float_direction_at(float theta_deg, float phi_deg) {
   const float t = theta_deg * kDegree, p = phi_deg * kDegree;
   return {std::sin(t) * std::cos(p), std::sin(t) * std::sin(p), std::cos(t)};
 }
 
 // The mapped normal tilted by `tilt_deg` towards +x (so the wall faces −x).
 NormalMapMicrosurface surface_tilted(float tilt_deg) {
-  const Vec3f wp = direction_at(tilt_deg, 0.0f);
+  const Vec3f wp = float_direction_at(tilt_deg, 0.0f);
   const auto facet = Frame::from_normal_and_tangent(wp, Vec3f(1, 0, 0));
   return *NormalMapMicrosurface::make(*facet);
 }
@@ -35,7 +35,7 @@ NormalMapMicrosurface surface_tilted(float tilt_deg) {
 TEST(MicrofacetNormalMapping, TheFacetsMeanNormalIsTheSurfaceNormal) {
   for (const float tilt : {5.0f, 30.0f, 60.0f, 85.0f}) {
     for (const float phi : {0.0f, 130.0f}) {
-      const Vec3f wp = direction_at(tilt, phi);
+      const Vec3f wp = float_direction_at(tilt, phi);
       const auto m = *NormalMapMicrosurface::make(*Frame::from_normal_and_tangent(wp, Vec3f(1, 0, 0)));
       // Per unit of macro area: facet p projects to exactly that unit, and the areas
       // weight the two normals to n, so a_p(ω) + a_t(ω) = ω·n whenever both face ω.
@@ -114,27 +114,27 @@ TEST(MicrofacetNormalMapping, TheWalkPassesTheWhiteFurnace) {
       const MicrofacetNormalMapped<3, Bsdf<3>> b(*facet, surface);
       for (const float theta : {0.0f, 45.0f, 85.0f})
         for (const float phi : {0.0f, 90.0f, 180.0f})
-          EXPECT_NEAR(albedo(b, direction_at(theta, phi), 20000, ++seed), 1.0, 1e-3)
+          EXPECT_NEAR(albedo(b, float_direction_at(theta, phi), 20000, ++seed), 1.0, 1e-3)
               << "tilt " << tilt << " wo " << theta << "/" << phi;
       // Two-sided: the surface seen from below is the mirrored microsurface.
-      EXPECT_NEAR(albedo(b, direction_at(135.0f, 40.0f), 20000, ++seed), 1.0, 1e-3);
+      EXPECT_NEAR(albedo(b, float_direction_at(135.0f, 40.0f), 20000, ++seed), 1.0, 1e-3);
     }
 }
 
 // The walks that end after one facet event (returned as non-delta samples) are drawn with
 // density pdf(); the longer ones are delta samples and count as absent mass here.
-constexpr int kChiSquareTests = 2 * 2 * 4;
+constexpr int kNormalMappingChiSquareTests = 2 * 2 * 4;
 TEST(MicrofacetNormalMapping, FirstEventSamplesFollowPdf) {
   const Bsdf<3> lambert{Lambertian<3>{Spectrum3(0.8f)}};
   const Bsdf<3> conductor{RoughConductor<3>{MicrofacetDistribution::isotropic(MicrofacetType::ggx, 0.3f),
                                             ConductorFresnel<3>::schlick(Spectrum3(0.9f))}};
-  const double alpha = test::sidak_alpha(0.01, kChiSquareTests);
+  const double alpha = test::sidak_alpha(test::kAlphaTotal, kNormalMappingChiSquareTests);
   unsigned long long seed = 5;
   for (const Bsdf<3>* facet : {&lambert, &conductor})
     for (const float tilt : {30.0f, 60.0f}) {
       const NormalMapMicrosurface surface = surface_tilted(tilt);
       const MicrofacetNormalMapped<3, Bsdf<3>> b(*facet, surface);
-      for (const Vec3f wo : {direction_at(0, 0), direction_at(50, 0), direction_at(50, 180), direction_at(75, 90)}) {
+      for (const Vec3f wo : {float_direction_at(0, 0), float_direction_at(50, 0), float_direction_at(50, 180), float_direction_at(75, 90)}) {
         Pcg32 rng(++seed, 3);
         const auto h = test::spherical_histogram(
             [&](Vec2f u, Vec3f& wi) {
@@ -158,7 +158,7 @@ TEST(MicrofacetNormalMapping, SamplesCarryEvalAndPdfAndTheBackSideMirrors) {
   const Bsdf<3> lambert{Lambertian<3>{Spectrum3(0.8f)}};
   const NormalMapMicrosurface surface = surface_tilted(50.0f);
   const MicrofacetNormalMapped<3, Bsdf<3>> b(lambert, surface);
-  const Vec3f wo = direction_at(40.0f, 30.0f);
+  const Vec3f wo = float_direction_at(40.0f, 30.0f);
   Pcg32 rng(9, 9);
   int first_events = 0;
   for (int i = 0; i < 200; ++i) {

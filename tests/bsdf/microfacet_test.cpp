@@ -7,24 +7,20 @@
 #include <string>
 #include <vector>
 
+#include "bsdf/bsdf_test_helpers.h"
 #include "bsdf/stretched_chi_square.h"
 
 namespace prism::bsdf {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // Overall false-alarm rate of this file's chi-square tests, split by Šidák's correction
-// over every histogram drawn below (counted in kChiSquareTests).
-constexpr double kAlphaTotal = 0.01;
-constexpr int kChiSquareTests = 11 + 22;
-constexpr long kSamples = 200'000;
+// over every histogram drawn below (counted in kMicrofacetChiSquareTests).
+constexpr int kMicrofacetChiSquareTests = 11 + 22;
+constexpr long kMicrofacetSamples = 200'000;
 
 Vec3f flip(const Vec3f& w) { return -w; }
 
-Vec3f direction_at(double theta_deg) {
-  const double t = theta_deg * kPi / 180.0;
-  return {static_cast<float>(std::sin(t)), 0.0f, static_cast<float>(std::cos(t))};
-}
+using test_helpers::direction_in_xz_plane;
 
 std::string describe(const MicrofacetDistribution& d) {
   const char* names[] = {"ggx", "beckmann", "blinn_phong"};
@@ -50,18 +46,18 @@ double integrate_hemisphere(float alpha, const G& g) {
   constexpr int kPsi = 2000, kPhi = 256;
   double sum = 0.0;
   for (int i = 0; i < kPsi; ++i) {
-    const double psi = (i + 0.5) / kPsi * (kPi / 2);
+    const double psi = (i + 0.5) / kPsi * (std::numbers::pi / 2);
     const double x = alpha * std::tan(psi);               // tan θ
     const double dx_dpsi = alpha / (std::cos(psi) * std::cos(psi));
     const double theta = std::atan(x), dtheta = dx_dpsi / (1.0 + x * x);
     for (int j = 0; j < kPhi; ++j) {
-      const double phi = (j + 0.5) / kPhi * 2.0 * kPi;
+      const double phi = (j + 0.5) / kPhi * 2.0 * std::numbers::pi;
       const Vec3f h(static_cast<float>(std::sin(theta) * std::cos(phi)),
                     static_cast<float>(std::sin(theta) * std::sin(phi)), static_cast<float>(std::cos(theta)));
       sum += g(h) * std::sin(theta) * dtheta;
     }
   }
-  return sum * (kPi / 2 / kPsi) * (2.0 * kPi / kPhi);
+  return sum * (std::numbers::pi / 2 / kPsi) * (2.0 * std::numbers::pi / kPhi);
 }
 
 TEST(Microfacet, NdfIsNormalisedOverProjectedArea) {
@@ -77,7 +73,7 @@ TEST(Microfacet, NdfIsNormalisedOverProjectedArea) {
 TEST(Microfacet, ProjectedAreaIdentityHolds) {
   for (const auto& d : all_distributions()) {
     for (double theta : {0.0, 45.0, 85.0}) {
-      const Vec3f wo = direction_at(theta);
+      const Vec3f wo = direction_in_xz_plane(theta);
       const double integral = integrate_hemisphere(std::min(d.alpha_x, d.alpha_y), [&](const Vec3f& h) {
         return double(d.G1(wo)) * std::max(0.0, double(dot(wo, h))) * d.D(h);
       });
@@ -100,7 +96,7 @@ TEST(Microfacet, ProjectedAreaIdentityHolds) {
 
 TEST(Microfacet, MaskingShadowingBounds) {
   for (const auto& d : all_distributions()) {
-    const Vec3f wo = direction_at(30.0), wi = direction_at(70.0);
+    const Vec3f wo = direction_in_xz_plane(30.0), wi = direction_in_xz_plane(70.0);
     EXPECT_LE(d.G2(wo, wi), std::min(d.G1(wo), d.G1(wi)) + 1e-6f);
     EXPECT_GE(d.G2(wo, wi), d.G1(wo) * d.G1(wi) - 1e-6f);  // correlation only helps
     EXPECT_NEAR(d.G1(Vec3f(0, 0, 1)), 1.0f, 1e-6f);
@@ -126,8 +122,8 @@ TEST(Microfacet, NdfSamplingMatchesDensity) {
           return true;
         },
         [&](const Vec3f& h) { return double(d.pdf_ndf(h)); }, Vec3f(0, 0, 1),
-        std::min(d.alpha_x, d.alpha_y), kSamples, ++seed);
-    EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << describe(d) << ": " << r.message;
+        std::min(d.alpha_x, d.alpha_y), kMicrofacetSamples, ++seed);
+    EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kMicrofacetChiSquareTests)) << describe(d) << ": " << r.message;
     RecordProperty("p_" + describe(d), std::to_string(r.p_value));
   }
 }
@@ -140,9 +136,9 @@ TEST(Microfacet, VisibleNormalSamplingMatchesDensity) {
   for (auto method : {MicrofacetSampling::visible_normals, MicrofacetSampling::spherical_caps}) {
     for (float a : {0.05f, 0.3f, 0.8f})
       for (double theta : {0.0, 45.0, 85.0})
-        cases.push_back({MicrofacetDistribution::isotropic(MicrofacetType::ggx, a, method), direction_at(theta)});
+        cases.push_back({MicrofacetDistribution::isotropic(MicrofacetType::ggx, a, method), direction_in_xz_plane(theta)});
     cases.push_back({{MicrofacetType::ggx, 0.1f, 0.5f, method}, normalize(Vec3f(0.5f, 0.6f, 0.3f))});
-    cases.push_back({MicrofacetDistribution::isotropic(MicrofacetType::ggx, 0.3f, method), flip(direction_at(60.0))});
+    cases.push_back({MicrofacetDistribution::isotropic(MicrofacetType::ggx, 0.3f, method), flip(direction_in_xz_plane(60.0))});
   }
   for (const auto& c : cases) {
     // Named copies, not structured bindings: clang 14 (the asan preset) cannot capture those.
@@ -154,13 +150,13 @@ TEST(Microfacet, VisibleNormalSamplingMatchesDensity) {
           return true;
         },
         [&](const Vec3f& h) { return double(d.pdf_microfacet_normal(wo, h)); }, Vec3f(0, 0, 1),
-        std::min(d.alpha_x, d.alpha_y), kSamples, ++seed, 20, 40,
+        std::min(d.alpha_x, d.alpha_y), kMicrofacetSamples, ++seed, 20, 40,
         // 64 Simpson intervals per bin: at grazing wo the density D_wo(h) ∝ max(0, wo·h) D(h)
         // has a crease along wo·h = 0 inside bins, where 8 intervals left the expected counts
         // inaccurate enough to fail (p 2e-8 for α 0.8 at 85° in the clang build, whose float
         // results differ from g++'s); with 64 every case passes in both builds.
         64);
-    EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests))
+    EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kMicrofacetChiSquareTests))
         << describe(d) << " method=" << int(d.sampling) << " wo.z=" << wo.z << ": " << r.message;
   }
 }

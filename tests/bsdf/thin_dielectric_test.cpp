@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "bsdf/bsdf_test_helpers.h"
 #include "prism/bsdf/bsdf.h"
 #include "prism/core/pcg32.h"
 
@@ -36,10 +37,7 @@ double slab_reflectance_series(double r) {
   return sum;
 }
 
-Vec3f direction_at(double theta_deg) {
-  const double t = theta_deg * std::numbers::pi / 180.0;
-  return {static_cast<float>(std::sin(t)), 0.0f, static_cast<float>(std::cos(t))};
-}
+using test_helpers::direction_in_xz_plane;
 
 using S4 = color::SampledSpectrum<4>;
 
@@ -68,7 +66,7 @@ TEST(ThinDielectric, SamplesMirrorAndStraightThroughAndConservesEnergy) {
   const Bsdf<4> bsdf{slab};
   EXPECT_TRUE(bsdf.is_specular());
   EXPECT_FALSE(bsdf.is_dispersive());
-  for (const Vec3f& wo : {direction_at(10), direction_at(60), direction_at(85), -direction_at(40)}) {
+  for (const Vec3f& wo : {direction_in_xz_plane(10), direction_in_xz_plane(60), direction_in_xz_plane(85), -direction_in_xz_plane(40)}) {
     const S4 r = slab.reflectance(wo.z);
     Pcg32 rng(7, 3);
     constexpr int kN = 200'000;
@@ -110,8 +108,8 @@ TEST(ThinDielectric, SamplesMirrorAndStraightThroughAndConservesEnergy) {
 
 TEST(ThinDielectric, IsADeltaLobeWithoutDensity) {
   const ThinDielectric<4> slab{S4(1.5f)};
-  EXPECT_EQ(slab.pdf(direction_at(20), -direction_at(20)), 0.0f);
-  EXPECT_TRUE(slab.eval(direction_at(20), -direction_at(20)).is_black());
+  EXPECT_EQ(slab.pdf(direction_in_xz_plane(20), -direction_in_xz_plane(20)), 0.0f);
+  EXPECT_TRUE(slab.eval(direction_in_xz_plane(20), -direction_in_xz_plane(20)).is_black());
   EXPECT_FALSE(slab.sample(Vec3f(1, 0, 0), 0.5f, Vec2f(0.5f, 0.5f)));  // grazing: no sample
 }
 

@@ -6,19 +6,17 @@
 #include <string>
 #include <vector>
 
+#include "support/published_values.h"
+
 namespace prism::color {
 namespace {
 
-// Same tolerance rules as color_space_test.cpp: half a unit of the last published digit,
-// or 1e-12 for exact properties and full-precision references.
-constexpr double kHalf7 = 0.5e-7;
-constexpr double kHalf10 = 0.5e-10;
-constexpr double kExact = 1e-12;
-
-void expect_matrix_near(const Mat3& actual, const double (&expected)[3][3], double tol) {
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) EXPECT_NEAR(actual(i, j), expected[i][j], tol) << "element " << i << "," << j;
-}
+// Tolerances (half a unit of the last published digit, or 1e-12 for exact properties) and
+// the matrix check: support/published_values.h.
+using test::expect_matrix_near;
+using test::kExact;
+using test::kHalf10;
+using test::kHalf7;
 
 // Lindbloom's reference whites (ASTM E308), as used in his adaptation tables.
 const Vec3d kLindbloomD65{0.95047, 1.0, 1.08883};

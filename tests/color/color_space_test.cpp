@@ -10,21 +10,17 @@
 
 #include <string>
 
+#include "support/published_values.h"
+
 namespace prism::color {
 namespace {
 
-// Tolerances. A value published to n decimals is matched to half a unit of its last
-// digit (our derivation is exact to ~1e-16, so all of that margin is the publication's
-// rounding). Values that are exact rationals or are properties that hold exactly in real
-// arithmetic are matched to 1e-12: a few dozen double roundings on O(1) numbers.
-constexpr double kHalf7 = 0.5e-7;
-constexpr double kHalf10 = 0.5e-10;
-constexpr double kExact = 1e-12;
-
-void expect_matrix_near(const Mat3& actual, const double (&expected)[3][3], double tol) {
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j) EXPECT_NEAR(actual(i, j), expected[i][j], tol) << "element " << i << "," << j;
-}
+// Tolerances (half a unit of the last published digit, or 1e-12 for exact properties) and
+// the matrix check: support/published_values.h.
+using test::expect_matrix_near;
+using test::kExact;
+using test::kHalf10;
+using test::kHalf7;
 
 constexpr Chromaticity kR709{0.64, 0.33}, kG709{0.30, 0.60}, kB709{0.15, 0.06};
 

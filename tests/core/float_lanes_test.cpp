@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "prism/core/vec.h"
+#include "support/same_bits.h"
 
 namespace prism {
 namespace {
@@ -38,7 +39,7 @@ namespace ops = lanes::avx2;
 PRISM_TARGET_REGION_END
 #endif
 
-bool same_bits(float a, float b) { return std::bit_cast<std::uint32_t>(a) == std::bit_cast<std::uint32_t>(b); }
+using test::same_bits;  // support/same_bits.h
 
 void expect_scalar_bits(const LaneResults& r, const std::vector<float>& xs, const std::vector<float>& ys,
                         const char* width) {

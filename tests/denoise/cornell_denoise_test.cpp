@@ -5,6 +5,7 @@
 #include "prism/denoise/denoiser.h"
 #include "prism/render/renderer.h"
 #include "prism/scene/builtin_scenes.h"
+#include "support/mean_of.h"
 
 namespace prism::denoise {
 namespace {
@@ -46,11 +47,7 @@ double relative_mse(const std::vector<float>& x, const std::vector<float>& ref) 
   return s / static_cast<double>(n);
 }
 
-double mean_of(const std::vector<float>& v) {
-  double s = 0.0;
-  for (float x : v) s += x;
-  return s / static_cast<double>(v.size());
-}
+using test::mean_of;  // support/mean_of.h
 
 TEST(DenoiserCornellBox, LowSppErrorDropsAndTheMeanHolds) {
   const Rendered reference = render_cornell(64, 512, 99);

@@ -12,6 +12,7 @@
 #include "prism/core/parallel.h"
 #include "prism/render/renderer.h"
 #include "prism/scene/builtin_scenes.h"
+#include "support/mean_of.h"
 
 namespace prism::denoise {
 namespace {
@@ -43,11 +44,7 @@ void add_noise(DenoiseBuffers& b, float relative_sigma, unsigned seed) {
   }
 }
 
-double mean_of(const std::vector<float>& v) {
-  double s = 0.0;
-  for (float x : v) s += x;
-  return s / static_cast<double>(v.size());
-}
+using test::mean_of;  // support/mean_of.h
 
 // Mean over rows of channel 0, per column.
 std::vector<double> column_profile(const std::vector<float>& rgb, int width, int height) {

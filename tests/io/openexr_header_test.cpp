@@ -14,12 +14,13 @@
 #include "prism/io/exr.h"
 #include "prism/io/openexr_header.h"
 #include "scene/loaders/loader_test_files.h"
+#include "support/exr_rec709.h"
 #include "support/scratch_folder.h"
 
 namespace prism {
 namespace {
 
-const ExrChromaticities kRec709{0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f};
+using test::kRec709;  // support/exr_rec709.h
 
 TEST(OpenExrHeader, TheIoReadersRefuseTheFuzzRegressionsBeforeOpenExrAllocates) {
   const std::filesystem::path data = std::filesystem::path(PRISM_SOURCE_DIR) / "tests/scene/loaders/data";

@@ -20,6 +20,7 @@
 #include "prism/render/checkpoint.h"
 #include "prism/render/renderer.h"
 #include "prism/scene/builtin_scenes.h"
+#include "support/exr_rec709.h"
 
 namespace prism {
 namespace {
@@ -67,7 +68,7 @@ ImageRgbF gradient(int w, int h, float scale) {
   return img;
 }
 
-const ExrChromaticities kRec709{0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f};
+using test::kRec709;  // support/exr_rec709.h
 
 TEST_F(WriteFaultsTest, ExrOverwriteOnFullDiskKeepsThePreviousImage) {
   const fs::path out = dir_ / "x.exr";

@@ -18,7 +18,6 @@
 namespace prism {
 namespace {
 
-constexpr float kPi = std::numbers::pi_v<float>;
 
 TEST(Anisotropy, AlphaAlongTheDirectionIsGltfsMixAndItsInverse) {
   // KHR_materials_anisotropy: α_t = mix(α, 1, a²).
@@ -37,11 +36,11 @@ TEST(Anisotropy, DirectionInTangentSpaceTurnsCounterClockwiseFromTheTangent) {
     EXPECT_NEAR(d.y, y, 1e-6f);
   };
   expect_direction(anisotropy_direction_in_tangent_space(0.0f, std::nullopt), 1, 0);
-  expect_direction(anisotropy_direction_in_tangent_space(kPi / 2, std::nullopt), 0, 1);
-  expect_direction(anisotropy_direction_in_tangent_space(kPi / 6, std::nullopt), std::cos(kPi / 6), 0.5f);
+  expect_direction(anisotropy_direction_in_tangent_space(std::numbers::pi_v<float> / 2, std::nullopt), 0, 1);
+  expect_direction(anisotropy_direction_in_tangent_space(std::numbers::pi_v<float> / 6, std::nullopt), std::cos(std::numbers::pi_v<float> / 6), 0.5f);
   // A texel's RG replaces (1, 0) before the turn: (0.5, 1) is +bitangent, turned by 90° −tangent.
   expect_direction(anisotropy_direction_in_tangent_space(0.0f, Vec2f(0.5f, 1.0f)), 0, 1);
-  expect_direction(anisotropy_direction_in_tangent_space(kPi / 2, Vec2f(0.5f, 1.0f)), -1, 0);
+  expect_direction(anisotropy_direction_in_tangent_space(std::numbers::pi_v<float> / 2, Vec2f(0.5f, 1.0f)), -1, 0);
 }
 
 // One triangle in the y = 0 plane, front face up (+y), with the corners given.
@@ -150,7 +149,7 @@ TEST(AnisotropyRender, HighlightStretchesAlongTheAnisotropyDirection) {
   const double isotropic = highlight_aspect(metal);
   metal.anisotropy = 0.9f;  // α 0.09 across, 0.83 along
   const double along_u = highlight_aspect(metal);
-  metal.anisotropy_rotation_rad = kPi / 2;
+  metal.anisotropy_rotation_rad = std::numbers::pi_v<float> / 2;
   const double along_v = highlight_aspect(metal);
   std::printf("highlight spread x/y: isotropic %.3f, along u %.3f, along v %.3f\n", isotropic, along_u, along_v);
   // Symmetric set-up: the isotropic highlight is round up to the pixel grid. Stretched, its

@@ -17,7 +17,6 @@
 namespace prism {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 TEST(BumpMapping, FlatHeightKeepsTheNormalAndSlopesTiltIt) {
   const Vec3f n(0, 1, 0), dpdu(2, 0, 0), dpdv(0, 0, 2);
@@ -66,10 +65,10 @@ double floor_red(const Vec3f& toward_light, int slope_axis, float rise_per_texel
 // The ramp's texels step by 1/255 (an 8-bit height map's step); this bump scale makes the
 // height rise by tan 30° per scene unit: 256 texels span the floor's 200 units.
 const float kRise = 1.0f / 255.0f;
-const float kScale30 = static_cast<float>(std::tan(kPi / 6.0) * 200.0 / 256.0 * 255.0);
+const float kScale30 = static_cast<float>(std::tan(std::numbers::pi / 6.0) * 200.0 / 256.0 * 255.0);
 
 Vec3f at_degrees(double degrees, const Vec3f& towards) {  // +y tilted towards a direction in the floor
-  const double r = degrees * kPi / 180.0;
+  const double r = degrees * std::numbers::pi / 180.0;
   return Vec3f(0, static_cast<float>(std::cos(r)), 0) + towards * static_cast<float>(std::sin(r));
 }
 
@@ -83,7 +82,7 @@ TEST(BumpMapping, LambertianFloorShowsTheCosineToTheBumpedNormal) {
   const double flat = floor_red(Vec3f(0, 1, 0), -1, 0.0f, 1.0f);
   ASSERT_GT(flat, 0.0);
   // Height rising along +x (u) at 30°: the surface faces 30° towards −x.
-  EXPECT_NEAR(floor_red(Vec3f(0, 1, 0), 0, kRise, kScale30) / flat, std::cos(kPi / 6.0), kRelative);
+  EXPECT_NEAR(floor_red(Vec3f(0, 1, 0), 0, kRise, kScale30) / flat, std::cos(std::numbers::pi / 6.0), kRelative);
   EXPECT_NEAR(floor_red(at_degrees(30, Vec3f(-1, 0, 0)), 0, kRise, kScale30) / flat, 1.0, kRelative);
   EXPECT_NEAR(floor_red(at_degrees(30, Vec3f(1, 0, 0)), 0, kRise, kScale30) / flat, 0.5, kRelative);
   // Rising along +z (v): it faces 30° towards −z.
@@ -92,7 +91,7 @@ TEST(BumpMapping, LambertianFloorShowsTheCosineToTheBumpedNormal) {
   // u running along −x: the height rises towards −x, the surface faces +x.
   EXPECT_NEAR(floor_red(at_degrees(30, Vec3f(1, 0, 0)), 0, kRise, kScale30, true) / flat, 1.0, kRelative);
   // Half the scale, half the slope: tan θ = tan 30° / 2.
-  const double half = std::atan(std::tan(kPi / 6.0) / 2.0);
+  const double half = std::atan(std::tan(std::numbers::pi / 6.0) / 2.0);
   EXPECT_NEAR(floor_red(Vec3f(0, 1, 0), 0, kRise, 0.5f * kScale30) / flat, std::cos(half), kRelative);
 }
 

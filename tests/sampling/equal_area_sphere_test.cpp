@@ -14,8 +14,7 @@
 namespace prism {
 namespace {
 
-constexpr double kAlphaTotal = 0.01;  // Šidák-corrected over this file's chi-square tests
-constexpr int kChiSquareTests = 2;
+constexpr int kEqualAreaChiSquareTests = 2;  // test::kAlphaTotal is Šidák-split over these
 
 TEST(EqualAreaSphere, DirectionToSquareAndBackIsTheIdentity) {
   // Float rounding only: sqrt, atan and sin/cos each err by an ulp or two, so 4e-6 is
@@ -85,7 +84,7 @@ TEST(EqualAreaSphere, UniformSquareGivesUniformSphere) {
       },
       [](const Vec3f&) { return 0.25 * std::numbers::inv_pi; }, 20, 40, 1'000'000, 19);
   const auto r = test::chi_square_test(h.observed, h.expected);
-  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+  EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kEqualAreaChiSquareTests)) << r.message;
 }
 
 TEST(EqualAreaSphere, UniformSphereGivesUniformSquare) {
@@ -101,7 +100,7 @@ TEST(EqualAreaSphere, UniformSphereGivesUniformSquare) {
     observed[static_cast<std::size_t>(y * kGrid + x)] += 1.0;
   }
   const auto r = test::chi_square_test(observed, expected);
-  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+  EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kEqualAreaChiSquareTests)) << r.message;
 }
 
 }  // namespace

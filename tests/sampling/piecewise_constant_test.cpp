@@ -16,8 +16,7 @@
 namespace prism {
 namespace {
 
-constexpr double kAlphaTotal = 0.01;
-constexpr int kChiSquareTests = 6;  // 1D continuous, 1D discrete, 2D, sphere, 2 cones
+constexpr int kPiecewiseChiSquareTests = 6;  // 1D continuous, 1D discrete, 2D, sphere, 2 cones
 constexpr long kSamples = 200'000;
 
 const std::vector<float> kF = {0.0f, 1.0f, 3.0f, 0.5f, 0.0f, 2.0f, 7.0f, 0.25f};
@@ -38,7 +37,7 @@ TEST(PiecewiseConstant, OneDimensionalContinuousMatchesPdf) {
   }
   for (std::size_t i = 0; i < observed.size(); ++i) expected[i] = kSamples * d.pmf(static_cast<int>(i / kSub)) / kSub;
   const auto r = test::chi_square_test(observed, expected);
-  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+  EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kPiecewiseChiSquareTests)) << r.message;
 }
 
 TEST(PiecewiseConstant, OneDimensionalDiscreteMatchesPmf) {
@@ -54,7 +53,7 @@ TEST(PiecewiseConstant, OneDimensionalDiscreteMatchesPmf) {
   }
   for (std::size_t i = 0; i < kF.size(); ++i) expected[i] = kSamples * d.pmf(static_cast<int>(i));
   const auto r = test::chi_square_test(observed, expected);
-  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+  EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kPiecewiseChiSquareTests)) << r.message;
 }
 
 // A guide table must find exactly the cells the binary search finds: for random u, for u
@@ -147,7 +146,7 @@ TEST(PiecewiseConstant, TwoDimensionalMatchesPdf) {
   }
   for (std::size_t i = 0; i < f.size(); ++i) expected[i] = kSamples * f[i] / total;
   const auto r = test::chi_square_test(observed, expected);
-  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+  EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kPiecewiseChiSquareTests)) << r.message;
   EXPECT_NEAR(d.pdf(Vec2f(0.01f, 0.01f)), f[0] / total * nu * nv, 1e-4);
 }
 
@@ -187,7 +186,7 @@ TEST(Warps, UniformSphereMatchesItsPdf) {
       },
       [](const Vec3f&) { return double(uniform_sphere_pdf()); }, 20, 40, kSamples, 7);
   const auto r = test::chi_square_test(h.observed, h.expected);
-  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+  EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kPiecewiseChiSquareTests)) << r.message;
 }
 
 // Cones of half-angle 60° and 0.27° (the Sun's angular radius). The density is uniform
@@ -216,7 +215,7 @@ TEST(Warps, UniformConeMatchesItsPdf) {
       observed[ic * kBins + ip] += 1;
     }
     const auto r = test::chi_square_test(observed, expected);
-    EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << deg << "°: " << r.message;
+    EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kPiecewiseChiSquareTests)) << deg << "°: " << r.message;
   }
 }
 

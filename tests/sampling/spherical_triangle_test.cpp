@@ -15,8 +15,7 @@
 namespace prism {
 namespace {
 
-constexpr double kAlphaTotal = 0.01;  // Šidák-corrected over this file's chi-square tests
-constexpr int kChiSquareTests = 4;
+constexpr int kSphericalTriangleChiSquareTests = 4;  // test::kAlphaTotal is Šidák-split over these
 
 TEST(SphericalTriangle, SolidAngleOfAnOctantIsHalfPi) {
   // The triangle with vertices on the three axes covers one eighth of the sphere: 4π/8.
@@ -93,7 +92,7 @@ TEST(SphericalTriangle, DirectionsAreUniformInSolidAngle) {
     observed[static_cast<std::size_t>(iy * kBins + ix)] += 1.0;
   }
   const auto r = test::chi_square_test(observed, expected);
-  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+  EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kSphericalTriangleChiSquareTests)) << r.message;
 }
 
 // The same directions binned on the plane z = 1 (a gnomonic chart), against 1/Ω integrated
@@ -138,7 +137,7 @@ TEST(SphericalTriangle, DirectionsMatchUniformDensityOnAPlane) {
           sum * (dx / kSub) * (dy / kSub) / t.solid_angle_sr * kSamples;
     }
   const auto r = test::chi_square_test(observed, expected);
-  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+  EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kSphericalTriangleChiSquareTests)) << r.message;
 }
 
 TEST(BilinearWarp, DensityIntegratesToOne) {
@@ -170,7 +169,7 @@ TEST(BilinearWarp, SamplesFollowTheBilinearDensity) {
         expected[static_cast<std::size_t>(iy * kBins + ix)] =
             bilinear_pdf({(ix + 0.5) / kBins, (iy + 0.5) / kBins}, w) * kSamples / (kBins * kBins);
     const auto r = test::chi_square_test(observed, expected);
-    EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+    EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kSphericalTriangleChiSquareTests)) << r.message;
   }
 }
 

@@ -15,8 +15,7 @@ namespace prism {
 namespace {
 
 // Overall false-alarm rate of this file's chi-square tests, split by Šidák's correction.
-constexpr double kAlphaTotal = 0.01;
-constexpr int kChiSquareTests = 2;
+constexpr int kWarpChiSquareTests = 2;
 
 TEST(Warps, ConcentricDiskStaysInDisk) {
   Pcg32 rng(1, 1);
@@ -76,7 +75,7 @@ TEST(Warps, CosineHemisphereMatchesItsPdf) {
       },
       [](const Vec3f& d) { return static_cast<double>(cosine_hemisphere_pdf(d.z)); }, 20, 40, 1'000'000, 42);
   const auto r = test::chi_square_test(h.observed, h.expected);
-  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+  EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kWarpChiSquareTests)) << r.message;
 }
 
 // Uniform triangle sampling: histogram the barycentric (b1, b2) over a grid on the unit
@@ -111,7 +110,7 @@ TEST(Warps, UniformTriangleIsUniform) {
   // Cells cut by the diagonal carry a midpoint-rule error of O(1/kSub²) relative mass,
   // far below the statistical noise of ~1000 samples per cell.
   const auto r = test::chi_square_test(observed, expected);
-  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+  EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kWarpChiSquareTests)) << r.message;
 }
 
 // Heitz (2019): the half u.x < u.y is sheared onto b2 > b1 by (u.x/2, u.y − u.x/2), the

@@ -15,7 +15,6 @@
 namespace prism {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 TextureImage constant_map(int width, int height, float value) {
   TextureImage t;
@@ -44,15 +43,15 @@ TEST(EnvironmentIlluminance, UniformSkyGivesPiTimesItsLuminanceOnAnySurface) {
   // (exactly −4/N²), so N = 64 is within 1.5e-3 wherever the surface faces.
   const TextureImage octahedral = constant_map(64, 64, 2.0f);
   for (const Vec3f& n : {Vec3f(0, 0, 1), Vec3f(0, 0, -1), Vec3f(1, 0, 0), normalize(Vec3f(1, -2, 3))})
-    EXPECT_NEAR(environment_illuminance_lux(octahedral, EnvironmentMapping::equal_area_octahedral, n), 2.0 * kPi,
-                1.5e-3 * 2.0 * kPi)
+    EXPECT_NEAR(environment_illuminance_lux(octahedral, EnvironmentMapping::equal_area_octahedral, n), 2.0 * std::numbers::pi,
+                1.5e-3 * 2.0 * std::numbers::pi)
         << n.x << " " << n.y << " " << n.z;
   // Equirectangular, 128 × 64 (texels weighted by their sin θ solid angle): +4e-4 measured
   // facing +y at 128 × 64 (+1.6e-3 at 64 × 32), so 1e-3.
   const TextureImage latlong = constant_map(128, 64, 2.0f);
   for (const Vec3f& n : {Vec3f(0, 1, 0), Vec3f(0, -1, 0), Vec3f(0, 0, 1)})
-    EXPECT_NEAR(environment_illuminance_lux(latlong, EnvironmentMapping::equirectangular, n), 2.0 * kPi,
-                1e-3 * 2.0 * kPi)
+    EXPECT_NEAR(environment_illuminance_lux(latlong, EnvironmentMapping::equirectangular, n), 2.0 * std::numbers::pi,
+                1e-3 * 2.0 * std::numbers::pi)
         << n.x << " " << n.y << " " << n.z;
 }
 
@@ -64,9 +63,9 @@ constexpr int kHalfMapSize = 65;
 TEST(EnvironmentIlluminance, OnlyTheHemisphereTheSurfaceFacesCounts) {
   const TextureImage half = upper_half_map(kHalfMapSize, 1.0f);
   const auto lux = [&](Vec3f n) { return environment_illuminance_lux(half, EnvironmentMapping::equal_area_octahedral, n); };
-  EXPECT_NEAR(lux(Vec3f(0, 0, 1)), kPi, 1.5e-3 * kPi);
+  EXPECT_NEAR(lux(Vec3f(0, 0, 1)), std::numbers::pi, 1.5e-3 * std::numbers::pi);
   EXPECT_EQ(lux(Vec3f(0, 0, -1)), 0.0);  // every lit texel is behind the surface
-  EXPECT_NEAR(lux(Vec3f(1, 0, 0)), kPi / 2.0, 1.5e-3 * kPi);  // edge-on: a quarter of the sphere
+  EXPECT_NEAR(lux(Vec3f(1, 0, 0)), std::numbers::pi / 2.0, 1.5e-3 * std::numbers::pi);  // edge-on: a quarter of the sphere
 }
 
 TEST(EnvironmentIlluminance, LuminanceWeightsTheChannelsAsTheTexelsSpace) {
@@ -91,8 +90,8 @@ TEST(EnvironmentIlluminance, LuminanceWeightsTheChannelsAsTheTexelsSpace) {
   grey.width = grey.height = 64;
   grey.channels = 1;
   grey.texels.assign(64 * 64, 1.0f);
-  EXPECT_NEAR(environment_illuminance_lux(grey, EnvironmentMapping::equal_area_octahedral, Vec3f(0, 0, 1)), kPi,
-              1.5e-3 * kPi);
+  EXPECT_NEAR(environment_illuminance_lux(grey, EnvironmentMapping::equal_area_octahedral, Vec3f(0, 0, 1)), std::numbers::pi,
+              1.5e-3 * std::numbers::pi);
 }
 
 }  // namespace

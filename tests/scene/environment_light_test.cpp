@@ -24,19 +24,17 @@
 namespace prism {
 namespace {
 
-constexpr double kAlphaTotal = 0.01;  // Šidák-corrected over this file's chi-square tests
-constexpr int kChiSquareTests = 1;
-constexpr int kSize = 16;
-constexpr float kPi = std::numbers::pi_v<float>;
+constexpr int kEnvironmentChiSquareTests = 1;  // test::kAlphaTotal is Šidák-split over these
+constexpr int kEnvironmentMapSizePx = 16;
 
 // A square map with uneven colours, one black row and one very bright texel.
 TextureImage uneven_map() {
   TextureImage t;
   t.name = "uneven";
-  t.width = t.height = kSize;
+  t.width = t.height = kEnvironmentMapSizePx;
   t.channels = 3;
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
+  for (int y = 0; y < kEnvironmentMapSizePx; ++y)
+    for (int x = 0; x < kEnvironmentMapSizePx; ++x) {
       const float base = y == 3 ? 0.0f : 0.2f + static_cast<float>((7 * x + 3 * y) % 11) / 10.0f;
       const float boost = (x == 12 && y == 9) ? 40.0f : 1.0f;
       t.texels.insert(t.texels.end(), {base * boost, 0.5f * base * boost, (1.0f - 0.04f * x) * base * boost});
@@ -78,7 +76,7 @@ double texel_luminance(const TextureImage& t, int x, int y) {
 }
 
 Vec3f texel_centre_direction(int x, int y) {
-  return map_to_world_direction(equal_area_square_to_sphere(Vec2f((x + 0.5f) / kSize, (y + 0.5f) / kSize)));
+  return map_to_world_direction(equal_area_square_to_sphere(Vec2f((x + 0.5f) / kEnvironmentMapSizePx, (y + 0.5f) / kEnvironmentMapSizePx)));
 }
 
 // The texels' luminance (given by `luminance(x, y)`) averaged over each texel as the
@@ -86,15 +84,15 @@ Vec3f texel_centre_direction(int x, int y) {
 template <class Luminance>
 std::pair<std::vector<float>, double> filtered_texel_means(Luminance luminance) {
   std::vector<float> values;
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) values.push_back(static_cast<float>(luminance(x, y)));
+  for (int y = 0; y < kEnvironmentMapSizePx; ++y)
+    for (int x = 0; x < kEnvironmentMapSizePx; ++x) values.push_back(static_cast<float>(luminance(x, y)));
   std::vector<float> means;
   double mean = 0.0;
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
+  for (int y = 0; y < kEnvironmentMapSizePx; ++y)
+    for (int x = 0; x < kEnvironmentMapSizePx; ++x) {
       means.push_back(static_cast<float>(
-          environment_texel_mean(values, EnvironmentMapping::equal_area_octahedral, x, y, kSize, kSize)));
-      mean += means.back() / (kSize * kSize);
+          environment_texel_mean(values, EnvironmentMapping::equal_area_octahedral, x, y, kEnvironmentMapSizePx, kEnvironmentMapSizePx)));
+      mean += means.back() / (kEnvironmentMapSizePx * kEnvironmentMapSizePx);
     }
   return {means, mean};
 }
@@ -105,19 +103,19 @@ TEST(EnvironmentLight, OctahedralDensityIsLuminanceOverMeanOver4Pi) {
   ASSERT_EQ(lights.light_count(), 1u);
   const TextureImage& t = scene.textures[0];
   const auto [texel_means, mean] = filtered_texel_means([&](int x, int y) { return texel_luminance(t, x, y); });
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
+  for (int y = 0; y < kEnvironmentMapSizePx; ++y)
+    for (int x = 0; x < kEnvironmentMapSizePx; ++x) {
       const auto hits = lights.escaped(texel_centre_direction(x, y));
       ASSERT_EQ(hits.size(), 1u);
       // p_ω = p_uv / 4π with p_uv = the texel's mean luminance / the map's: float rounding
       // of the CDF only.
-      const double expected = texel_means[static_cast<std::size_t>(y * kSize + x)] / mean / (4.0 * std::numbers::pi);
+      const double expected = texel_means[static_cast<std::size_t>(y * kEnvironmentMapSizePx + x)] / mean / (4.0 * std::numbers::pi);
       EXPECT_NEAR(hits[0].pdf, expected, 1e-5 * expected + 1e-9) << x << " " << y;
       // At a texel's centre the radiance is the texel's, times the scale, in the light's
       // frame. The centre's direction maps back to uv within ~1e-6 (float trigonometry),
       // i.e. ~2e-5 texel, which blends in that much of a neighbour differing by up to
       // 3 × 40 × 1.2: 1e-3 absolute.
-      const float* p = &t.texels[(static_cast<std::size_t>(y) * kSize + x) * 3];
+      const float* p = &t.texels[(static_cast<std::size_t>(y) * kEnvironmentMapSizePx + x) * 3];
       EXPECT_NEAR(hits[0].rgb.x, 3.0f * p[0], 1e-3f);
       EXPECT_NEAR(hits[0].rgb.z, 3.0f * p[2], 1e-3f);
     }
@@ -130,15 +128,15 @@ TEST(EnvironmentLight, DensityIsPositiveWhereverTheFilteredRadianceIs) {
   const LightSampler lights(scene, scene_bounds(scene));
   int positive_on_black_texels = 0;
   for (int y = 2; y <= 4; ++y)
-    for (int x = 0; x < kSize; ++x)
+    for (int x = 0; x < kEnvironmentMapSizePx; ++x)
       for (float dy : {-0.45f, 0.0f, 0.45f}) {
-        const Vec2f uv((x + 0.5f) / kSize, (y + 0.5f + dy) / kSize);
+        const Vec2f uv((x + 0.5f) / kEnvironmentMapSizePx, (y + 0.5f + dy) / kEnvironmentMapSizePx);
         const auto hits = lights.escaped(map_to_world_direction(equal_area_square_to_sphere(uv)));
         ASSERT_EQ(hits.size(), 1u);
         if (hits[0].rgb.y > 0.0f) EXPECT_GT(hits[0].pdf, 0.0f) << x << " " << y << " " << dy;
         if (y == 3 && hits[0].rgb.y > 0.0f) ++positive_on_black_texels;
       }
-  EXPECT_GT(positive_on_black_texels, kSize);  // the filter does reach into the black row
+  EXPECT_GT(positive_on_black_texels, kEnvironmentMapSizePx);  // the filter does reach into the black row
 }
 
 // The density follows the luminance of the space the texels are in: an ACEScg map (an
@@ -156,12 +154,12 @@ TEST(EnvironmentLight, DensityWeightsTexelsByTheLuminanceOfTheirSpace) {
     return dot(ap1_y, Vec3d(p[0], p[1], p[2]));
   };
   const auto [texel_means, mean] = filtered_texel_means(luminance);
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
+  for (int y = 0; y < kEnvironmentMapSizePx; ++y)
+    for (int x = 0; x < kEnvironmentMapSizePx; ++x) {
       const auto hits = lights.escaped(texel_centre_direction(x, y));
       ASSERT_EQ(hits.size(), 1u);
       // As above: float rounding of the CDF, and the 10 digits of the published matrix.
-      const double expected = texel_means[static_cast<std::size_t>(y * kSize + x)] / mean / (4.0 * std::numbers::pi);
+      const double expected = texel_means[static_cast<std::size_t>(y * kEnvironmentMapSizePx + x)] / mean / (4.0 * std::numbers::pi);
       EXPECT_NEAR(hits[0].pdf, expected, 1e-5 * expected + 1e-9) << x << " " << y;
     }
 }
@@ -174,11 +172,11 @@ TEST(EnvironmentLight, OctahedralSamplesFollowTheirDensity) {
   const Scene scene = octahedral_sky_scene();
   const LightSampler lights(scene, scene_bounds(scene));
   constexpr long kSamples = 1'000'000;
-  const double texel_solid_angle = 4.0 * std::numbers::pi / (kSize * kSize);
-  std::vector<double> observed(kSize * kSize, 0.0), expected(kSize * kSize, 0.0);
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x)
-      expected[static_cast<std::size_t>(y * kSize + x)] =
+  const double texel_solid_angle = 4.0 * std::numbers::pi / (kEnvironmentMapSizePx * kEnvironmentMapSizePx);
+  std::vector<double> observed(kEnvironmentMapSizePx * kEnvironmentMapSizePx, 0.0), expected(kEnvironmentMapSizePx * kEnvironmentMapSizePx, 0.0);
+  for (int y = 0; y < kEnvironmentMapSizePx; ++y)
+    for (int x = 0; x < kEnvironmentMapSizePx; ++x)
+      expected[static_cast<std::size_t>(y * kEnvironmentMapSizePx + x)] =
           kSamples * lights.escaped(texel_centre_direction(x, y))[0].pdf * texel_solid_angle;
   Pcg32 rng(31, 37);
   const Vec3f reference(278.0f, 200.0f, 279.0f);
@@ -193,23 +191,23 @@ TEST(EnvironmentLight, OctahedralSamplesFollowTheirDensity) {
       ASSERT_NEAR(s->pdf, pdf, 1e-4f * pdf);
     }
     const Vec2f uv = equal_area_sphere_to_square(world_to_map(s->wi));
-    const int x = std::clamp(static_cast<int>(uv.x * kSize), 0, kSize - 1);
-    const int y = std::clamp(static_cast<int>(uv.y * kSize), 0, kSize - 1);
-    observed[static_cast<std::size_t>(y * kSize + x)] += 1.0;
+    const int x = std::clamp(static_cast<int>(uv.x * kEnvironmentMapSizePx), 0, kEnvironmentMapSizePx - 1);
+    const int y = std::clamp(static_cast<int>(uv.y * kEnvironmentMapSizePx), 0, kEnvironmentMapSizePx - 1);
+    observed[static_cast<std::size_t>(y * kEnvironmentMapSizePx + x)] += 1.0;
   }
   double total = 0.0;
   for (double e : expected) total += e;
   EXPECT_NEAR(total, double(kSamples), 1e-4 * kSamples);  // the density integrates to 1
   const auto r = test::chi_square_test(observed, expected);
-  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+  EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kEnvironmentChiSquareTests)) << r.message;
 }
 
 TEST(EnvironmentLight, MappingsConvertImageDensityToSolidAngle) {
   // Equirectangular: dω = sin θ dθ dφ = 2π² sin θ du dv; octahedral: 4π.
   EXPECT_FLOAT_EQ(environment_solid_angle_per_uv_area(EnvironmentMapping::equal_area_octahedral, {0.1f, 0.7f}),
-                  4.0f * kPi);
+                  4.0f * std::numbers::pi_v<float>);
   EXPECT_FLOAT_EQ(environment_solid_angle_per_uv_area(EnvironmentMapping::equirectangular, {0.3f, 0.5f}),
-                  2.0f * kPi * kPi);
+                  2.0f * std::numbers::pi_v<float> * std::numbers::pi_v<float>);
   // Both maps invert themselves.
   for (EnvironmentMapping m : {EnvironmentMapping::equirectangular, EnvironmentMapping::equal_area_octahedral}) {
     const Vec3f d = normalize(Vec3f(0.3f, -0.5f, 0.8f));

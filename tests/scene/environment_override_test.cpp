@@ -15,12 +15,13 @@
 #include "prism/scene/flatten_instances.h"
 #include "prism/scene/light_sampler.h"
 #include "prism/scene/loaders/sphere_mesh.h"
+#include "support/exr_rec709.h"
 #include "support/film_statistics.h"
 
 namespace prism {
 namespace {
 
-constexpr ExrChromaticities kRec709{0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f};
+using test::kRec709;  // support/exr_rec709.h
 
 // A unit sphere of flat facets (a convex polyhedron: every point sees only the sky) with a
 // grey Lambertian material, and a camera on −z looking at it.

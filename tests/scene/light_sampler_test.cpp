@@ -18,8 +18,7 @@
 namespace prism {
 namespace {
 
-constexpr double kAlphaTotal = 0.01;  // Šidák-corrected over this file's chi-square tests
-constexpr int kChiSquareTests = 5;
+constexpr int kLightSamplerChiSquareTests = 5;  // test::kAlphaTotal is Šidák-split over these
 
 TEST(LightSampler, AreaLightPointsAreUniformWithSolidAngleDensity) {
   // Cornell light: a 130 × 105 mm rectangle at constant y, seen from the floor below it.
@@ -48,7 +47,7 @@ TEST(LightSampler, AreaLightPointsAreUniformWithSolidAngleDensity) {
       observed[static_cast<std::size_t>(iz * kGrid + ix)] += 1.0;
     }
     const auto r = test::chi_square_test(observed, expected);
-    EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << "reuse " << reuse << ": " << r.message;
+    EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kLightSamplerChiSquareTests)) << "reuse " << reuse << ": " << r.message;
   }
 }
 
@@ -192,7 +191,7 @@ TEST(LightSampler, SunDiscDirectionsAreUniformInTheCone) {
     observed[static_cast<std::size_t>(a * kGrid + b)] += 1.0;
   }
   const auto r = test::chi_square_test(observed, expected);
-  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+  EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kLightSamplerChiSquareTests)) << r.message;
   // Escaping rays inside the disc see radiance E / (π sin²θ) with the sampling density.
   const auto hits = lights.escaped(-sun.direction);
   ASSERT_EQ(hits.size(), 1u);
@@ -227,7 +226,7 @@ TEST(LightSampler, SelectionIsProportionalToPower) {
   }
   const std::vector<double> expected = {kSamples * (1.0 - p_point), kSamples * p_point};
   const auto r = test::chi_square_test(observed, expected);
-  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+  EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kLightSamplerChiSquareTests)) << r.message;
 }
 
 // A textured emitter's triangles are chosen in proportion to their power estimate: the
@@ -267,7 +266,7 @@ TEST(LightSampler, TexturedEmitterSelectionHasTheTextureMeanFloor) {
   }
   const std::vector<double> expected = {kSamples * (1.0 - p_dark), kSamples * p_dark};
   const auto r = test::chi_square_test(observed, expected);
-  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+  EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kLightSamplerChiSquareTests)) << r.message;
 }
 
 // Four emissive triangles in the plane y = 0 with small uv footprints in different parts of

@@ -16,8 +16,7 @@
 namespace prism {
 namespace {
 
-constexpr double kAlphaTotal = 0.01;  // Šidák-corrected over this file's chi-square tests
-constexpr int kChiSquareTests = 7;
+constexpr int kTriangleLightChiSquareTests = 7;  // test::kAlphaTotal is Šidák-split over these
 
 TriangleLight make_light(const Vec3f& p0, const Vec3f& p1, const Vec3f& p2, bool two_sided = false) {
   TriangleLight l;
@@ -94,7 +93,7 @@ void expect_samples_follow_pdf(const TriangleLight& l, TriangleLightSampling str
       expected[static_cast<std::size_t>(is * kBins + it)] =
           kSamples * cell_mass(l, strategy, rx, double(is) / kBins, double(it) / kBins, 1.0 / kBins, 1.0 / kBins, 8);
   const auto r = test::chi_square_test(observed, expected);
-  EXPECT_GT(r.p_value, test::sidak_alpha(kAlphaTotal, kChiSquareTests)) << r.message;
+  EXPECT_GT(r.p_value, test::sidak_alpha(test::kAlphaTotal, kTriangleLightChiSquareTests)) << r.message;
 }
 
 // Below the light on the floor, beside it high on a wall, just under the ceiling next to it

@@ -12,6 +12,11 @@
 
 namespace prism::test {
 
+// Overall false-alarm rate that every chi-square test file splits over its own histograms
+// (Šidák): one figure for all sampling tests, declared once so that the test files can
+// share a translation unit (unity builds).
+inline constexpr double kAlphaTotal = 0.01;
+
 struct ChiSquareResult {
   double statistic = 0.0;
   int degrees_of_freedom = 0;

@@ -20,7 +20,6 @@
 namespace prism::loaders {
 namespace {
 
-constexpr float kPi = std::numbers::pi_v<float>;
 
 TEST(AnisotropyFormats, GltfExtensionGivesStrengthRotationAndTexture) {
   const Scene scene = test::one_triangle_gltf(
@@ -37,7 +36,7 @@ TEST(AnisotropyFormats, GltfExtensionGivesStrengthRotationAndTexture) {
   const Scene turned = test::one_triangle_gltf(
       R"({"extensions": {"KHR_materials_anisotropy": {"anisotropyStrength": 0.5, "anisotropyRotation": 7.0}}})",
       "KHR_materials_anisotropy");
-  EXPECT_NEAR(turned.materials[0].anisotropy_rotation_rad, 7.0f - 2.0f * kPi, 1e-6f);
+  EXPECT_NEAR(turned.materials[0].anisotropy_rotation_rad, 7.0f - 2.0f * std::numbers::pi_v<float>, 1e-6f);
   const std::string message = test::error_of<SceneError>([] {
     test::one_triangle_gltf(R"({"extensions": {"KHR_materials_anisotropy": {"anisotropyStrength": 1.5}}})",
                             "KHR_materials_anisotropy");
@@ -65,7 +64,7 @@ TEST(AnisotropyFormats, PbrtUroughnessAndVroughnessBecomeStrengthAndRotation) {
   const Scene along_v = material("\"float uroughness\" 0.1 \"float vroughness\" 0.4");
   const Material& v = along_v.materials[along_v.meshes[0].material];
   EXPECT_NEAR(v.roughness * v.roughness, 0.1f, 1e-6f);
-  EXPECT_NEAR(v.anisotropy_rotation_rad, kPi / 2, 1e-6f);
+  EXPECT_NEAR(v.anisotropy_rotation_rad, std::numbers::pi_v<float> / 2, 1e-6f);
   // A coat stays isotropic: its roughness is the mean, and the file is told so.
   const std::string coated_text =
       "WorldBegin\nMaterial \"coateddiffuse\" \"float uroughness\" 0.1 \"float vroughness\" 0.3\n"
@@ -105,15 +104,15 @@ TEST(AnisotropyFormats, JsonAndGlbWritersKeepStrengthAndRotation) {
 
 TEST(AnisotropyFormats, PbrtWriterSaysUvAlignedAnisotropyAndRefusesOtherAngles) {
   test::ScratchFolder dir;
-  for (const float rotation : {0.0f, kPi / 2, -kPi / 2, kPi}) {
+  for (const float rotation : {0.0f, std::numbers::pi_v<float> / 2, -std::numbers::pi_v<float> / 2, std::numbers::pi_v<float>}) {
     for (const MaterialType type : {MaterialType::conductor, MaterialType::dielectric}) {
       const Scene back = test::write_and_reload(anisotropic_scene(type, rotation), dir / "scene.pbrt");
       const Material& m = back.materials[back.meshes[0].material];
       EXPECT_NEAR(m.roughness, 0.3f, 1e-5f) << rotation;
       EXPECT_NEAR(m.anisotropy, 0.7f, 1e-5f) << rotation;
       // Along u (0, π) or along v (±π/2): the direction is the same line either way.
-      const bool along_v = std::abs(std::abs(rotation) - kPi / 2) < 1e-3f;
-      EXPECT_NEAR(m.anisotropy_rotation_rad, along_v ? kPi / 2 : 0.0f, 1e-6f) << rotation;
+      const bool along_v = std::abs(std::abs(rotation) - std::numbers::pi_v<float> / 2) < 1e-3f;
+      EXPECT_NEAR(m.anisotropy_rotation_rad, along_v ? std::numbers::pi_v<float> / 2 : 0.0f, 1e-6f) << rotation;
     }
   }
   const std::string message = test::error_of<UsageError>([&] {

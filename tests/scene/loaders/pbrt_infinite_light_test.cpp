@@ -21,12 +21,13 @@
 #include "prism/scene/flatten_instances.h"
 #include "prism/scene/light_sampler.h"
 #include "prism/scene/loaders/pbrt_scene.h"
+#include "support/exr_rec709.h"
 #include "support/film_statistics.h"
 
 namespace prism::loaders {
 namespace {
 
-constexpr ExrChromaticities kRec709{0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f};
+using test::kRec709;  // support/exr_rec709.h
 constexpr int kSize = 32;
 
 // 1 where the texel centre's direction is in the octant x, y, z > 0, i.e. the triangle

@@ -12,11 +12,12 @@
 #include "prism/core/error.h"
 #include "prism/io/exr.h"
 #include "prism/io/openexr_header.h"
-#include "prism/scene/texture.h"
 #include "prism/io/png.h"
 #include "prism/scene/loaders/texture_cache.h"
+#include "prism/scene/texture.h"
 #include "prism/scene/texture_file.h"
 #include "scene/loaders/loader_test_files.h"
+#include "support/exr_rec709.h"
 #include "support/exr_test_files.h"
 
 namespace prism {
@@ -24,7 +25,7 @@ namespace {
 
 using test::error_of;
 
-constexpr ExrChromaticities kRec709{0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f};
+using test::kRec709;  // support/exr_rec709.h
 
 TEST(TextureFile, PngDecodesSrgbColourAndLinearAlpha) {
   test::ScratchFolder dir;

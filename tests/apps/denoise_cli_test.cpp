@@ -22,19 +22,19 @@ namespace fs = std::filesystem;
 
 class DenoiseCli : public test::CliTest {};
 
-std::set<std::string> channel_names(const std::string& file) {
+std::set<std::string> exr_channel_names(const std::string& file) {
   Imf::InputFile in(file.c_str());
   std::set<std::string> names;
   for (auto it = in.header().channels().begin(); it != in.header().channels().end(); ++it) names.insert(it.name());
   return names;
 }
 
-const std::string kRender = "render cornell-box --width 32 --height 24 --seed 4 --spp 8 ";
+const std::string kDenoiseRender = "render cornell-box --width 32 --height 24 --seed 4 --spp 8 ";
 
 TEST_F(DenoiseCli, RenderWritesDenoisedBeautyAndNoisyLayer) {
-  ASSERT_EQ(run(kRender + "--denoise -o " + path("d.exr") + " -o " + path("d.png")), 0) << log();
-  ASSERT_EQ(run(kRender + "--aov albedo,normal,depth,variance -o " + path("n.exr")), 0) << log();
-  EXPECT_EQ(channel_names(path("d.exr")),
+  ASSERT_EQ(run(kDenoiseRender + "--denoise -o " + path("d.exr") + " -o " + path("d.png")), 0) << log();
+  ASSERT_EQ(run(kDenoiseRender + "--aov albedo,normal,depth,variance -o " + path("n.exr")), 0) << log();
+  EXPECT_EQ(exr_channel_names(path("d.exr")),
             (std::set<std::string>{"R", "G", "B", "noisy.R", "noisy.G", "noisy.B", "albedo.R", "albedo.G", "albedo.B",
                                    "N.x", "N.y", "N.z", "Z", "Z.coverage", "variance.R", "variance.G",
                                    "variance.B"}));
@@ -55,7 +55,7 @@ TEST_F(DenoiseCli, RenderWritesDenoisedBeautyAndNoisyLayer) {
 TEST_F(DenoiseCli, ReadsPbrtV4LayerNames) {
   // A file with pbrt-v4 GBufferFilm's names: Albedo.*, Ns.*, P.* (camera-space position)
   // and Variance.* (the samples' variance, with samplesPerPixel).
-  ASSERT_EQ(run(kRender + "--aov albedo,normal,depth,variance -o " + path("n.exr")), 0) << log();
+  ASSERT_EQ(run(kDenoiseRender + "--aov albedo,normal,depth,variance -o " + path("n.exr")), 0) << log();
   const ExrFile prism_file = read_exr(path("n.exr"));
   const auto albedo = *read_exr_channels(path("n.exr"), {"albedo.R", "albedo.G", "albedo.B"});
   const auto normal = *read_exr_channels(path("n.exr"), {"N.x", "N.y", "N.z"});
@@ -80,7 +80,7 @@ TEST_F(DenoiseCli, ReadsPbrtV4LayerNames) {
 }
 
 TEST_F(DenoiseCli, RefusesFileWithoutGuides) {
-  ASSERT_EQ(run(kRender + "--aov albedo,normal -o " + path("partial.exr")), 0) << log();
+  ASSERT_EQ(run(kDenoiseRender + "--aov albedo,normal -o " + path("partial.exr")), 0) << log();
   EXPECT_EQ(run("denoise " + path("partial.exr") + " -o " + path("out.exr")), 1);
   const std::string message = log();
   EXPECT_EQ(std::count(message.begin(), message.end(), '\n'), 1) << message;

@@ -39,8 +39,8 @@ Estimate sheen_albedo_by_cosine_sampling(float r, const Vec3f& wo, long n, unsig
 // to 80° (estimates' σ ≤ 0.002) and 0.011 at 88°, where E climbs fastest (σ there up to
 // 0.011, so mostly the estimate's own noise). Bounds: 4σ plus about 3 × those, also used by
 // the furnaces.
-constexpr double kTableError = 0.006, kTableErrorGrazing = 0.04;
-double table_error(double theta_deg) { return theta_deg > 80.0 ? kTableErrorGrazing : kTableError; }
+constexpr double kSheenTableError = 0.006, kSheenTableErrorGrazing = 0.04;
+double sheen_table_error(double theta_deg) { return theta_deg > 80.0 ? kSheenTableErrorGrazing : kSheenTableError; }
 
 TEST(Sheen, TabulatedAlbedoMatchesIndependentEstimate) {
   unsigned long long seed = 1;
@@ -49,7 +49,7 @@ TEST(Sheen, TabulatedAlbedoMatchesIndependentEstimate) {
       const Vec3f wo = direction_at(theta, 25.0);
       const Estimate e = sheen_albedo_by_cosine_sampling(r, wo, 400'000, ++seed);
       const double table = sheen_directional_albedo(wo.z, r);
-      EXPECT_NEAR(table, e.mean, 4.0 * e.stderr_ + table_error(theta)) << "r=" << r << " theta=" << theta;
+      EXPECT_NEAR(table, e.mean, 4.0 * e.stderr_ + sheen_table_error(theta)) << "r=" << r << " theta=" << theta;
       std::printf("sheen albedo r=%.2f theta=%4.1f: table %.5f, estimate %.5f ± %.5f\n", r, theta, table, e.mean,
                   e.stderr_);
     }
@@ -76,7 +76,7 @@ TEST(Sheen, WhiteFurnaceOverWhiteLambertIsOne) {
       b.sheen = Sheen<3>::make(S3(1.0f), r);
       const Vec3f wo = direction_at(theta, 70.0);
       const Estimate e = albedo_by_bsdf_sampling(b, wo, 0, 200'000, ++seed);
-      EXPECT_NEAR(e.mean, 1.0, 4.0 * e.stderr_ + table_error(theta)) << "r=" << r << " theta=" << theta;
+      EXPECT_NEAR(e.mean, 1.0, 4.0 * e.stderr_ + sheen_table_error(theta)) << "r=" << r << " theta=" << theta;
     }
 }
 
@@ -95,7 +95,7 @@ TEST(Sheen, EachChannelKeepsWhatTheSheenDoesNotReflect) {
       for (int ch = 0; ch < 3; ++ch) {
         const Estimate e = albedo_by_bsdf_sampling(b, wo, ch, 200'000, ++seed);
         const double expected = c[ch] * e_hat + (1.0 - c[ch] * e_hat) * rho[ch];
-        EXPECT_NEAR(e.mean, expected, 4.0 * e.stderr_ + c[ch] * table_error(theta) + 1e-6)
+        EXPECT_NEAR(e.mean, expected, 4.0 * e.stderr_ + c[ch] * sheen_table_error(theta) + 1e-6)
             << "r=" << r << " theta=" << theta << " channel " << ch;
       }
     }

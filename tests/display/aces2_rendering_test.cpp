@@ -26,7 +26,7 @@ namespace {
 std::string oracle_path(const std::string& name) { return std::string(PRISM_SOURCE_DIR) + "/tests/data/oracles/" + name; }
 
 // transform → rows of (AP0 input, code output).
-std::map<std::string, std::vector<std::pair<Vec3d, Vec3d>>> read_oracle() {
+std::map<std::string, std::vector<std::pair<Vec3d, Vec3d>>> read_aces2_oracle() {
   std::ifstream file(oracle_path("aces2_ocio.csv"));
   std::map<std::string, std::vector<std::pair<Vec3d, Vec3d>>> rows;
   std::string line;
@@ -71,7 +71,7 @@ DisplayImage run(const std::vector<std::pair<Vec3d, Vec3d>>& rows, OdtId target)
 // step. The OCIO outputs are not clamped (a P3-limited colour can encode slightly below 0 in
 // a Rec.2020 container); a file cannot hold that, so both sides are compared in [0, 1].
 TEST(Aces2Rendering, EveryTargetMatchesItsAcademyPreset) {
-  const auto oracle = read_oracle();
+  const auto oracle = read_aces2_oracle();
   const auto targets = read_targets();
   ASSERT_EQ(targets.size(), 7u);
   for (const auto& [target, transform] : targets) {
@@ -89,7 +89,7 @@ TEST(Aces2Rendering, EveryTargetMatchesItsAcademyPreset) {
 // rec2020-100nit has no Academy preset: the SDR Rec.709-limited rendering, its light
 // converted to Rec.2020 primaries, BT.1886-encoded.
 TEST(Aces2Rendering, Rec2020SdrIsTheRec709RenderingInARec2020Container) {
-  const auto rows = read_oracle().at("bi__SDR-100nit-REC709_2.0__sRGB");
+  const auto rows = read_aces2_oracle().at("bi__SDR-100nit-REC709_2.0__sRGB");
   const DisplayImage rec709 = run(rows, OdtId::rec709_100nit), rec2020 = run(rows, OdtId::rec2020_100nit);
   EXPECT_EQ(rec2020.encoding, DisplayEncoding::bt1886);
   const Mat3 m = color::conversion_matrix(color::color_space("srgb"), color::color_space("rec2020"));
@@ -102,7 +102,7 @@ TEST(Aces2Rendering, Rec2020SdrIsTheRec709RenderingInARec2020Container) {
 // Forward → inverse → forward gives the same code values (ACES 2.0 is built to invert): the
 // inverse of a displayed colour is a scene colour the forward maps back onto it.
 TEST(Aces2Rendering, InverseRoundTrip) {
-  const auto rows = read_oracle().at("bi__HDR-1000nit-REC2020_2.0__REC.2100-PQ");
+  const auto rows = read_aces2_oracle().at("bi__HDR-1000nit-REC2020_2.0__REC.2100-PQ");
   for (OdtId target : {OdtId::srgb_100nit, OdtId::rec2020_pq_1000nit, OdtId::p3d65_100nit}) {
     const DisplayImage first = run(rows, target);
     DisplaySettings s;

@@ -21,13 +21,13 @@
 namespace prism::display {
 namespace {
 
-struct OracleRow {
+struct AgxOracleRow {
   Vec3d in, out;
 };
 
-std::map<std::string, std::vector<OracleRow>> read_oracle() {
+std::map<std::string, std::vector<AgxOracleRow>> read_agx_oracle() {
   std::ifstream file(std::string(PRISM_SOURCE_DIR) + "/tests/data/oracles/agx_ocio.csv");
-  std::map<std::string, std::vector<OracleRow>> rows;
+  std::map<std::string, std::vector<AgxOracleRow>> rows;
   std::string line;
   std::getline(file, line);  // header
   while (std::getline(file, line)) {
@@ -35,7 +35,7 @@ std::map<std::string, std::vector<OracleRow>> read_oracle() {
     std::string transform, field;
     std::getline(ss, transform, ',');
     std::getline(ss, field, ',');  // id
-    OracleRow r;
+    AgxOracleRow r;
     for (int k = 0; k < 3; ++k) std::getline(ss, field, ','), r.in[k] = std::stod(field);
     for (int k = 0; k < 3; ++k) std::getline(ss, field, ','), r.out[k] = std::stod(field);
     rows[transform].push_back(r);
@@ -46,9 +46,9 @@ std::map<std::string, std::vector<OracleRow>> read_oracle() {
 // Max |Δcode| of the pipeline against one display of the oracle. The oracle is not clamped
 // (OCIO's P3 conversion gives 1.00006 for a white); a display cannot show code above 1, so
 // both sides are compared clamped to [0, 1].
-double max_code_error(const std::vector<OracleRow>& rows, OdtId target) {
+double max_code_error(const std::vector<AgxOracleRow>& rows, OdtId target) {
   ImageRgbF film{static_cast<int>(rows.size()), 1, {}};
-  for (const OracleRow& r : rows)
+  for (const AgxOracleRow& r : rows)
     for (int k = 0; k < 3; ++k) film.rgb.push_back(static_cast<float>(r.in[k]));
   DisplaySettings s;
   s.rendering = Rendering::agx;
@@ -75,13 +75,13 @@ double max_code_error(const std::vector<OracleRow>& rows, OdtId target) {
 constexpr double kCodeTolerance = 1e-5;
 
 TEST(AgxOracle, SrgbDisplayMatchesOcio) {
-  const auto rows = read_oracle();
+  const auto rows = read_agx_oracle();
   ASSERT_EQ(rows.at("agx__sRGB__AgX").size(), 40u);
   EXPECT_LT(max_code_error(rows.at("agx__sRGB__AgX"), OdtId::srgb_100nit), kCodeTolerance);
 }
 
 TEST(AgxOracle, Bt1886DisplayMatchesOcio) {
-  const auto rows = read_oracle();
+  const auto rows = read_agx_oracle();
   EXPECT_LT(max_code_error(rows.at("agx__BT.1886__AgX"), OdtId::rec709_100nit), kCodeTolerance);
 }
 
@@ -90,7 +90,7 @@ TEST(AgxOracle, Bt1886DisplayMatchesOcio) {
 // so they differ from the exact conversion (rows summing to 1) by up to 6e-5 of light, about
 // as much in γ-2.2 code near white. Bound 1e-4 (measured 7.0e-5).
 TEST(AgxOracle, DisplayP3MatchesOcio) {
-  const auto rows = read_oracle();
+  const auto rows = read_agx_oracle();
   EXPECT_LT(max_code_error(rows.at("agx__Display P3__AgX"), OdtId::p3d65_100nit), 1e-4);
 }
 

@@ -12,15 +12,15 @@
 namespace prism::display {
 namespace {
 
-constexpr int kN = 128, kC = 63;
+constexpr int kBloomImageSizePx = 128, kBloomSpotPx = 63;
 
 // A dim 128² film with one bright 2×2 spot (in the exposed units of EV100 = −log2 1.2,
 // whose exposure scale is 1).
 ImageRgbF spot_film(float spot) {
-  ImageRgbF img{kN, kN, std::vector<float>(3 * kN * kN, 0.05f)};
-  for (int y = kC; y <= kC + 1; ++y)
-    for (int x = kC; x <= kC + 1; ++x)
-      for (int c = 0; c < 3; ++c) img.rgb[3 * (y * kN + x) + c] = spot;
+  ImageRgbF img{kBloomImageSizePx, kBloomImageSizePx, std::vector<float>(3 * kBloomImageSizePx * kBloomImageSizePx, 0.05f)};
+  for (int y = kBloomSpotPx; y <= kBloomSpotPx + 1; ++y)
+    for (int x = kBloomSpotPx; x <= kBloomSpotPx + 1; ++x)
+      for (int c = 0; c < 3; ++c) img.rgb[3 * (y * kBloomImageSizePx + x) + c] = spot;
   return img;
 }
 
@@ -47,17 +47,17 @@ TEST(BloomView, ShowsTheHaloAloneThroughThePipeline) {
   DisplaySettings s = unit_exposure();
   s.bloom.strength = 0.5;
   const DisplayImage view = bloom_only_view(spot_film(50.0f), space, s);
-  ASSERT_EQ(view.width, kN);
+  ASSERT_EQ(view.width, kBloomImageSizePx);
   // The dim background (0.05, below the threshold of 1) contributes nothing: far from the
   // spot the view is black (below 1e-6 of code: only the Gaussians' far tails reach there,
   // 1/4000 of an 8-bit step), while the image itself is not.
-  const std::size_t corner = 3 * (2 * kN + 2);
+  const std::size_t corner = 3 * (2 * kBloomImageSizePx + 2);
   EXPECT_LT(view.code[corner], 1e-6f);
   EXPECT_GT(apply_display_pipeline(spot_film(50.0f), space, s).code[corner], 0.0f);
   // Around the spot the halo shows, fading outward.
-  const auto at = [&](int x) { return view.nits[3 * (std::size_t(kC) * kN + x) + 1]; };
-  EXPECT_GT(at(kC + 3), at(kC + 12));
-  EXPECT_GT(at(kC + 12), 0.0f);
+  const auto at = [&](int x) { return view.nits[3 * (std::size_t(kBloomSpotPx) * kBloomImageSizePx + x) + 1]; };
+  EXPECT_GT(at(kBloomSpotPx + 3), at(kBloomSpotPx + 12));
+  EXPECT_GT(at(kBloomSpotPx + 12), 0.0f);
   // It is the component through the same pipeline at exposure scale 1.
   DisplaySettings plain = unit_exposure();
   const DisplayImage expected = apply_display_pipeline(bloom_component(spot_film(50.0f), s.bloom), space, plain);

@@ -44,7 +44,7 @@ TEST(DisplayGamutRemap, RejectsInvalidPrimaries) {
   EXPECT_THROW(parse_display_primaries("not-a-space"), UsageError);
 }
 
-ImageRgbF test_film() {
+ImageRgbF gamut_test_film() {
   ImageRgbF film{16, 1, {}};
   for (int x = 0; x < 16; ++x) {
     const double v = 0.01 * std::pow(2.0, x * 0.7);
@@ -57,9 +57,9 @@ ImageRgbF test_film() {
 TEST(DisplayGamutRemap, OwnPrimariesAreIdentity) {
   DisplaySettings s;
   s.odt = OdtId::rec2020_pq_1000nit;
-  const DisplayImage a = apply_display_pipeline(test_film(), color::color_space("srgb"), s);
+  const DisplayImage a = apply_display_pipeline(gamut_test_film(), color::color_space("srgb"), s);
   s.display_primaries = parse_display_primaries("rec2020");
-  const DisplayImage b = apply_display_pipeline(test_film(), color::color_space("srgb"), s);
+  const DisplayImage b = apply_display_pipeline(gamut_test_film(), color::color_space("srgb"), s);
   for (std::size_t i = 0; i < a.code.size(); ++i) EXPECT_NEAR(a.code[i], b.code[i], 1e-6);
 }
 
@@ -68,9 +68,9 @@ TEST(DisplayGamutRemap, RemapShowsTheSameLightInsideTheTargetGamut) {
   // so Bradford is the identity); the output is tagged with the target primaries.
   DisplaySettings s;
   s.odt = OdtId::p3d65_100nit;
-  const DisplayImage p3 = apply_display_pipeline(test_film(), color::color_space("srgb"), s);
+  const DisplayImage p3 = apply_display_pipeline(gamut_test_film(), color::color_space("srgb"), s);
   s.display_primaries = parse_display_primaries("adobe-rgb");
-  const DisplayImage adobe = apply_display_pipeline(test_film(), color::color_space("srgb"), s);
+  const DisplayImage adobe = apply_display_pipeline(gamut_test_film(), color::color_space("srgb"), s);
   EXPECT_EQ(adobe.primaries, "adobe-rgb");
   const Mat3 p3_xyz = color::color_space("display-p3").rgb_to_xyz, adobe_xyz = color::color_space("adobe-rgb").rgb_to_xyz;
   int compared = 0;

@@ -53,16 +53,16 @@ TextureImage grey_map(int width, int height, float (*value)(int x, int y)) {
 
 TextureImage square_map(int size, float (*value)(int x, int y)) { return grey_map(size, size, value); }
 
-RenderSettings settings(TransportKind kind, LightEstimator estimator, int spp) {
+RenderSettings estimator_settings(TransportKind kind, LightEstimator estimator, int spp) {
   return test::direct_light_settings(kind, estimator, spp, 17);
 }
 
 // Light sampling and BSDF sampling estimate the same integral, so NEE-only, BSDF-only and
 // MIS renders of `scene` must agree within 5σ of their combined noise.
 void expect_estimators_agree(const Scene& scene) {
-  const Film nee = render(scene, settings(TransportKind::rgb, LightEstimator::nee_only, 256)).film;
-  const Film bsdf = render(scene, settings(TransportKind::rgb, LightEstimator::bsdf_only, 256)).film;
-  const Film mis = render(scene, settings(TransportKind::rgb, LightEstimator::mis, 256)).film;
+  const Film nee = render(scene, estimator_settings(TransportKind::rgb, LightEstimator::nee_only, 256)).film;
+  const Film bsdf = render(scene, estimator_settings(TransportKind::rgb, LightEstimator::bsdf_only, 256)).film;
+  const Film mis = render(scene, estimator_settings(TransportKind::rgb, LightEstimator::mis, 256)).film;
   const Estimate a = test::block_estimate(nee, 0, 0, 8, 8), b = test::block_estimate(bsdf, 0, 0, 8, 8),
                  c = test::block_estimate(mis, 0, 0, 8, 8);
   EXPECT_NEAR(a.mean.y, b.mean.y, 5.0 * std::sqrt(a.variance.y + b.variance.y));
@@ -76,7 +76,7 @@ TEST(EnvironmentOctahedral, FurnaceWithAConstantMap) {
   const Scene scene = floor_under_octahedral_sky(square_map(8, [](int, int) { return 1.0f; }), 10.0f);
   for (TransportKind kind : {TransportKind::rgb, TransportKind::spectral})
     for (LightEstimator est : {LightEstimator::mis, LightEstimator::nee_only, LightEstimator::bsdf_only}) {
-      const Film film = render(scene, settings(kind, est, 64)).film;
+      const Film film = render(scene, estimator_settings(kind, est, 64)).film;
       const Estimate e = test::block_estimate(film, 0, 0, film.width(), film.height());
       EXPECT_NEAR(e.mean.y, 5.0, 5.0 * std::sqrt(e.variance.y) + 5e-4)
           << "transport " << static_cast<int>(kind) << " estimator " << static_cast<int>(est);

@@ -21,7 +21,7 @@ using Estimate = test::BlockEstimate;
 
 Estimate block(const Film& film, int x0, int y0, int x1, int y1) { return test::block_estimate(film, x0, y0, x1, y1); }
 
-Estimate whole(const Film& film) { return block(film, 0, 0, film.width(), film.height()); }
+Estimate whole_film(const Film& film) { return block(film, 0, 0, film.width(), film.height()); }
 
 struct ModeCase {
   const char* name;
@@ -58,7 +58,7 @@ RenderSettings settings_for(const TransportSettings& transport, int size, int sp
 // numbers in every channel: RGB films because white is (1,1,1)·Y, spectral films because
 // XYZ of an E-white is X = Y = Z. 5σ bounds: false alarms below 6e-7 per comparison.
 void expect_uniform(const Film& film, double expected, const std::string& what) {
-  const Estimate e = whole(film);
+  const Estimate e = whole_film(film);
   for (int c = 0; c < 3; ++c)
     EXPECT_NEAR(e.mean[c], expected, 5.0 * std::sqrt(e.variance[c]) + 1e-5 * expected) << what << " channel " << c;
 }
@@ -153,7 +153,7 @@ void expect_floor_radiance(const Light& light, double illuminance_lux, const cha
     RenderSettings s = settings_for(m.transport, 8, 64);
     s.path.max_depth = 1;
     const double expected = 0.5 / std::numbers::pi * illuminance_lux;
-    const Estimate e = whole(render(scene, s).film);
+    const Estimate e = whole_film(render(scene, s).film);
     EXPECT_NEAR(e.mean.y, expected, 5.0 * std::sqrt(e.variance.y) + 1e-4 * expected) << what << " " << describe(m.transport);
   }
 }
@@ -179,7 +179,7 @@ TEST(Integrator, PointAndSpotLightsFollowTheInverseSquareLaw) {
   spot.direction = Vec3f(0, -1, 0);  // 36.9° off axis: outside a 20°/30° cone, no light
   spot.spot_inner_angle_degrees = 20.0f;
   spot.spot_outer_angle_degrees = 30.0f;
-  const Estimate dark = whole(render(lit_floor(spot), settings_for(all_modes()[0].transport, 4, 4)).film);
+  const Estimate dark = whole_film(render(lit_floor(spot), settings_for(all_modes()[0].transport, 4, 4)).film);
   EXPECT_EQ(dark.mean.y, 0.0);
 }
 
@@ -198,7 +198,7 @@ TEST(Integrator, SunDiscEstimatorsAgree) {
     RenderSettings s = settings_for(all_modes()[5].transport, 16, 128, 7 + static_cast<int>(est));
     s.path.max_depth = 1;
     s.path.estimator = est;
-    estimates.push_back(whole(render(scene, s).film));
+    estimates.push_back(whole_film(render(scene, s).film));
   }
   for (std::size_t a = 0; a < estimates.size(); ++a)
     for (std::size_t b = a + 1; b < estimates.size(); ++b)
@@ -382,7 +382,7 @@ TEST(Integrator, EnvironmentLightsTheFloorAnalytically) {
         RenderSettings s = settings_for(m.transport, 8, 64, 11);
         s.path.max_depth = 1;
         s.path.estimator = est;
-        const Estimate e = whole(render(scene, s).film);
+        const Estimate e = whole_film(render(scene, s).film);
         EXPECT_NEAR(e.mean.y, expected, 5.0 * std::sqrt(e.variance.y) + 5e-4)
             << "rows " << rows << " " << describe(m.transport) << " estimator " << static_cast<int>(est);
       }
@@ -393,7 +393,7 @@ TEST(Integrator, CameraSeesTheEnvironmentDirectly) {
   Scene scene = floor_under_sky(0);
   scene.camera.target = Vec3f(0, 2, 1);  // looking up: only sky
   for (const ModeCase& m : {all_modes()[0], all_modes()[5]}) {
-    const Estimate e = whole(render(scene, settings_for(m.transport, 4, 16)).film);
+    const Estimate e = whole_film(render(scene, settings_for(m.transport, 4, 16)).film);
     EXPECT_NEAR(e.mean.y, 10.0, 5.0 * std::sqrt(e.variance.y) + 1e-3) << describe(m.transport);
   }
 }

@@ -17,8 +17,8 @@ namespace {
 
 using Estimate = test::BlockEstimate;
 
-Estimate block(const Film& film, int x0, int y0, int x1, int y1) { return test::block_estimate(film, x0, y0, x1, y1); }
-Estimate whole(const Film& film) { return block(film, 0, 0, film.width(), film.height()); }
+Estimate texture_block(const Film& film, int x0, int y0, int x1, int y1) { return test::block_estimate(film, x0, y0, x1, y1); }
+Estimate texture_whole_film(const Film& film) { return texture_block(film, 0, 0, film.width(), film.height()); }
 
 TransportSettings rgb_transport() {
   TransportSettings t;
@@ -33,7 +33,7 @@ TransportSettings spectral_transport() {
   return t;
 }
 
-RenderSettings settings_for(const TransportSettings& transport, int size, int spp, std::uint64_t seed) {
+RenderSettings texture_settings_for(const TransportSettings& transport, int size, int spp, std::uint64_t seed) {
   RenderSettings s;
   s.width = s.height = size;
   s.samples_per_pixel = spp;
@@ -77,8 +77,8 @@ Scene textured_floor(const Material& material) {
 
 // The image's left blocks see u ≈ 0.72–0.89 (texels 8–15), the right ones u ≈ 0.11–0.28
 // (texels 0–7), away from the bilinear blend at u = ½ (see integrator_test.cpp).
-Estimate sees_right_texels(const Film& f) { return block(f, 1, 6, 4, 10); }
-Estimate sees_left_texels(const Film& f) { return block(f, 12, 6, 15, 10); }
+Estimate sees_right_texels(const Film& f) { return texture_block(f, 1, 6, 4, 10); }
+Estimate sees_left_texels(const Film& f) { return texture_block(f, 12, 6, 15, 10); }
 
 // A directional light of intensity 100 from `radians` off the zenith, in the xy plane.
 Light sun_from_zenith(float radians) {
@@ -98,7 +98,7 @@ template <class SceneOf>
 void expect_halves_match_constants(const SceneOf& scene_of, const Material& textured, const Material& left,
                                    const Material& right, int channel, const char* label) {
   for (const TransportSettings& transport : {rgb_transport(), spectral_transport()}) {
-    RenderSettings s = settings_for(transport, 16, 16, 3);
+    RenderSettings s = texture_settings_for(transport, 16, 16, 3);
     s.path.max_depth = 1;
     const Film t = render(scene_of(textured), s).film;
     const Estimate t_left = sees_left_texels(t), t_right = sees_right_texels(t);
@@ -267,7 +267,7 @@ TEST(MaterialTextures, EmissiveTextureScalesRadianceByTexelFactorAndStrength) {
   // RGB transport (sRGB working space): the film holds c ⊙ t · s exactly; no sampling
   // noise reaches the camera-ray emission, so float accumulation bounds it (1e-4).
   {
-    RenderSettings s = settings_for(rgb_transport(), 16, 4, 1);
+    RenderSettings s = texture_settings_for(rgb_transport(), 16, 4, 1);
     s.path.max_depth = 1;
     const Film f = render(scene, s).film;
     const Vec3f left = factor * left_texel * kStrength, right = factor * right_texel * kStrength;
@@ -284,7 +284,7 @@ TEST(MaterialTextures, EmissiveTextureScalesRadianceByTexelFactorAndStrength) {
   // relative for the quadrature. That rule's luminance for saturated colours departs from
   // the RGB colour's Y (sigmoid upsampling is exact only for greys): printed, not asserted.
   {
-    RenderSettings s = settings_for(spectral_transport(), 16, 64, 2);
+    RenderSettings s = texture_settings_for(spectral_transport(), 16, 64, 2);
     s.path.max_depth = 1;
     const Film f = render(scene, s).film;
     const ColorContext<SpectralMode<4>> colours(scene, spectral_transport());
@@ -360,10 +360,10 @@ TEST(MaterialTextures, TexturedEmitterEstimatorsAgree) {
   for (const TransportSettings& transport : {rgb_transport(), spectral_transport()}) {
     std::vector<Estimate> estimates;
     for (LightEstimator est : {LightEstimator::mis, LightEstimator::nee_only, LightEstimator::bsdf_only}) {
-      RenderSettings s = settings_for(transport, 16, 256, 17 + static_cast<int>(est));
+      RenderSettings s = texture_settings_for(transport, 16, 256, 17 + static_cast<int>(est));
       s.path.max_depth = 1;
       s.path.estimator = est;
-      estimates.push_back(whole(render(scene, s).film));
+      estimates.push_back(texture_whole_film(render(scene, s).film));
     }
     for (std::size_t a = 0; a < estimates.size(); ++a)
       for (std::size_t b = a + 1; b < estimates.size(); ++b)
@@ -371,9 +371,9 @@ TEST(MaterialTextures, TexturedEmitterEstimatorsAgree) {
           EXPECT_NEAR(estimates[a].mean[c], estimates[b].mean[c],
                       5.0 * std::sqrt(estimates[a].variance[c] + estimates[b].variance[c]))
               << describe(transport) << " estimators " << a << " and " << b << " channel " << c;
-    RenderSettings s = settings_for(transport, 16, 64, 5);
+    RenderSettings s = texture_settings_for(transport, 16, 64, 5);
     s.path.max_depth = 1;
-    const Estimate plain = whole(render(untextured, s).film);
+    const Estimate plain = texture_whole_film(render(untextured, s).film);
     EXPECT_LT(estimates[0].mean.y, 0.6 * plain.mean.y) << describe(transport);
     std::printf("[ emis-mis ] %s: MIS %.5f ± %.5f, NEE %.5f ± %.5f, BSDF %.5f ± %.5f (untextured %.5f)\n",
                 describe(transport).c_str(), estimates[0].mean.y, std::sqrt(estimates[0].variance.y),

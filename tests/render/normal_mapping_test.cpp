@@ -165,28 +165,28 @@ Vec3f tilted(float degrees, const Vec3f& towards) {  // the floor's normal +y ti
 // Each pixel is ρ/π · E · cos θ, computed in float: a relative error of a few 1e-7 per
 // operation over some twenty operations; 1e-5 leaves room and is far below any wrong axis
 // (which changes the cosine by ≥ 0.1).
-constexpr double kRelative = 1e-5;
+constexpr double kNormalMapRelative = 1e-5;
 
 TEST(NormalMapping, LambertianFloorShowsTheCosineToTheMappedNormal) {
   const double unmapped = floor_red(Vec3f(0, 1, 0), nullptr);
   ASSERT_GT(unmapped, 0.0);
   // A map tilting the normal 60°: a light overhead falls at 60° to it.
   const Vec3f tilt60(std::sin(60.0f * kDegree), 0.0f, std::cos(60.0f * kDegree));
-  EXPECT_NEAR(floor_red(Vec3f(0, 1, 0), &tilt60) / unmapped, 0.5, 0.5 * kRelative);
+  EXPECT_NEAR(floor_red(Vec3f(0, 1, 0), &tilt60) / unmapped, 0.5, 0.5 * kNormalMapRelative);
   // The map's +x is the tangent (+u, +x here): a light 40° towards +x is head-on to a
   // normal tilted 40° by the map's x; one 40° towards −x falls at 80°.
   const Vec3f x40(std::sin(40.0f * kDegree), 0.0f, std::cos(40.0f * kDegree));
-  EXPECT_NEAR(floor_red(tilted(40, Vec3f(1, 0, 0)), &x40) / unmapped, 1.0, kRelative);
+  EXPECT_NEAR(floor_red(tilted(40, Vec3f(1, 0, 0)), &x40) / unmapped, 1.0, kNormalMapRelative);
   EXPECT_NEAR(floor_red(tilted(40, Vec3f(-1, 0, 0)), &x40) / unmapped, std::cos(80.0 * std::numbers::pi / 180.0),
-              kRelative);
+              kNormalMapRelative);
   // The map's +y runs up the image (towards −v, −z here).
   const Vec3f y40(0.0f, std::sin(40.0f * kDegree), std::cos(40.0f * kDegree));
-  EXPECT_NEAR(floor_red(tilted(40, Vec3f(0, 0, -1)), &y40) / unmapped, 1.0, kRelative);
+  EXPECT_NEAR(floor_red(tilted(40, Vec3f(0, 0, -1)), &y40) / unmapped, 1.0, kNormalMapRelative);
   EXPECT_NEAR(floor_red(tilted(40, Vec3f(0, 0, 1)), &y40) / unmapped, std::cos(80.0 * std::numbers::pi / 180.0),
-              kRelative);
+              kNormalMapRelative);
   // The same through per-vertex tangents (the glTF path) instead of the triangle's.
-  EXPECT_NEAR(floor_red(tilted(40, Vec3f(0, 0, -1)), &y40, false, true) / unmapped, 1.0, kRelative);
-  EXPECT_NEAR(floor_red(tilted(40, Vec3f(1, 0, 0)), &x40, false, true) / unmapped, 1.0, kRelative);
+  EXPECT_NEAR(floor_red(tilted(40, Vec3f(0, 0, -1)), &y40, false, true) / unmapped, 1.0, kNormalMapRelative);
+  EXPECT_NEAR(floor_red(tilted(40, Vec3f(1, 0, 0)), &x40, false, true) / unmapped, 1.0, kNormalMapRelative);
 }
 
 TEST(NormalMapping, MirroredUvsMirrorTheMapsXOnly) {
@@ -195,8 +195,8 @@ TEST(NormalMapping, MirroredUvsMirrorTheMapsXOnly) {
   const Vec3f x40(std::sin(40.0f * kDegree), 0.0f, std::cos(40.0f * kDegree));
   const Vec3f y40(0.0f, std::sin(40.0f * kDegree), std::cos(40.0f * kDegree));
   for (const bool per_vertex : {false, true}) {
-    EXPECT_NEAR(floor_red(tilted(40, Vec3f(-1, 0, 0)), &x40, true, per_vertex) / unmapped, 1.0, kRelative);
-    EXPECT_NEAR(floor_red(tilted(40, Vec3f(0, 0, -1)), &y40, true, per_vertex) / unmapped, 1.0, kRelative);
+    EXPECT_NEAR(floor_red(tilted(40, Vec3f(-1, 0, 0)), &x40, true, per_vertex) / unmapped, 1.0, kNormalMapRelative);
+    EXPECT_NEAR(floor_red(tilted(40, Vec3f(0, 0, -1)), &y40, true, per_vertex) / unmapped, 1.0, kNormalMapRelative);
   }
 }
 

@@ -36,15 +36,15 @@
 namespace prism {
 namespace {
 
-struct Agreement {
+struct ReferenceAgreement {
   double image_z = 0.0;        // largest |Z| of the whole image's channels
   double worst_block_z = 0.0;  // largest |Z| of any 8×8 block's channel
   double outlier_fraction = 0.0;  // pixels' channels with |Z| > 4
   double relative_error = 0.0;    // the image mean's standard error over its value (green)
 };
 
-Agreement compare(const Film& a, const Film& b) {
-  Agreement result;
+ReferenceAgreement compare_to_reference(const Film& a, const Film& b) {
+  ReferenceAgreement result;
   constexpr int kBlock = 8;
   Vec3d image_difference, image_variance, image_sum;
   std::size_t outliers = 0, tested = 0;
@@ -104,7 +104,7 @@ void expect_agreement(const Scene& scene, const std::string& label, int size = 6
     const RenderResult reference = render(scene, s);
     ASSERT_EQ(reference.invalid_samples, 0u) << label;
     EXPECT_EQ(reference.film.counts(), fast.film.counts()) << label;
-    const Agreement z = compare(fast.film, reference.film);
+    const ReferenceAgreement z = compare_to_reference(fast.film, reference.film);
     const std::string what = label + (kind == TransportKind::rgb ? ", rgb" : ", spectral");
     std::printf("%s: image |Z| %.2f (its standard error %.2f %%), worst block |Z| %.2f, pixels past |Z| 4: %.3f %%\n",
                 what.c_str(), z.image_z, 100.0 * z.relative_error, z.worst_block_z, 100.0 * z.outlier_fraction);

@@ -69,22 +69,22 @@ TEST(SheenRender, JsonKeysAndTheirRules) {
                    .has_sheen());
 }
 
-Scene gltf_with_material(const std::string& material) {
+Scene sheen_gltf_with_material(const std::string& material) {
   return test::one_triangle_gltf(material, "KHR_materials_sheen");
 }
 
 TEST(SheenRender, GltfSheenFactorsAndRules) {
-  const Scene s = gltf_with_material(
+  const Scene s = sheen_gltf_with_material(
       R"({"extensions": {"KHR_materials_sheen": {"sheenColorFactor": [0.5, 0.25, 1], "sheenRoughnessFactor": 0.3}}})");
   EXPECT_TRUE(s.materials[0].has_sheen());
   EXPECT_EQ(s.materials[0].sheen_color, Vec3f(0.5f, 0.25f, 1.0f));
   EXPECT_FLOAT_EQ(s.materials[0].sheen_roughness, 0.3f);
   for (const std::string& w : s.warnings) EXPECT_EQ(w.find("KHR_materials_sheen"), std::string::npos) << w;
   // The default colour is black: no sheen, whatever the roughness.
-  EXPECT_FALSE(gltf_with_material(R"({"extensions": {"KHR_materials_sheen": {"sheenRoughnessFactor": 0.3}}})")
+  EXPECT_FALSE(sheen_gltf_with_material(R"({"extensions": {"KHR_materials_sheen": {"sheenRoughnessFactor": 0.3}}})")
                    .materials[0]
                    .has_sheen());
-  const Scene glass = gltf_with_material(R"({"extensions": {"KHR_materials_transmission": {"transmissionFactor": 1},
+  const Scene glass = sheen_gltf_with_material(R"({"extensions": {"KHR_materials_transmission": {"transmissionFactor": 1},
       "KHR_materials_sheen": {"sheenColorFactor": [1, 1, 1]}}})");
   EXPECT_FALSE(glass.materials[0].has_sheen());
   bool said = false;
@@ -97,7 +97,7 @@ TEST(SheenRender, GltfSheenFactorsAndRules) {
            {R"({"sheenColorFactor": [1, 0]})", "sheenColorFactor must be an array of three numbers"},
            {R"({"sheenColorFactor": [1, 1, 1], "sheenRoughnessFactor": -1})", "sheenRoughnessFactor must be in [0, 1]"}}) {
     const std::string material = R"({"extensions": {"KHR_materials_sheen": )" + sheen + "}}";
-    const std::string message = test::error_of<SceneError>([&] { gltf_with_material(material); });
+    const std::string message = test::error_of<SceneError>([&] { sheen_gltf_with_material(material); });
     EXPECT_NE(message.find("materials[0].extensions.KHR_materials_sheen: " + expected), std::string::npos)
         << sheen << " → " << message;
   }

@@ -17,7 +17,7 @@
 namespace prism {
 namespace {
 
-constexpr int kSize = 16;
+constexpr int kPaneImageSizePx = 16;
 
 Scene floor_behind_pane(int pane_kind) {  // 0: none, 1: thin-walled, 2: plain dielectric
   Scene scene;
@@ -70,7 +70,7 @@ Scene floor_behind_pane(int pane_kind) {  // 0: none, 1: thin-walled, 2: plain d
 
 Film render_pane(int kind) {
   RenderSettings s;
-  s.width = s.height = kSize;
+  s.width = s.height = kPaneImageSizePx;
   s.samples_per_pixel = 64;
   s.seed = 9;
   s.transport.kind = TransportKind::rgb;
@@ -81,8 +81,8 @@ Film render_pane(int kind) {
 // Green fraction G/(R+G) of each pixel row's mean: the pattern's position.
 std::vector<double> row_green_fraction(const Film& f) {
   std::vector<double> out;
-  for (int y = 0; y < kSize; ++y) {
-    const test::BlockEstimate e = test::block_estimate(f, 0, y, kSize, y + 1);
+  for (int y = 0; y < kPaneImageSizePx; ++y) {
+    const test::BlockEstimate e = test::block_estimate(f, 0, y, kPaneImageSizePx, y + 1);
     out.push_back(e.mean.y / (e.mean.x + e.mean.y));
   }
   return out;
@@ -97,7 +97,7 @@ TEST(ThinPane, DoesNotShiftWhatIsSeenBehindIt) {
   // reflected samples (weight 0) drop part of its footprint. Neighbouring rows differ by
   // about 0.05 here, so 0.01 would detect a shift of a fifth of a pixel.
   double largest_thick_change = 0.0;
-  for (int x = 0; x < kSize; ++x) {
+  for (int x = 0; x < kPaneImageSizePx; ++x) {
     EXPECT_NEAR(through_thin[static_cast<std::size_t>(x)], reference[static_cast<std::size_t>(x)], 0.01) << "row " << x;
     largest_thick_change = std::max(largest_thick_change, std::abs(through_thick[static_cast<std::size_t>(x)] -
                                                                    reference[static_cast<std::size_t>(x)]));
@@ -105,8 +105,8 @@ TEST(ThinPane, DoesNotShiftWhatIsSeenBehindIt) {
   EXPECT_GT(largest_thick_change, 0.1) << "a refracting pane must shift the pattern (the check can fail)";
   // Brightness: the camera rays meet the pane at 45° ± 5°, where T' = 1 − R' lies between
   // its values at 40° and 50°; 5σ of the image mean's noise (lobe choice) widens it.
-  const test::BlockEstimate o = test::block_estimate(open, 0, 0, kSize, kSize),
-                            t = test::block_estimate(thin, 0, 0, kSize, kSize);
+  const test::BlockEstimate o = test::block_estimate(open, 0, 0, kPaneImageSizePx, kPaneImageSizePx),
+                            t = test::block_estimate(thin, 0, 0, kPaneImageSizePx, kPaneImageSizePx);
   const auto transmittance = [](double deg) {
     const float cos_i = static_cast<float>(std::cos(deg * std::numbers::pi / 180.0));
     return 1.0 - bsdf::thin_slab_reflectance(bsdf::fresnel_dielectric(cos_i, 1.5f));

@@ -31,9 +31,9 @@
 namespace prism {
 namespace {
 
-constexpr float kIlluminanceLux = 50.0f;
+constexpr float kSunIlluminanceLux = 50.0f;
 
-struct Case {
+struct WideGamutCase {
   Vec3f albedo;
   ColorPickerSpace space;
   bool outside_rec709;
@@ -41,18 +41,18 @@ struct Case {
 
 // Rec.2020 green and blue and an ACEScg red, all outside Rec.709 (a Rec.709 channel below
 // −0.02), and an ACEScg olive inside.
-const Case kCases[] = {{{0.05f, 0.6f, 0.05f}, ColorPickerSpace::rec2020, true},
+const WideGamutCase kWideGamutCases[] = {{{0.05f, 0.6f, 0.05f}, ColorPickerSpace::rec2020, true},
                        {{0.05f, 0.1f, 0.7f}, ColorPickerSpace::rec2020, true},
                        {{0.45f, 0.03f, 0.02f}, ColorPickerSpace::acescg, true},
                        {{0.2f, 0.5f, 0.1f}, ColorPickerSpace::acescg, false}};
 
-std::string describe(const Case& c) {
+std::string describe(const WideGamutCase& c) {
   return std::string(picker_space_name(c.space)) + " (" + std::to_string(c.albedo.x) + ", " +
          std::to_string(c.albedo.y) + ", " + std::to_string(c.albedo.z) + ")";
 }
 
 TEST(WideGamutBaseColour, TheCasesLieWhereTheySay) {
-  for (const Case& c : kCases) {
+  for (const WideGamutCase& c : kWideGamutCases) {
     const double lowest = min_component(picker_color_in_rec709(c.albedo, c.space));
     if (c.outside_rec709) EXPECT_LT(lowest, -0.02) << describe(c);
     else EXPECT_GT(lowest, 0.0) << describe(c);
@@ -60,10 +60,10 @@ TEST(WideGamutBaseColour, TheCasesLieWhereTheySay) {
 }
 
 Scene lit_floor(const Material& material) {
-  return test::make_floor_under_overhead_sun(material, kIlluminanceLux);  // albedo · E/π everywhere
+  return test::make_floor_under_overhead_sun(material, kSunIlluminanceLux);  // albedo · E/π everywhere
 }
 
-Material diffuse(const Case& c) {
+Material diffuse(const WideGamutCase& c) {
   Material m;
   m.type = MaterialType::diffuse;
   m.base_color = c.albedo;
@@ -82,8 +82,8 @@ Vec3d mean_of(const Scene& scene, const RenderSettings& settings) {
 }
 
 TEST(WideGamutBaseColour, FilmsAsItselfInRgbTransport) {
-  const double white_nits = kIlluminanceLux / std::numbers::pi;
-  for (const Case& c : kCases) {
+  const double white_nits = kSunIlluminanceLux / std::numbers::pi;
+  for (const WideGamutCase& c : kWideGamutCases) {
     const Scene scene = lit_floor(diffuse(c));
     // In its own space: the albedo times the light, up to float accumulation.
     const Vec3d own = mean_of(scene, small_render(TransportKind::rgb, picker_space_name(c.space)));
@@ -102,9 +102,9 @@ TEST(WideGamutBaseColour, FilmsAsItselfInRgbTransport) {
 }
 
 TEST(WideGamutBaseColour, FilmsAsItsOwnTableUpsamplesItInSpectralTransport) {
-  const double white_nits = kIlluminanceLux / std::numbers::pi;
+  const double white_nits = kSunIlluminanceLux / std::numbers::pi;
   const color::DenseSpectrum& e = color::standard_illuminant(color::StandardIlluminant::e);
-  for (const Case& c : kCases) {
+  for (const WideGamutCase& c : kWideGamutCases) {
     const color::ColorSpace& space = picker_color_space(c.space);
     const Mat3 film_to_space = color::spectral_xyz_to_rgb_matrix(space);
     // What the space's table makes of the albedo, filmed under E as the render films it.
@@ -134,7 +134,7 @@ TEST(WideGamutBaseColour, FilmsAsItsOwnTableUpsamplesItInSpectralTransport) {
 // texel g gives g × the factor exactly, in both transports, and the albedo AOV says so.
 TEST(WideGamutBaseColour, GreyTextureScalesAWideGamutFactor) {
   constexpr float kGrey = 0.5f;
-  const Case c = kCases[0];
+  const WideGamutCase c = kWideGamutCases[0];
   Material untextured = diffuse(c);
   untextured.base_color = c.albedo * kGrey;
   Material textured = diffuse(c);
@@ -171,7 +171,7 @@ TEST(WideGamutBaseColour, GreyTextureScalesAWideGamutFactor) {
 // colour, in both transports. Read into Rec.709 instead (the clipped colour every texture
 // was before), it renders measurably less saturated.
 TEST(WideGamutBaseColour, WideGamutOpenExrTextureKeepsItsColourOnAMaterialInItsSpace) {
-  const Case c = kCases[2];  // the ACEScg red: its Rec.709 green and blue are negative
+  const WideGamutCase c = kWideGamutCases[2];  // the ACEScg red: its Rec.709 green and blue are negative
   ASSERT_EQ(c.space, ColorPickerSpace::acescg);
   test::ScratchFolder dir;
   const color::ColorSpace& aces = color::color_space("acescg");

@@ -24,7 +24,7 @@
 namespace prism {
 namespace {
 
-ExrChromaticities chromaticities_of(const char* name) {
+ExrChromaticities exr_chromaticities_of(const char* name) {
   const color::ColorSpace& s = color::color_space(name);
   const auto f = [](double v) { return static_cast<float>(v); };
   return {f(s.red.x), f(s.red.y), f(s.green.x), f(s.green.y), f(s.blue.x), f(s.blue.y), f(s.white.x), f(s.white.y)};
@@ -41,7 +41,7 @@ Vec3d acescg_in_rec709(std::size_t texel) {
 void write_acescg_exr(const std::filesystem::path& path, ExrPixelType type = ExrPixelType::float32) {
   ExrWriteOptions options;
   options.pixel_type = type;
-  write_exr(path, ImageRgbF{3, 1, kAcescgTexels}, chromaticities_of("acescg"), {}, options);
+  write_exr(path, ImageRgbF{3, 1, kAcescgTexels}, exr_chromaticities_of("acescg"), {}, options);
 }
 
 TEST(ExrTexturePrimaries, ColourTexelsAreConvertedToRec709AndOutOfGamutOnesClipped) {
@@ -82,7 +82,7 @@ TEST(ExrTexturePrimaries, HalfTexturesStayHalves) {
 
 TEST(ExrTexturePrimaries, Rec709AndUnlabelledFilesAreReadAsStored) {
   test::ScratchFolder dir;
-  write_exr(dir / "rec709.exr", ImageRgbF{3, 1, kAcescgTexels}, chromaticities_of("srgb"));
+  write_exr(dir / "rec709.exr", ImageRgbF{3, 1, kAcescgTexels}, exr_chromaticities_of("srgb"));
   const TextureImage t =
       read_texture_file(dir / "rec709.exr", TextureEncoding::srgb, TextureLimits(4096), TextureContent::color);
   EXPECT_EQ(t.linear_values(), kAcescgTexels);
@@ -133,7 +133,7 @@ TEST(ExrTexturePrimaries, LoadersConvertColourTexturesAndSaySo) {
 TEST(ExrTexturePrimaries, PbrtImageTexturesKeepTheirFilesColourSpace) {
   test::ScratchFolder dir;
   for (const char* space : {"rec2020", "aces2065-1", "srgb"})
-    write_exr(dir / (std::string(space) + ".exr"), ImageRgbF{3, 1, kAcescgTexels}, chromaticities_of(space));
+    write_exr(dir / (std::string(space) + ".exr"), ImageRgbF{3, 1, kAcescgTexels}, exr_chromaticities_of(space));
   const std::string pbrt =
       "WorldBegin\n"
       "Texture \"a\" \"spectrum\" \"imagemap\" \"string filename\" \"rec2020.exr\"\n"
@@ -193,7 +193,7 @@ TEST(ExrTexturePrimaries, WideGamutContentKeepsWhatRec709CannotHold) {
   EXPECT_GE(min_component(Vec3f(texels[6], texels[7], texels[8])), 0.0f);
   EXPECT_NE(wide.primaries_note.find("1 of 3 texels lie outside Rec.2020"), std::string::npos) << wide.primaries_note;
 
-  write_exr(dir / "plain.exr", ImageRgbF{3, 1, kAcescgTexels}, chromaticities_of("srgb"));
+  write_exr(dir / "plain.exr", ImageRgbF{3, 1, kAcescgTexels}, exr_chromaticities_of("srgb"));
   const TextureImage plain =
       read_texture_file(dir / "plain.exr", TextureEncoding::srgb, TextureLimits(4096), TextureContent::color_acescg);
   EXPECT_EQ(plain.texel_space, ColorPickerSpace::acescg);

@@ -70,18 +70,18 @@ std::string quad_document(const std::string& buffer_uri, const std::string& extr
 })";
 }
 
-Scene parse(const std::string& text, const std::filesystem::path& dir = {}, LoadOptions options = {}) {
+Scene parse_gltf_text(const std::string& text, const std::filesystem::path& dir = {}, LoadOptions options = {}) {
   return parse_gltf_scene({reinterpret_cast<const unsigned char*>(text.data()), text.size()}, "test.gltf", dir, options);
 }
 
-std::string parse_error(const std::string& text, const std::filesystem::path& dir = {}) {
-  return test::error_of<SceneError>([&] { parse(text, dir); });
+std::string gltf_parse_error(const std::string& text, const std::filesystem::path& dir = {}) {
+  return test::error_of<SceneError>([&] { parse_gltf_text(text, dir); });
 }
 
 const std::string kDataUri = "data:application/octet-stream;base64,";
 
 TEST(GltfLoader, NodeHierarchyInstancesAndCamera) {
-  const Scene s = parse(quad_document(kDataUri + base64(quad_buffer())));
+  const Scene s = parse_gltf_text(quad_document(kDataUri + base64(quad_buffer())));
   ASSERT_EQ(s.meshes.size(), 1u);  // one mesh, shared
   ASSERT_EQ(s.instances.size(), 2u);
   EXPECT_EQ(s.meshes[0].triangle_count(), 2u);
@@ -102,7 +102,7 @@ TEST(GltfLoader, NodeHierarchyInstancesAndCamera) {
 }
 
 TEST(GltfLoader, BinaryGlbAndExternalBuffer) {
-  const Scene s = parse(glb(quad_document(""), quad_buffer()));
+  const Scene s = parse_gltf_text(glb(quad_document(""), quad_buffer()));
   EXPECT_EQ(s.instances.size(), 2u);
   test::ScratchFolder dir;
   dir.write("quad.bin", quad_buffer());
@@ -115,23 +115,23 @@ TEST(GltfLoader, UriEscapingTheFolderIsRefused) {
   dir.write("outside.bin", quad_buffer());
   std::filesystem::create_directories(dir / "scene");
   for (const std::string& uri : std::vector<std::string>{"../outside.bin", "..%2Foutside.bin"}) {
-    const std::string message = parse_error(quad_document(uri), dir / "scene");
+    const std::string message = gltf_parse_error(quad_document(uri), dir / "scene");
     EXPECT_NE(message.find("outside the scene's folder"), std::string::npos) << uri << ": " << message;
   }
   const std::string absolute = (dir / "outside.bin").string();
-  EXPECT_EQ(parse_error(quad_document(absolute), dir / "scene"),
+  EXPECT_EQ(gltf_parse_error(quad_document(absolute), dir / "scene"),
             "test.gltf: buffer or image uri: absolute path '" + absolute +
                 "' refused (scene files may only refer to files in their own folder; use --allow-external-paths to "
                 "permit it)");
-  EXPECT_EQ(parse_error(quad_document("../outside.bin"), dir / "scene"),
+  EXPECT_EQ(gltf_parse_error(quad_document("../outside.bin"), dir / "scene"),
             "test.gltf: buffer or image uri: path '../outside.bin' leads outside the scene's folder (refused; use "
             "--allow-external-paths to permit it)");
   // A scene without a folder (read from memory) refers to no file at all.
-  EXPECT_NE(parse_error(quad_document("quad.bin")).find("cannot refer to the file 'quad.bin'"), std::string::npos);
+  EXPECT_NE(gltf_parse_error(quad_document("quad.bin")).find("cannot refer to the file 'quad.bin'"), std::string::npos);
   LoadOptions allow;
   allow.allow_external_paths = true;
-  EXPECT_EQ(parse(quad_document("../outside.bin"), dir / "scene", allow).meshes.size(), 1u);
-  EXPECT_EQ(parse(quad_document(absolute), dir / "scene", allow).meshes.size(), 1u);
+  EXPECT_EQ(parse_gltf_text(quad_document("../outside.bin"), dir / "scene", allow).meshes.size(), 1u);
+  EXPECT_EQ(parse_gltf_text(quad_document(absolute), dir / "scene", allow).meshes.size(), 1u);
 }
 
 // A buffer the scene's folder lacks is looked for nowhere else (tinygltf would try the
@@ -142,7 +142,7 @@ TEST(GltfLoader, UriIsNotLookedForInTheWorkingFolder) {
   dir.write("quad.bin", quad_buffer());
   const auto previous = std::filesystem::current_path();
   std::filesystem::current_path(dir.path());
-  const std::string message = parse_error(quad_document("quad.bin"), dir / "scene");
+  const std::string message = gltf_parse_error(quad_document("quad.bin"), dir / "scene");
   std::filesystem::current_path(previous);
   EXPECT_NE(message.find("File not found : quad.bin"), std::string::npos) << message;
 }
@@ -155,20 +155,20 @@ std::string with_asset(const std::string& asset) {
 
 // glTF 2.0 §3.2: minVersion, when given, must be supported; otherwise version's major.
 TEST(GltfLoader, OnlyGltfTwoIsRead) {
-  EXPECT_EQ(parse(with_asset(R"({"version": "2.1"})")).instances.size(), 2u);  // minor versions add, compatibly
-  EXPECT_EQ(parse(with_asset(R"({"version": "3.0", "minVersion": "2.0"})")).instances.size(), 2u);
-  EXPECT_EQ(parse_error(with_asset(R"({"version": "7.0"})")),
+  EXPECT_EQ(parse_gltf_text(with_asset(R"({"version": "2.1"})")).instances.size(), 2u);  // minor versions add, compatibly
+  EXPECT_EQ(parse_gltf_text(with_asset(R"({"version": "3.0", "minVersion": "2.0"})")).instances.size(), 2u);
+  EXPECT_EQ(gltf_parse_error(with_asset(R"({"version": "7.0"})")),
             "test.gltf: glTF version 7.0 (asset.version) is not supported; Prism reads glTF 2.0");
-  EXPECT_EQ(parse_error(with_asset(R"({"version": "1.0"})")),
+  EXPECT_EQ(gltf_parse_error(with_asset(R"({"version": "1.0"})")),
             "test.gltf: glTF version 1.0 (asset.version) is not supported; Prism reads glTF 2.0");
-  EXPECT_EQ(parse_error(with_asset(R"({"version": "2.1", "minVersion": "2.1"})")),
+  EXPECT_EQ(gltf_parse_error(with_asset(R"({"version": "2.1", "minVersion": "2.1"})")),
             "test.gltf: the file needs glTF 2.1 (asset.minVersion); Prism reads glTF 2.0");
-  EXPECT_EQ(parse_error(with_asset(R"({"version": "two"})")),
+  EXPECT_EQ(gltf_parse_error(with_asset(R"({"version": "two"})")),
             "test.gltf: asset.version 'two' is not a glTF version (MAJOR.MINOR); Prism reads glTF 2.0");
-  EXPECT_EQ(parse_error(with_asset(R"({"version": "2."})")),
+  EXPECT_EQ(gltf_parse_error(with_asset(R"({"version": "2."})")),
             "test.gltf: asset.version '2.' is not a glTF version (MAJOR.MINOR); Prism reads glTF 2.0");
   // The version is reported even where the rest of the file does not read as glTF 2.0.
-  EXPECT_EQ(parse_error(R"({"asset": {"version": "7.0"}, "buffers": [{"byteLength": "many"}]})"),
+  EXPECT_EQ(gltf_parse_error(R"({"asset": {"version": "7.0"}, "buffers": [{"byteLength": "many"}]})"),
             "test.gltf: glTF version 7.0 (asset.version) is not supported; Prism reads glTF 2.0");
 }
 
@@ -200,7 +200,7 @@ TEST(GltfLoader, MaterialsExtensionsAndLights) {
               R"({"camera": 0, "translation": [0, 0, 5]}, {"translation": [1, 2, 3], "extensions": {"KHR_lights_punctual": {"light": 0}}},
                  {"extensions": {"KHR_lights_punctual": {"light": 1}}}, {"extensions": {"KHR_lights_punctual": {"light": 2}}}])");
   doc.replace(doc.find(R"("nodes": [0, 1, 3])"), 18, R"("nodes": [0, 1, 3, 4, 5, 6])");
-  const Scene s = parse(doc, dir.path());
+  const Scene s = parse_gltf_text(doc, dir.path());
   const Material& textured = s.materials[0];
   ASSERT_GE(textured.base_color_texture, 0);
   const TextureImage& t = s.textures[textured.base_color_texture];
@@ -245,7 +245,7 @@ TEST(GltfLoader, NormalTextureIsLinearDataWithItsScale) {
     {"normalTexture": {"index": 1}}])";
   const std::string top =
       R"("textures": [{"source": 0}, {"source": 1}], "images": [{"uri": "normal.png"}, {"uri": "grey.png"}],)";
-  const Scene s = parse(quad_document("quad.bin", top, materials), dir.path());
+  const Scene s = parse_gltf_text(quad_document("quad.bin", top, materials), dir.path());
   const Material& mapped = s.materials[0];
   ASSERT_GE(mapped.normal_texture, 0);
   EXPECT_NE(mapped.normal_texture, mapped.base_color_texture);
@@ -291,8 +291,8 @@ TEST(GltfLoader, ImagesDecodedTogetherOrOneAtATimeGiveTheSameScene) {
   constexpr std::uint64_t kTexels = 64 * 64 * 3, kCodes = 64 * 64 * 3;
   MemoryBudget roomy(5 * (kTexels + kCodes));  // all at once fits: decoded together
   MemoryBudget tight(5 * kTexels + kCodes);    // only one buffer at a time fits: one by one
-  const Scene together = parse(doc, dir.path(), LoadOptions{.memory_budget = &roomy});
-  const Scene one_by_one = parse(doc, dir.path(), LoadOptions{.memory_budget = &tight});
+  const Scene together = parse_gltf_text(doc, dir.path(), LoadOptions{.memory_budget = &roomy});
+  const Scene one_by_one = parse_gltf_text(doc, dir.path(), LoadOptions{.memory_budget = &tight});
   EXPECT_EQ(roomy.used_bytes(), 5 * kTexels);
   EXPECT_EQ(tight.used_bytes(), 5 * kTexels);
   ASSERT_EQ(together.textures.size(), 5u);
@@ -312,7 +312,7 @@ TEST(GltfLoader, ImagesDecodedTogetherOrOneAtATimeGiveTheSameScene) {
   // Too small for one at a time as well: the error names the first image that does not fit.
   MemoryBudget too_small(3 * kTexels + kCodes);
   const std::string message =
-      test::error_of<Error>([&] { parse(doc, dir.path(), LoadOptions{.memory_budget = &too_small}); });
+      test::error_of<Error>([&] { parse_gltf_text(doc, dir.path(), LoadOptions{.memory_budget = &too_small}); });
   EXPECT_NE(message.find("t2.png"), std::string::npos) << message;  // the 4th decode: t2 as metal-roughness
 }
 
@@ -324,7 +324,7 @@ TEST(GltfLoader, ImageErrorsComeInTheMaterialsOrder) {
   dir.write("t1.png", "\x89PNG\r\n\x1a\n truncated");
   dir.write("t2.png", "not an image at all");
   for (int run = 0; run < 8; ++run) {
-    const std::string message = test::error_of<IoError>([&] { parse(doc, dir.path()); });
+    const std::string message = test::error_of<IoError>([&] { parse_gltf_text(doc, dir.path()); });
     EXPECT_NE(message.find("t1.png"), std::string::npos) << message;
   }
 }
@@ -340,7 +340,7 @@ TEST(GltfLoader, VolumeThicknessAndAttenuation) {
                                 glass(R"({"thicknessFactor": 0.2})") + ", " +
                                 glass(R"({"thicknessFactor": 1, "attenuationColor": [0.5, 0.25, 1], "attenuationDistance": 2})") +
                                 ", " + glass(R"({"attenuationColor": [0.5, 0.5, 0.5], "attenuationDistance": 1})") + "]";
-  const Scene s = parse(quad_document(kDataUri + base64(quad_buffer()), "", materials));
+  const Scene s = parse_gltf_text(quad_document(kDataUri + base64(quad_buffer()), "", materials));
   ASSERT_EQ(s.materials.size(), 5u);
   EXPECT_TRUE(s.materials[0].thin_walled);
   EXPECT_TRUE(s.materials[1].thin_walled);  // thicknessFactor defaults to 0
@@ -365,7 +365,7 @@ TEST(GltfLoader, VolumeThicknessAndAttenuation) {
            {R"({"thicknessFactor": 1, "attenuationColor": [1, 0], "attenuationDistance": 1})",
             "attenuationColor must be an array of three numbers"},
            {R"({"thicknessFactor": -1})", "thicknessFactor must be"}}) {
-    const std::string message = parse_error(quad_document(kDataUri + base64(quad_buffer()), "", "[" + glass(volume) + "]"));
+    const std::string message = gltf_parse_error(quad_document(kDataUri + base64(quad_buffer()), "", "[" + glass(volume) + "]"));
     EXPECT_NE(message.find(expected), std::string::npos) << volume << " → " << message;
     EXPECT_NE(message.find("KHR_materials_volume"), std::string::npos) << message;
   }
@@ -391,7 +391,7 @@ TEST(GltfLoader, ClearcoatFactorsAndTextures) {
   const std::string top = R"("extensionsUsed": ["KHR_materials_clearcoat", "KHR_texture_transform"],
     "extensionsRequired": ["KHR_materials_clearcoat"],
     "textures": [{"source": 0}], "images": [{"uri": "coat.png"}],)";
-  const Scene s = parse(quad_document("quad.bin", top, materials), dir.path());
+  const Scene s = parse_gltf_text(quad_document("quad.bin", top, materials), dir.path());
   ASSERT_EQ(s.materials.size(), 5u);
   const Material& coated = s.materials[0];
   EXPECT_TRUE(coated.has_clearcoat());
@@ -429,7 +429,7 @@ TEST(GltfLoader, ClearcoatFactorsAndTextures) {
            {R"({"clearcoatFactor": 1, "clearcoatRoughnessFactor": -0.1})", "clearcoatRoughnessFactor must be in [0, 1]"},
            {R"({"clearcoatFactor": 1, "clearcoatTexture": {"index": 9}})", "texture 9 does not exist"},
            {R"({"clearcoatFactor": 1, "clearcoatTexture": 0})", "expected a textureInfo object"}}) {
-    const std::string message = parse_error(quad_document(kDataUri + base64(quad_buffer()), "",
+    const std::string message = gltf_parse_error(quad_document(kDataUri + base64(quad_buffer()), "",
                                                           R"([{"extensions": {"KHR_materials_clearcoat": )" + coat + "}}]"));
     EXPECT_NE(message.find(expected), std::string::npos) << coat << " → " << message;
     EXPECT_NE(message.find("KHR_materials_clearcoat"), std::string::npos) << message;
@@ -462,7 +462,7 @@ TEST(GltfLoader, QuantizedAttributesAreRead) {
   "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "indices": 3}]}],
   "nodes": [{"mesh": 0, "scale": [0.001, 0.001, 0.001]}],
   "scenes": [{"nodes": [0]}]})";
-  const Scene s = parse(doc);
+  const Scene s = parse_gltf_text(doc);
   ASSERT_EQ(s.meshes.size(), 1u);
   const TriangleMesh& m = s.meshes[0];
   EXPECT_EQ(m.positions[2], Vec3f(1000, 1000, 0));
@@ -497,7 +497,7 @@ TEST(GltfLoader, SpecularAndIorOnOpaqueMaterials) {
                     "KHR_materials_transmission": {"transmissionFactor": 1}}}])";
   const std::string top = R"("extensionsUsed": ["KHR_materials_specular", "KHR_texture_transform"],
     "textures": [{"source": 0}], "images": [{"uri": "specular.png"}],)";
-  const Scene s = parse(quad_document("quad.bin", top, materials), dir.path());
+  const Scene s = parse_gltf_text(quad_document("quad.bin", top, materials), dir.path());
   ASSERT_EQ(s.materials.size(), 5u);
   EXPECT_EQ(s.materials[0].type, MaterialType::metallic_roughness);
   EXPECT_FLOAT_EQ(s.materials[0].specular, 0.5f);
@@ -522,7 +522,7 @@ TEST(GltfLoader, SpecularAndIorOnOpaqueMaterials) {
            {R"({"specularFactor": 2})", "specularFactor must be in [0, 1]"},
            {R"({"specularColorFactor": [1, -1, 1]})", "components must be finite and ≥ 0"},
            {R"({"specularColorFactor": [1, 1]})", "must be an array of three numbers"}}) {
-    const std::string message = parse_error(quad_document(kDataUri + base64(quad_buffer()), "",
+    const std::string message = gltf_parse_error(quad_document(kDataUri + base64(quad_buffer()), "",
                                                           R"([{"extensions": {"KHR_materials_specular": )" + specular + "}}]"));
     EXPECT_NE(message.find(expected), std::string::npos) << specular << " → " << message;
   }
@@ -543,7 +543,7 @@ TEST(GltfLoader, MaterialVariantsPickTheMappedMaterials) {
   };
   const std::string mappings = R"([{"material": 1, "variants": [0]}, {"material": 2, "variants": [1]}])";
   const auto material_of = [&](const std::string& variant) {
-    const Scene s = parse(document(mappings, top), {}, LoadOptions{.material_variant = variant});
+    const Scene s = parse_gltf_text(document(mappings, top), {}, LoadOptions{.material_variant = variant});
     EXPECT_EQ(s.material_variants, (std::vector<std::string>{"red", "blue", "plain"}));
     for (const TriangleMesh& m : s.meshes) EXPECT_EQ(m.material, s.meshes[0].material);
     for (const std::string& w : s.warnings) EXPECT_EQ(w.find("KHR_materials_variants"), std::string::npos) << w;
@@ -554,7 +554,7 @@ TEST(GltfLoader, MaterialVariantsPickTheMappedMaterials) {
   EXPECT_EQ(material_of("blue"), "blue");
   EXPECT_EQ(material_of("plain"), "own");  // a variant no mapping lists: the primitive's own
   const std::string unknown = test::error_of<UsageError>(
-      [&] { parse(document(mappings, top), {}, LoadOptions{.material_variant = "green"}); });
+      [&] { parse_gltf_text(document(mappings, top), {}, LoadOptions{.material_variant = "green"}); });
   EXPECT_NE(unknown.find("test.gltf: no material variant 'green' (variants: red, blue, plain)"), std::string::npos)
       << unknown;
   for (const auto& [bad_mappings, expected] : std::initializer_list<std::pair<std::string, std::string>>{
@@ -564,12 +564,12 @@ TEST(GltfLoader, MaterialVariantsPickTheMappedMaterials) {
            {R"([{"material": 9, "variants": [0]}])", "material 9 does not exist"}}) {
     const std::string doc = document(bad_mappings, top);
     const std::string message =
-        test::error_of<SceneError>([&] { parse(doc, {}, LoadOptions{.material_variant = "red"}); });
+        test::error_of<SceneError>([&] { parse_gltf_text(doc, {}, LoadOptions{.material_variant = "red"}); });
     EXPECT_NE(message.find(expected), std::string::npos) << bad_mappings << " → " << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
   }
   const std::string unnamed = test::error_of<SceneError>([&] {
-    parse(document(mappings, R"("extensions": {"KHR_materials_variants": {"variants": [{"label": "x"}]}},)"));
+    parse_gltf_text(document(mappings, R"("extensions": {"KHR_materials_variants": {"variants": [{"label": "x"}]}},)"));
   });
   EXPECT_NE(unnamed.find("extensions.KHR_materials_variants.variants[0]: 'name' must be a string"), std::string::npos)
       << unnamed;
@@ -606,13 +606,13 @@ TEST(GltfLoader, BadInputIsAOneLineError) {
       {std::string("glTF\x02\0\0\0\xff\xff\xff\x7f", 12), "test.gltf: "},
   };
   for (const auto& [text, expected] : cases) {
-    const std::string message = parse_error(text);
+    const std::string message = gltf_parse_error(text);
     EXPECT_NE(message.find(expected), std::string::npos) << text.substr(0, 80) << " → " << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
   }
   // Every truncation of a GLB fails cleanly.
   const std::string binary = glb(quad_document(""), quad_buffer());
-  for (std::size_t n = 0; n < binary.size(); n += 7) EXPECT_THROW(parse(binary.substr(0, n)), SceneError) << n;
+  for (std::size_t n = 0; n < binary.size(); n += 7) EXPECT_THROW(parse_gltf_text(binary.substr(0, n)), SceneError) << n;
 }
 
 }  // namespace

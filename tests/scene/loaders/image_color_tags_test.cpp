@@ -28,7 +28,7 @@
 namespace prism {
 namespace {
 
-const std::filesystem::path kData = std::filesystem::path(PRISM_SOURCE_DIR) / "tests/scene/loaders/data/color_tags";
+const std::filesystem::path kColorTagsData = std::filesystem::path(PRISM_SOURCE_DIR) / "tests/scene/loaders/data/color_tags";
 
 // The row of codes every RGB image holds (icc_texture_images.py's ROW).
 constexpr int kRow = 8;
@@ -55,12 +55,12 @@ constexpr std::array<double, 3> kP3LargeTablesToRec709At200_100_50 = {0.6788428,
 
 TextureImage read_color(const std::string& file, TextureContent content = TextureContent::color,
                         MemoryBudget* budget = nullptr) {
-  return read_texture_file(kData / file, TextureEncoding::srgb, TextureLimits(64, budget), content);
+  return read_texture_file(kColorTagsData / file, TextureEncoding::srgb, TextureLimits(64, budget), content);
 }
 
 // The file decoded as a glTF image is: its tags ignored.
 TextureImage read_ignoring_tags(const std::string& file) {
-  return decode_texture_memory(read_file_bytes(kData / file, "image"), file, TextureEncoding::srgb, TextureLimits(64),
+  return decode_texture_memory(read_file_bytes(kColorTagsData / file, "image"), file, TextureEncoding::srgb, TextureLimits(64),
                                TextureContent::color, ImageColorTagUse::ignore);
 }
 
@@ -170,7 +170,7 @@ TEST(ImageColorTags, GltfImagesAndDataTexturesIgnoreTags) {
   EXPECT_EQ(gltf.primaries_note, "");
   // Data (a roughness or normal map) is read as stored whatever it says.
   const TextureImage data =
-      read_texture_file(kData / "display-p3-icc.png", TextureEncoding::linear, TextureLimits(64), TextureContent::data);
+      read_texture_file(kColorTagsData / "display-p3-icc.png", TextureEncoding::linear, TextureLimits(64), TextureContent::data);
   EXPECT_TRUE(data.has_codes());
   EXPECT_FLOAT_EQ(data.value(3 * 3), 200.0f / 255.0f);
 }
@@ -247,17 +247,17 @@ TEST(ImageColorTags, FilesWithTagsAreFoundFromTheirHeadersAlone) {
   // get their own texels) and an untagged one once.
   for (const char* file : {"display-p3-icc.png", "display-p3-cicp.png", "rec2020-gamma18-chrm.png", "corrupt-iccp.png",
                            "display-p3-large-icc.jpg", "gray-gamma18-icc.png"})
-    EXPECT_TRUE(image_file_has_color_tags(kData / file)) << file;
+    EXPECT_TRUE(image_file_has_color_tags(kColorTagsData / file)) << file;
   // An sRGB chunk overrides the gAMA beside it.
-  EXPECT_FALSE(image_file_has_color_tags(kData / "srgb-chunk.png"));
-  EXPECT_FALSE(image_file_has_color_tags(kData / "no-such-file.png"));
-  EXPECT_FALSE(image_file_has_color_tags(kData / "srgb-lcms2.icc"));
+  EXPECT_FALSE(image_file_has_color_tags(kColorTagsData / "srgb-chunk.png"));
+  EXPECT_FALSE(image_file_has_color_tags(kColorTagsData / "no-such-file.png"));
+  EXPECT_FALSE(image_file_has_color_tags(kColorTagsData / "srgb-lcms2.icc"));
 }
 
 TEST(ImageColorTags, JsonSceneTexturesFollowTheirTags) {
   // Through a loader: the texture is converted, and the scene's warnings say so.
   test::ScratchFolder dir;
-  std::filesystem::copy_file(kData / "display-p3-icc.png", dir.path() / "p3.png");
+  std::filesystem::copy_file(kColorTagsData / "display-p3-icc.png", dir.path() / "p3.png");
   const std::string text = R"({"format": "prism-scene/1", "name": "q", "materials": [
       {"name": "m", "type": "diffuse", "base_color_texture": "p3.png"}],
     "meshes": [{"name": "q", "material": "m", "positions": [[0,0,0], [1,0,0], [0,1,0]],

@@ -25,31 +25,31 @@ std::string scene_with(std::string_view material, std::string_view lights = "[]"
   "meshes": [{"name": "q", "material": "m", "positions": [[0,0,0], [1,0,0], [1,1,0]], "indices": [0,1,2]}]})";
 }
 
-Scene parse(std::string_view text) { return loaders::parse_json_scene(text, "test.json", {}, "test", {}); }
+Scene parse_spectra_json(std::string_view text) { return loaders::parse_json_scene(text, "test.json", {}, "test", {}); }
 
-std::string parse_error(std::string_view text) {
-  return error_of<SceneError>([&] { parse(text); });
+std::string spectra_parse_error(std::string_view text) {
+  return error_of<SceneError>([&] { parse_spectra_json(text); });
 }
 
 TEST(JsonSceneSpectra, EmittersTakeNamedBlackbodyAndTabulatedSpectra) {
-  const Scene named = parse(scene_with(R"("emission": {"spectrum": "F11", "luminance_nits": 10})"));
+  const Scene named = parse_spectra_json(scene_with(R"("emission": {"spectrum": "F11", "luminance_nits": 10})"));
   const Emission& e = named.materials[0].emission;
   ASSERT_TRUE(e.spectrum);
   EXPECT_EQ(*e.spectrum, *named_emission_spectrum("F11"));
   EXPECT_EQ(e.color, emission_spectrum_srgb(*e.spectrum));  // the RGB approximation
   EXPECT_TRUE(named.materials[0].is_emissive());
 
-  const Scene hot = parse(scene_with(R"("emission": {"spectrum": {"blackbody_k": 2856}, "luminance_nits": 10})"));
+  const Scene hot = parse_spectra_json(scene_with(R"("emission": {"spectrum": {"blackbody_k": 2856}, "luminance_nits": 10})"));
   EXPECT_EQ(*hot.materials[0].emission.spectrum, blackbody_emission_spectrum(2856.0));
 
-  const Scene points = parse(scene_with(
+  const Scene points = parse_spectra_json(scene_with(
       R"("emission": {"spectrum": {"wavelengths_nm": [400, 500, 600, 700], "values": [0, 8, 15.6, 18.4]},
                       "luminance_nits": 10})"));
   const auto& s = *points.materials[0].emission.spectrum;
   EXPECT_DOUBLE_EQ(s(550.0), 11.8);
   EXPECT_DOUBLE_EQ(s(750.0), 18.4);  // held past the last point
 
-  const Scene light = parse(scene_with(R"("base_color": [0.5, 0.5, 0.5])",
+  const Scene light = parse_spectra_json(scene_with(R"("base_color": [0.5, 0.5, 0.5])",
                                        R"([{"type": "point", "position": [0, 1, 0], "intensity_cd": 5,
                                             "spectrum": "A"}])"));
   ASSERT_TRUE(light.lights[0].spectrum);
@@ -60,7 +60,7 @@ TEST(JsonSceneSpectra, EmittersTakeNamedBlackbodyAndTabulatedSpectra) {
 }
 
 TEST(JsonSceneSpectra, ReflectancesAreMeasuredData) {
-  const Scene scene = parse(scene_with(
+  const Scene scene = parse_spectra_json(scene_with(
       R"("base_color_spectrum": {"wavelengths_nm": [400, 550, 700], "values": [0.1, 0.5, 0.8]})"));
   const Material& m = scene.materials[0];
   ASSERT_TRUE(m.base_color_spectrum);
@@ -96,7 +96,7 @@ TEST(JsonSceneSpectra, CsvColumnsAreReadByName) {
 // The writers are for generated RGB scenes: a spectrum is refused, not dropped.
 TEST(JsonSceneSpectra, WritersRefuseSpectraInsteadOfDroppingThem) {
   test::ScratchFolder dir;
-  const Scene scene = parse(scene_with(R"("emission": {"spectrum": "F11", "luminance_nits": 10})"));
+  const Scene scene = parse_spectra_json(scene_with(R"("emission": {"spectrum": "F11", "luminance_nits": 10})"));
   for (const auto& write : {&loaders::write_scene_json, &loaders::write_scene_pbrt, &loaders::write_scene_glb}) {
     const std::string message = error_of<UsageError>([&] { write(scene, dir / "out"); });
     EXPECT_NE(message.find("material 'm' has a spectrum"), std::string::npos) << message;
@@ -138,7 +138,7 @@ TEST(JsonSceneSpectra, RejectsSpectraThatCannotBe) {
        "either 'color' or 'spectrum'"},
   };
   for (const auto& c : cases) {
-    const std::string message = parse_error(c.text);
+    const std::string message = spectra_parse_error(c.text);
     EXPECT_NE(message.find(c.expected), std::string::npos) << "expected '" << c.expected << "' in: " << message;
     EXPECT_NE(message.find("test.json: "), std::string::npos) << message;
   }

@@ -31,7 +31,7 @@ std::string quad_scene(std::string_view material_extra = "", std::string_view to
          "\n}\n";
 }
 
-Scene parse(std::string_view text, const LoadOptions& options = {}) {
+Scene parse_json_text(std::string_view text, const LoadOptions& options = {}) {
   return parse_json_scene(text, "test.json", {}, "test", options);
 }
 
@@ -59,7 +59,7 @@ TEST(JsonScene, BuiltinDispersionPrismUsesBk7Sellmeier) {
 }
 
 TEST(JsonScene, ReadsGeometryCameraAndRenderSettings) {
-  const Scene scene = parse(quad_scene("", R"(,
+  const Scene scene = parse_json_text(quad_scene("", R"(,
   "render": {"width": 64, "height": 32, "spp": 8, "max_depth": 5},
   "camera": {"type": "thin_lens", "eye": [0,0,5], "target": [0,0,0], "fov_degrees": 30,
              "aperture_radius": 0.1, "focus_distance": 4, "exposure": {"f_number": 8, "shutter_seconds": 0.01}})"));
@@ -77,7 +77,7 @@ TEST(JsonScene, ReadsGeometryCameraAndRenderSettings) {
 TEST(JsonScene, ConvertsPhotometricUnits) {
   // Emission power: Φ = π L A for a one-sided Lambertian emitter of A = 2 m² (units in cm,
   // so 2 units² = 2e-4 m²).
-  const Scene scene = parse(quad_scene(R"(, "emission": {"color": [1,1,1], "power_lm": 100})",
+  const Scene scene = parse_json_text(quad_scene(R"(, "emission": {"color": [1,1,1], "power_lm": 100})",
                                        R"(, "meters_per_unit": 0.01,
   "lights": [
     {"type": "point", "position": [0,1,0], "power_lm": 1000},
@@ -109,7 +109,7 @@ TEST(JsonScene, InstancesTransformsAndSpheres) {
     {"name": "ball", "material": "m", "shape": "sphere", "center": [0,0,0], "radius": 1, "subdivisions": 4,
      "prototype": true}
   ])");
-  const Scene scene = parse(text);
+  const Scene scene = parse_json_text(text);
   ASSERT_EQ(scene.meshes.size(), 2u);
   EXPECT_EQ(scene.meshes[1].triangle_count(), 2u * 4 * 8 - 2 * 8);  // pole bands: one triangle per segment
   // Two explicit instances plus the non-prototype quad placed once in place.
@@ -128,45 +128,45 @@ TEST(JsonScene, PrototypesWithoutInstancesAreNotPlaced) {
   text.replace(text.find("\n  ]\n}"), 4, R"(,
     {"name": "ball", "material": "m", "shape": "sphere", "center": [0,0,0], "radius": 1, "prototype": true}
   ])");
-  const Scene scene = parse(text);
+  const Scene scene = parse_json_text(text);
   ASSERT_EQ(scene.meshes.size(), 2u);
   ASSERT_EQ(scene.instances.size(), 1u);  // the quad alone
   EXPECT_EQ(scene.instances[0].mesh, 0u);
   std::string only = quad_scene();
   only.replace(only.find(R"("indices": [0,1,2, 0,2,3]})"), 29, R"("indices": [0,1,2, 0,2,3], "prototype": true})");
-  const std::string message = error_of<SceneError>([&] { parse(only); });
+  const std::string message = error_of<SceneError>([&] { parse_json_text(only); });
   EXPECT_NE(message.find("meshes: every mesh is a prototype"), std::string::npos) << message;
 }
 
 TEST(JsonScene, MalformedJsonReportsLineAndColumn) {
   const std::string text = "{\n  \"format\": \"prism-scene/1\",\n  \"materials\": [,]\n}\n";
-  const std::string message = error_of<SceneError>([&] { parse(text); });
+  const std::string message = error_of<SceneError>([&] { parse_json_text(text); });
   EXPECT_NE(message.find("test.json:3:17: malformed JSON"), std::string::npos) << message;
   EXPECT_EQ(message.find('\n'), std::string::npos);
-  EXPECT_NE(error_of<SceneError>([] { parse(""); }).find("test.json:1:1:"), std::string::npos);
+  EXPECT_NE(error_of<SceneError>([] { parse_json_text(""); }).find("test.json:1:1:"), std::string::npos);
   const std::string full = quad_scene();
   const std::string truncated = full.substr(0, full.size() / 2);
-  EXPECT_NE(error_of<SceneError>([&] { parse(truncated); }).find("malformed JSON"), std::string::npos);
+  EXPECT_NE(error_of<SceneError>([&] { parse_json_text(truncated); }).find("malformed JSON"), std::string::npos);
 }
 
 TEST(JsonScene, NumberTooLargeForADoubleIsMalformedJson) {
   // Regression (fuzz_json_scene): nlohmann throws out_of_range 406, not parse_error, for a
   // number that overflows a double; it escaped as an uncaught exception.
   const std::string text = "{\"format\": \"prism-scene/1\",\n \"meters_per_unit\": 7590048281e8888888}";
-  const std::string message = error_of<SceneError>([&] { parse(text); });
+  const std::string message = error_of<SceneError>([&] { parse_json_text(text); });
   EXPECT_NE(message.find("test.json:2:21: malformed JSON: "), std::string::npos) << message;
   EXPECT_NE(message.find("number overflow"), std::string::npos) << message;
 }
 
 TEST(JsonScene, RenderObjectMayChooseTheNormalMappingModel) {
-  EXPECT_FALSE(parse(quad_scene()).default_normal_mapping.has_value());  // none: the renderer's default
-  const Scene micro = parse(quad_scene("", R"(, "render": {"normal_mapping": "microfacet"})"));
+  EXPECT_FALSE(parse_json_text(quad_scene()).default_normal_mapping.has_value());  // none: the renderer's default
+  const Scene micro = parse_json_text(quad_scene("", R"(, "render": {"normal_mapping": "microfacet"})"));
   ASSERT_TRUE(micro.default_normal_mapping.has_value());
   EXPECT_EQ(*micro.default_normal_mapping, NormalMapping::microfacet);
-  EXPECT_EQ(parse(quad_scene("", R"(, "render": {"normal_mapping": "classic"})")).default_normal_mapping,
+  EXPECT_EQ(parse_json_text(quad_scene("", R"(, "render": {"normal_mapping": "classic"})")).default_normal_mapping,
             NormalMapping::classic);
   const std::string message =
-      error_of<SceneError>([] { parse(quad_scene("", R"(, "render": {"normal_mapping": "bent"})")); });
+      error_of<SceneError>([] { parse_json_text(quad_scene("", R"(, "render": {"normal_mapping": "bent"})")); });
   EXPECT_NE(message.find("render.normal_mapping: unknown value 'bent' (expected one of: classic, microfacet)"),
             std::string::npos)
       << message;
@@ -174,7 +174,7 @@ TEST(JsonScene, RenderObjectMayChooseTheNormalMappingModel) {
 
 // Two values for one key are a mistake to report, not a choice to make silently.
 TEST(JsonScene, DuplicateKeysAreMalformedJson) {
-  const std::string message = error_of<SceneError>([] { parse(quad_scene(R"(, "type": "conductor")")); });
+  const std::string message = error_of<SceneError>([] { parse_json_text(quad_scene(R"(, "type": "conductor")")); });
   EXPECT_NE(message.find("test.json:5:69: malformed JSON: duplicate key \"type\""), std::string::npos) << message;
 }
 
@@ -189,26 +189,26 @@ TEST(JsonScene, SchemaErrorsNameTheJsonPath) {
   std::string text = R"({"format": "prism-scene/1", "materials": [
     {"name": "a", "type": "diffuse"}, {"name": "b", "type": "mirror"},
     {"name": "c", "type": "conductor", "roughness": "rough"}]})";
-  EXPECT_NE(error_of<SceneError>([&] { parse(text); }).find("test.json: materials[2].roughness: expected a number"),
+  EXPECT_NE(error_of<SceneError>([&] { parse_json_text(text); }).find("test.json: materials[2].roughness: expected a number"),
             std::string::npos);
-  EXPECT_NE(error_of<SceneError>([] { parse(quad_scene(R"(, "roughness": 2)")); }).find("materials[0].roughness"),
+  EXPECT_NE(error_of<SceneError>([] { parse_json_text(quad_scene(R"(, "roughness": 2)")); }).find("materials[0].roughness"),
             std::string::npos);
-  EXPECT_NE(error_of<SceneError>([] { parse(R"({"format": "prism-scene/2"})"); }).find("unsupported format"),
+  EXPECT_NE(error_of<SceneError>([] { parse_json_text(R"({"format": "prism-scene/2"})"); }).find("unsupported format"),
             std::string::npos);
-  EXPECT_NE(error_of<SceneError>([] { parse(R"({"name": "x"})"); }).find("missing required key 'format'"),
+  EXPECT_NE(error_of<SceneError>([] { parse_json_text(R"({"name": "x"})"); }).find("missing required key 'format'"),
             std::string::npos);
-  EXPECT_NE(error_of<SceneError>([] { parse(R"([1, 2])"); }).find("expected an object"), std::string::npos);
+  EXPECT_NE(error_of<SceneError>([] { parse_json_text(R"([1, 2])"); }).find("expected an object"), std::string::npos);
   // The quad's material with one of its members changed.
   const auto changed = [](std::string_view from, std::string_view to) {
     std::string text = quad_scene();
     text.replace(text.find(from), from.size(), to);
     return text;
   };
-  EXPECT_NE(error_of<SceneError>([&] { parse(changed(R"("type": "diffuse")", R"("type": "velvet")")); })
+  EXPECT_NE(error_of<SceneError>([&] { parse_json_text(changed(R"("type": "diffuse")", R"("type": "velvet")")); })
                 .find("unknown value 'velvet'"),
             std::string::npos);
   // Out of single precision (JSON has no NaN/Inf literals; this is the way to get an Inf).
-  EXPECT_NE(error_of<SceneError>([&] { parse(changed("[0.5, 0.5, 0.5]", "[1e39, 0, 0]")); })
+  EXPECT_NE(error_of<SceneError>([&] { parse_json_text(changed("[0.5, 0.5, 0.5]", "[1e39, 0, 0]")); })
                 .find("materials[0].base_color[0]"),
             std::string::npos);
 }
@@ -223,22 +223,22 @@ TEST(JsonScene, ErrorsInMeshArraysNameTheElement) {
            std::string(positions) + R"(, "indices": )" + std::string(indices) + "}]}";
   };
   // Flat: the fifth number; nested: the second vertex's third number.
-  EXPECT_NE(error_of<SceneError>([&] { parse(mesh_scene("[0,0,0, 1,\"x\",0, 0,1,0]", "[0,1,2]")); })
+  EXPECT_NE(error_of<SceneError>([&] { parse_json_text(mesh_scene("[0,0,0, 1,\"x\",0, 0,1,0]", "[0,1,2]")); })
                 .find("test.json: meshes[1].positions[4]: expected a number"),
             std::string::npos);
-  EXPECT_NE(error_of<SceneError>([&] { parse(mesh_scene("[[0,0,0], [1,0,1e39], [0,1,0]]", "[0,1,2]")); })
+  EXPECT_NE(error_of<SceneError>([&] { parse_json_text(mesh_scene("[[0,0,0], [1,0,1e39], [0,1,0]]", "[0,1,2]")); })
                 .find("test.json: meshes[1].positions[1][2]:"),
             std::string::npos);
-  EXPECT_NE(error_of<SceneError>([&] { parse(mesh_scene("[[0,0,0], [1,0], [0,1,0]]", "[0,1,2]")); })
+  EXPECT_NE(error_of<SceneError>([&] { parse_json_text(mesh_scene("[[0,0,0], [1,0], [0,1,0]]", "[0,1,2]")); })
                 .find("meshes[1].positions[1]:"),
             std::string::npos);
-  EXPECT_NE(error_of<SceneError>([&] { parse(mesh_scene("[0,0,0, 1,0,0, 0,1,0]", "[0,1,-2]")); })
+  EXPECT_NE(error_of<SceneError>([&] { parse_json_text(mesh_scene("[0,0,0, 1,0,0, 0,1,0]", "[0,1,-2]")); })
                 .find("test.json: meshes[1].indices[2]:"),
             std::string::npos);
 }
 
 TEST(JsonScene, UnknownKeysGiveOneWarning) {
-  const Scene scene = parse(quad_scene(R"(, "sheen": 1, "subsurface": 0.5)", R"(, "extras": {})"));
+  const Scene scene = parse_json_text(quad_scene(R"(, "sheen": 1, "subsurface": 0.5)", R"(, "extras": {})"));
   ASSERT_EQ(scene.warnings.size(), 1u);
   EXPECT_NE(scene.warnings[0].find("materials[0].sheen"), std::string::npos);
   EXPECT_NE(scene.warnings[0].find("materials[0].subsurface"), std::string::npos);
@@ -248,19 +248,19 @@ TEST(JsonScene, UnknownKeysGiveOneWarning) {
 TEST(JsonScene, BadGeometryIsAnErrorAndZeroAreaTrianglesAreDropped) {
   std::string bad_index = quad_scene();
   bad_index.replace(bad_index.find("0,2,3"), 5, "0,2,9");
-  EXPECT_NE(error_of<SceneError>([&] { parse(bad_index); }).find("index 9 (at 5) is out of range"), std::string::npos);
+  EXPECT_NE(error_of<SceneError>([&] { parse_json_text(bad_index); }).find("index 9 (at 5) is out of range"), std::string::npos);
   std::string negative = quad_scene();
   negative.replace(negative.find("0,2,3"), 5, "0,2,-1");
-  EXPECT_NE(error_of<SceneError>([&] { parse(negative); }).find("meshes[0].indices[5]"), std::string::npos);
+  EXPECT_NE(error_of<SceneError>([&] { parse_json_text(negative); }).find("meshes[0].indices[5]"), std::string::npos);
   std::string degenerate = quad_scene();
   degenerate.replace(degenerate.find("0,2,3"), 5, "0,2,3, 1,1,2, 0,1,1");
-  const Scene scene = parse(degenerate);
+  const Scene scene = parse_json_text(degenerate);
   EXPECT_EQ(scene.triangle_count(), 2u);
   ASSERT_EQ(scene.warnings.size(), 1u);
   EXPECT_NE(scene.warnings[0].find("dropped 2 zero-area triangles"), std::string::npos);
   std::string unknown_material = quad_scene();
   unknown_material.replace(unknown_material.find("\"material\": \"m\""), 15, "\"material\": \"z\"");
-  EXPECT_NE(error_of<SceneError>([&] { parse(unknown_material); }).find("no material named 'z'"), std::string::npos);
+  EXPECT_NE(error_of<SceneError>([&] { parse_json_text(unknown_material); }).find("no material named 'z'"), std::string::npos);
 }
 
 TEST(JsonScene, MissingFileIsAnIoError) {
@@ -329,7 +329,7 @@ TEST(JsonScene, FileReferencesMayNotLeaveTheScenesFolder) {
   const auto link = scene_with("link.png");
   EXPECT_NE(error_of<SceneError>([&] { load_scene(link.string()); }).find("leads outside"), std::string::npos);
   // Built-in (embedded) scenes may not refer to files at all.
-  EXPECT_NE(error_of<SceneError>([] { parse(quad_scene(R"(, "base_color_texture": "a.png")")); }).find("built-in"),
+  EXPECT_NE(error_of<SceneError>([] { parse_json_text(quad_scene(R"(, "base_color_texture": "a.png")")); }).find("built-in"),
             std::string::npos);
 }
 

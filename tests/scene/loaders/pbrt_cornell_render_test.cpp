@@ -14,7 +14,7 @@ namespace {
 
 using test::BlockEstimate;
 
-BlockEstimate block(const Film& film, int x0, int y0, int x1, int y1) {
+BlockEstimate cornell_block(const Film& film, int x0, int y0, int x1, int y1) {
   return test::block_estimate(film, x0, y0, x1, y1);
 }
 
@@ -35,8 +35,8 @@ TEST(PbrtLoader, CornellBoxRendersLikeTheBuiltIn) {
   const int h = s.width / 2;
   const int regions[5][4] = {{0, 0, 32, 32}, {0, 0, h, h}, {h, 0, 32, h}, {0, h, h, 32}, {h, h, 32, 32}};
   for (const auto& r : regions) {
-    const BlockEstimate ea = block(a.film, r[0], r[1], r[2], r[3]);
-    const BlockEstimate eb = block(b.film, r[0], r[1], r[2], r[3]);
+    const BlockEstimate ea = cornell_block(a.film, r[0], r[1], r[2], r[3]);
+    const BlockEstimate eb = cornell_block(b.film, r[0], r[1], r[2], r[3]);
     for (int c = 0; c < 3; ++c) {
       const double sigma = std::sqrt(ea.variance[c] + eb.variance[c]);
       EXPECT_GT(ea.mean[c], 0.0);

@@ -17,12 +17,12 @@ namespace {
 
 const std::filesystem::path kScenes = std::filesystem::path(PRISM_SOURCE_DIR) / "data/scenes";
 
-Scene parse(std::string_view text, const std::filesystem::path& dir = {}) {
+Scene parse_pbrt_text(std::string_view text, const std::filesystem::path& dir = {}) {
   return parse_pbrt_scene(text, "test.pbrt", dir);
 }
 
-std::string parse_error(std::string_view text, const std::filesystem::path& dir = {}) {
-  return test::error_of<SceneError>([&] { parse(text, dir); });
+std::string pbrt_parse_error(std::string_view text, const std::filesystem::path& dir = {}) {
+  return test::error_of<SceneError>([&] { parse_pbrt_text(text, dir); });
 }
 
 constexpr std::string_view kTriangle =
@@ -91,7 +91,7 @@ TEST(PbrtLoader, GlossyVariantMapsMaterials) {
 }
 
 TEST(PbrtLoader, TransformsInstancesAndNamedMaterials) {
-  const Scene s = parse(std::string(R"(
+  const Scene s = parse_pbrt_text(std::string(R"(
 WorldBegin
 MakeNamedMaterial "m" "string type" "diffuse" "rgb reflectance" [0.2 0.3 0.4]
 ObjectBegin "tri"
@@ -122,7 +122,7 @@ ConcatTransform [1 0 0 0  0 1 0 0  0 0 1 0  0 0 5 1]
 
 TEST(PbrtLoader, MaterialMappings) {
   const auto material_of = [](std::string_view decl) {
-    const Scene s = parse("WorldBegin\n" + std::string(decl) + "\n" + std::string(kTriangle));
+    const Scene s = parse_pbrt_text("WorldBegin\n" + std::string(decl) + "\n" + std::string(kTriangle));
     return std::make_pair(s.materials[s.meshes[0].material], s.warnings);
   };
   auto [schlick, w1] = material_of(R"(Material "conductor" "rgb reflectance" [0.9 0.8 0.7] "float roughness" 0.25 "bool remaproughness" false)");
@@ -133,8 +133,8 @@ TEST(PbrtLoader, MaterialMappings) {
   EXPECT_EQ(copper.conductor_name, "Cu");
   EXPECT_FLOAT_EQ(copper.roughness, 0.0f);
   // pbrt-v4's maxdepth 0 is emitted light only, which Prism renders as such (not depth 1).
-  EXPECT_EQ(parse("Integrator \"path\" \"integer maxdepth\" 0\nWorldBegin\n" + std::string(kTriangle)).default_max_depth, 0);
-  EXPECT_FALSE(parse_error("Integrator \"path\" \"integer maxdepth\" -1\nWorldBegin\n" + std::string(kTriangle)).empty());
+  EXPECT_EQ(parse_pbrt_text("Integrator \"path\" \"integer maxdepth\" 0\nWorldBegin\n" + std::string(kTriangle)).default_max_depth, 0);
+  EXPECT_FALSE(pbrt_parse_error("Integrator \"path\" \"integer maxdepth\" -1\nWorldBegin\n" + std::string(kTriangle)).empty());
   auto [glass, w3] = material_of(R"(Material "dielectric" "float eta" 1.33)");
   EXPECT_EQ(glass.type, MaterialType::dielectric);
   EXPECT_FLOAT_EQ(glass.ior, 1.33f);
@@ -289,17 +289,17 @@ TEST(PbrtLoader, DisplacementIsABumpMap) {
   EXPECT_FLOAT_EQ(s.textures[static_cast<std::size_t>(m.bump_texture)].value(0), 128.0f / 255.0f);
   for (const std::string& w : s.warnings) EXPECT_EQ(w.find("displacement"), std::string::npos) << w;
   const std::string flat = "WorldBegin\nMaterial \"diffuse\" \"float displacement\" 0.1\n";
-  const Scene constant = parse(flat + std::string(kTriangle));
+  const Scene constant = parse_pbrt_text(flat + std::string(kTriangle));
   EXPECT_EQ(constant.materials[constant.meshes[0].material].bump_texture, -1);
   for (const std::string& w : constant.warnings) EXPECT_EQ(w.find("displacement"), std::string::npos) << w;
-  EXPECT_NE(parse_error("WorldBegin\n\nMaterial \"diffuse\" \"texture displacement\" \"nope\"\n").find(":3:"),
+  EXPECT_NE(pbrt_parse_error("WorldBegin\n\nMaterial \"diffuse\" \"texture displacement\" \"nope\"\n").find(":3:"),
             std::string::npos);
 }
 
 // pbrt-v4 multiplies "scale" by a distant light's "illuminance" (the spectrum normalised to
 // unit luminance first), as it does for every photometric quantity.
 TEST(PbrtLoader, DistantIlluminanceIsTimesScale) {
-  const Scene s = parse(std::string(R"(WorldBegin
+  const Scene s = parse_pbrt_text(std::string(R"(WorldBegin
 LightSource "distant" "rgb L" [0.3 0.6 0.9] "float scale" 2 "float illuminance" 1000
 )") + std::string(kTriangle));
   ASSERT_EQ(s.lights.size(), 1u);
@@ -307,7 +307,7 @@ LightSource "distant" "rgb L" [0.3 0.6 0.9] "float scale" 2 "float illuminance" 
 }
 
 TEST(PbrtLoader, LightsInPhotometricUnits) {
-  const Scene s = parse(std::string(R"(
+  const Scene s = parse_pbrt_text(std::string(R"(
 WorldBegin
 LightSource "point" "rgb I" [1 1 1] "float scale" 10 "point3 from" [0 5 0]
 LightSource "point" "float power" 100
@@ -344,7 +344,7 @@ AttributeBegin
 // pbrt-v4 multiplies the intensity or radiance that `power` sets by `scale` (its
 // PointLight, SpotLight and DiffuseAreaLight ::Create), and ignores a power of 0.
 TEST(PbrtLoader, ScaleMultipliesWhatPowerSets) {
-  const Scene s = parse(std::string(R"(
+  const Scene s = parse_pbrt_text(std::string(R"(
 WorldBegin
 LightSource "point" "float power" 100 "float scale" 2
 LightSource "spot" "point3 from" [0 0 0] "point3 to" [0 -1 0] "float coneangle" 40 "float conedelta" 10 "float power" 10 "float scale" 3
@@ -367,7 +367,7 @@ AttributeBegin
 // normalised to unit luminance times `scale` as pbrt-v4 does; so are sampled reflectances
 // within [0, 1]. Other named spectra keep their RGB approximation (and its warning).
 TEST(PbrtLoader, SpectraBecomeSceneSpectra) {
-  const Scene s = parse(std::string(R"(
+  const Scene s = parse_pbrt_text(std::string(R"(
 WorldBegin
 LightSource "point" "blackbody I" 2856 "float scale" 7 "point3 from" [0 5 0]
 LightSource "distant" "spectrum L" "stdillum-F11" "point3 from" [0 1 0] "point3 to" [0 0 0]
@@ -410,12 +410,12 @@ AttributeBegin
 // its line, with the same message as in a JSON scene.
 TEST(PbrtLoader, MalformedSampledSpectraAreErrorsAtTheirLine) {
   const std::string decreasing =
-      parse_error("WorldBegin\nMaterial \"diffuse\" \"spectrum reflectance\" [500 0.1 400 0.9]\n");
+      pbrt_parse_error("WorldBegin\nMaterial \"diffuse\" \"spectrum reflectance\" [500 0.1 400 0.9]\n");
   EXPECT_NE(decreasing.find("wavelengths must increase: 400 nm follows 500 nm"), std::string::npos) << decreasing;
   EXPECT_NE(decreasing.find("test.pbrt:2: parameter 'reflectance'"), std::string::npos) << decreasing;
-  const std::string micrometres = parse_error("WorldBegin\nLightSource \"point\" \"spectrum I\" [0.4 1 0.7 1]\n");
+  const std::string micrometres = pbrt_parse_error("WorldBegin\nLightSource \"point\" \"spectrum I\" [0.4 1 0.7 1]\n");
   EXPECT_NE(micrometres.find("wavelength 0.4 nm is outside [100, 3000] nm"), std::string::npos) << micrometres;
-  const std::string negative = parse_error("WorldBegin\nLightSource \"point\" \"spectrum I\" [400 1 700 -1]\n");
+  const std::string negative = pbrt_parse_error("WorldBegin\nLightSource \"point\" \"spectrum I\" [400 1 700 -1]\n");
   EXPECT_NE(negative.find("negative value -1 at 700 nm"), std::string::npos) << negative;
 }
 
@@ -424,7 +424,7 @@ TEST(PbrtLoader, ShapesSphereBilinearAndPly) {
   dir.write("quad.ply",
             "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\n"
             "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n");
-  const Scene s = parse(R"(
+  const Scene s = parse_pbrt_text(R"(
 WorldBegin
 Shape "sphere" "float radius" 2
 Shape "bilinearmesh" "point3 P" [0 0 0 1 0 0 0 1 0 1 1 0]
@@ -438,7 +438,7 @@ Shape "plymesh" "string filename" "quad.ply"
   const Vec3f n = cross(b.positions[b.indices[1]] - b.positions[b.indices[0]], b.positions[b.indices[2]] - b.positions[b.indices[0]]);
   EXPECT_GT(n.z, 0.0f);  // (p10 − p00) × (p01 − p00) = +z
   EXPECT_EQ(s.meshes[2].triangle_count(), 2u);
-  EXPECT_NE(parse_error(R"(WorldBegin Shape "plymesh" "string filename" "../quad.ply")", dir.path()).find("test.pbrt:1"),
+  EXPECT_NE(pbrt_parse_error(R"(WorldBegin Shape "plymesh" "string filename" "../quad.ply")", dir.path()).find("test.pbrt:1"),
             std::string::npos);
 }
 
@@ -466,7 +466,7 @@ TEST(PbrtLoader, IncludeResolvesInsideTheFolderOnly) {
 }
 
 TEST(PbrtLoader, UnsupportedFeaturesInOneWarning) {
-  const Scene s = parse(std::string(R"(
+  const Scene s = parse_pbrt_text(std::string(R"(
 Option "bool disablepixeljitter" true
 PixelFilter "gaussian"
 Sampler "halton" "integer pixelsamples" 8 "string randomization" "owen"
@@ -495,7 +495,7 @@ Material "hair"
 // (pbrt_media.cpp): σ_a × scale per unit becomes the colour exp(−σ) after one unit. The
 // rest of media is warned, and names are checked.
 TEST(PbrtLoader, AbsorbingMediumInsideGlass) {
-  const Scene s = parse(std::string(R"(WorldBegin
+  const Scene s = parse_pbrt_text(std::string(R"(WorldBegin
 MakeNamedMedium "ink" "string type" "homogeneous" "rgb sigma_a" [0.5 1 0] "rgb sigma_s" [0 0 0] "float scale" 2
 MakeNamedMedium "fog" "string type" "homogeneous" "rgb sigma_a" [1 1 1]
 Material "dielectric" "float eta" 1.33
@@ -531,20 +531,20 @@ AttributeBegin
       << warnings;
   EXPECT_EQ(warnings.find("\"ink\": a"), std::string::npos) << warnings;  // the ink itself is rendered
   // Media around shapes (exterior) are not rendered either: said.
-  const Scene around = parse(std::string(R"(MakeNamedMedium "air" "string type" "homogeneous" "rgb sigma_s" [0 0 0]
+  const Scene around = parse_pbrt_text(std::string(R"(MakeNamedMedium "air" "string type" "homogeneous" "rgb sigma_s" [0 0 0]
 WorldBegin
 MediumInterface "" "air"
 )") + std::string(kTriangle));
   ASSERT_EQ(around.warnings.size(), 1u);
   EXPECT_NE(around.warnings[0].find("MediumInterface exterior medium \"air\""), std::string::npos) << around.warnings[0];
   // Names must be defined, once.
-  EXPECT_NE(parse_error("MediumInterface \"nope\" \"\"").find("test.pbrt:1: medium \"nope\" is not defined"),
+  EXPECT_NE(pbrt_parse_error("MediumInterface \"nope\" \"\"").find("test.pbrt:1: medium \"nope\" is not defined"),
             std::string::npos);
-  EXPECT_NE(parse_error("MakeNamedMedium \"m\" \"string type\" \"homogeneous\"\n"
+  EXPECT_NE(pbrt_parse_error("MakeNamedMedium \"m\" \"string type\" \"homogeneous\"\n"
                         "MakeNamedMedium \"m\" \"string type\" \"homogeneous\"")
                 .find("test.pbrt:2: medium \"m\" is defined twice"),
             std::string::npos);
-  EXPECT_NE(parse_error("MakeNamedMedium \"m\" \"string type\" \"homogeneous\" \"rgb sigma_a\" [1 -1 1]")
+  EXPECT_NE(pbrt_parse_error("MakeNamedMedium \"m\" \"string type\" \"homogeneous\" \"rgb sigma_a\" [1 -1 1]")
                 .find("test.pbrt:1:"),
             std::string::npos);
 }
@@ -579,7 +579,7 @@ TEST(PbrtLoader, BadInputIsAFileLineError) {
       {"Texture \"t\" \"spectrum\" \"imagemap\"", "needs a filename"},
   };
   for (const auto& [text, expected] : cases) {
-    const std::string message = parse_error(text);
+    const std::string message = pbrt_parse_error(text);
     EXPECT_NE(message.find(expected), std::string::npos) << text << " → " << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
   }

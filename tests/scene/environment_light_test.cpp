@@ -133,7 +133,9 @@ TEST(EnvironmentLight, DensityIsPositiveWhereverTheFilteredRadianceIs) {
         const Vec2f uv((x + 0.5f) / kEnvironmentMapSizePx, (y + 0.5f + dy) / kEnvironmentMapSizePx);
         const auto hits = lights.escaped(map_to_world_direction(equal_area_square_to_sphere(uv)));
         ASSERT_EQ(hits.size(), 1u);
-        if (hits[0].rgb.y > 0.0f) EXPECT_GT(hits[0].pdf, 0.0f) << x << " " << y << " " << dy;
+        if (hits[0].rgb.y > 0.0f) {
+          EXPECT_GT(hits[0].pdf, 0.0f) << x << " " << y << " " << dy;
+        }
         if (y == 3 && hits[0].rgb.y > 0.0f) ++positive_on_black_texels;
       }
   EXPECT_GT(positive_on_black_texels, kEnvironmentMapSizePx);  // the filter does reach into the black row

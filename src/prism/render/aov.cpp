@@ -13,9 +13,10 @@ AovSet parse_aov_list(const std::string& text) {
     const std::size_t comma = text.find(',', start);
     const std::string name = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
     bool* flag = name == "albedo" ? &set.albedo : name == "normal" ? &set.normal : name == "depth" ? &set.depth
-                  : name == "variance" ? &set.variance : nullptr;
+                  : name == "variance" ? &set.variance : name == "sample-count" ? &set.sample_count : nullptr;
     if (flag == nullptr)
-      throw UsageError(fmt::format("unknown --aov '{}' in '{}' (albedo, normal, depth, variance, comma-separated)", name, text));
+      throw UsageError(fmt::format(
+          "unknown --aov '{}' in '{}' (albedo, normal, depth, variance, sample-count, comma-separated)", name, text));
     if (*flag) throw UsageError(fmt::format("--aov '{}' lists '{}' twice", text, name));
     *flag = true;
     if (comma == std::string::npos) break;
@@ -26,7 +27,8 @@ AovSet parse_aov_list(const std::string& text) {
 
 std::string format_aov_list(const AovSet& aovs) {
   std::string s;
-  for (const auto& [on, name] : {std::pair{aovs.albedo, "albedo"}, {aovs.normal, "normal"}, {aovs.depth, "depth"}, {aovs.variance, "variance"}})
+  for (const auto& [on, name] : {std::pair{aovs.albedo, "albedo"}, {aovs.normal, "normal"}, {aovs.depth, "depth"}, {aovs.variance, "variance"},
+                              {aovs.sample_count, "sample-count"}})
     if (on) {
       if (!s.empty()) s += ',';
       s += name;

@@ -19,6 +19,9 @@
 //           three cross sums beside the beauty's squares), because per-channel variances do
 //           not convert through a 3×3 colour matrix; Var(m_k·x̄) = m_kᵀ C m_k / n is exact
 //           for any output row m_k. Not a first-hit AOV: it describes the whole estimate.
+//   sample-count  the number of samples in the pixel's mean (the film's count, which it
+//           keeps anyway: nothing more is allocated); with adaptive sampling
+//           (adaptive_sampling.h) it shows where the samples went.
 // Each AOV is averaged over the pixel's samples with the beauty's box filter; a sample
 // whose beauty is discarded as NaN/Inf is discarded from the AOVs too.
 #include <string>
@@ -32,23 +35,26 @@ struct AovSet {
   bool normal = false;
   bool depth = false;
   bool variance = false;
-  bool any() const { return albedo || normal || depth || variance; }
+  bool sample_count = false;
+  bool any() const { return albedo || normal || depth || variance || sample_count; }
   bool first_hit() const { return albedo || normal || depth; }
   bool operator==(const AovSet&) const = default;
-  // One bit per AOV (albedo 1, normal 2, depth 4, variance 8): checkpoints and fingerprints
-  // store it.
+  // One bit per AOV (albedo 1, normal 2, depth 4, variance 8, sample-count 16): checkpoints
+  // and fingerprints store it.
+  static constexpr unsigned kAllBits = 31u;
   unsigned bits() const {
-    return (albedo ? 1u : 0u) | (normal ? 2u : 0u) | (depth ? 4u : 0u) | (variance ? 8u : 0u);
+    return (albedo ? 1u : 0u) | (normal ? 2u : 0u) | (depth ? 4u : 0u) | (variance ? 8u : 0u) |
+           (sample_count ? 16u : 0u);
   }
   static AovSet from_bits(unsigned bits) {
-    return {(bits & 1u) != 0, (bits & 2u) != 0, (bits & 4u) != 0, (bits & 8u) != 0};
+    return {(bits & 1u) != 0, (bits & 2u) != 0, (bits & 4u) != 0, (bits & 8u) != 0, (bits & 16u) != 0};
   }
 };
 
-// "albedo,normal,depth,variance" (any non-empty subset, any order, each at most once);
-// throws UsageError naming the bad entry and the valid names.
+// "albedo,normal,depth,variance,sample-count" (any non-empty subset, any order, each at
+// most once); throws UsageError naming the bad entry and the valid names.
 AovSet parse_aov_list(const std::string& text);
-// "albedo,normal,depth,variance" order; "" for the empty set.
+// "albedo,normal,depth,variance,sample-count" order; "" for the empty set.
 std::string format_aov_list(const AovSet& aovs);
 
 // What one sample's camera ray saw first (written by the integrator, added by the film).

@@ -10,6 +10,7 @@ AovImages film_aov_images(const Film& film, const Mat3& film_to_output) {
   if (out.set.albedo) out.albedo = rgb_image();
   if (out.set.normal) out.normal = rgb_image();
   if (out.set.variance) out.variance = rgb_image();
+  if (out.set.sample_count) out.sample_count.resize(n);
   if (out.set.depth) {
     out.depth.resize(n);
     out.depth_coverage.resize(n);
@@ -27,6 +28,7 @@ AovImages film_aov_images(const Film& film, const Mat3& film_to_output) {
       const Vec3d v = film.variance_of_mean(i, film_to_output);
       for (int c = 0; c < 3; ++c) out.variance.rgb[3 * i + c] = static_cast<float>(v[c]);
     }
+    if (out.set.sample_count) out.sample_count[i] = static_cast<float>(film.sample_count(i));
     if (out.set.depth) {
       out.depth[i] = static_cast<float>(film.depth_mean(i));
       out.depth_coverage[i] = static_cast<float>(film.depth_coverage(i));

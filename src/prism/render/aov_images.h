@@ -16,6 +16,7 @@ struct AovImages {
   std::vector<float> depth;            // scene units; +inf where no sample hit a surface
   std::vector<float> depth_coverage;   // fraction of samples that hit (what depth averages over)
   ImageRgbF variance;                  // of the beauty's pixel mean, per output channel
+  std::vector<float> sample_count;     // samples in the pixel's mean (exact below 2^24)
 };
 
 // `film_to_output` converts the film's colour space to the output's (the albedo's only

@@ -122,7 +122,7 @@ Checkpoint read_checkpoint(const std::filesystem::path& path) {
   c.first_sample = r.get<std::int32_t>();
   c.next_sample = r.get<std::int32_t>();
   const auto aov_bits = r.get<std::uint32_t>();
-  if (aov_bits > 15u) throw fail("corrupt header (unknown AOVs)");
+  if (aov_bits > AovSet::kAllBits) throw fail("corrupt header (unknown AOVs)");
   FilmAovSums aov;
   aov.set = AovSet::from_bits(aov_bits);
   // Check the size before trusting the header's dimensions for an allocation.

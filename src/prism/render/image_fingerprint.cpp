@@ -251,6 +251,12 @@ std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settin
   // The reference path tracer estimates the same image with other bits: only its renders
   // hash it, so wavefront renders keep their fingerprints.
   if (settings.integrator != IntegratorKind::wavefront) h.value(settings.integrator);
+  // Adaptive sampling decides which pixels take which samples: only adaptive renders hash
+  // its settings, so uniform renders keep their fingerprints.
+  if (settings.adaptive.enabled()) {
+    h.value(settings.adaptive.noise_threshold);
+    h.value(settings.adaptive.min_samples);
+  }
   return h.digest();
 }
 

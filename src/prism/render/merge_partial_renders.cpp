@@ -86,7 +86,8 @@ void check_aov_sizes(const PartialRender& p) {
   const AovImages& a = p.aovs;
   const bool ok = (!a.set.albedo || a.albedo.rgb.size() == 3 * pixels) && (!a.set.normal || a.normal.rgb.size() == 3 * pixels) &&
                   (!a.set.depth || (a.depth.size() == pixels && a.depth_coverage.size() == pixels)) &&
-                  (!a.set.variance || a.variance.rgb.size() == 3 * pixels);
+                  (!a.set.variance || a.variance.rgb.size() == 3 * pixels) &&
+                  (!a.set.sample_count || a.sample_count.size() == pixels);
   if (!ok) throw UsageError(fmt::format("'{}' has AOV layers of the wrong size", p.name));
 }
 
@@ -137,6 +138,11 @@ MergedRender merge_partial_renders(const std::vector<PartialRender>& parts) {
     merged.aovs.depth_coverage = weighted_mean(parts, &AovImages::depth_coverage);
   }
   if (first.aovs.set.variance) merged.aovs.variance = merged_variance(parts, merged.image, merged.samples);
+  if (first.aovs.set.sample_count) {  // the parts' samples add up (float: exact below 2^24)
+    merged.aovs.sample_count.assign(first.aovs.sample_count.size(), 0.0f);
+    for (const auto& p : parts)
+      for (std::size_t i = 0; i < p.aovs.sample_count.size(); ++i) merged.aovs.sample_count[i] += p.aovs.sample_count[i];
+  }
   return merged;
 }
 

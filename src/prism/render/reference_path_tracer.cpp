@@ -24,7 +24,8 @@ ReferencePathTracer<Mode>::ReferencePathTracer(const Scene& scene, const EmbreeA
 
 template <class Mode>
 PassStatistics ReferencePathTracer<Mode>::render_samples(Film& film, std::uint32_t first_sample, std::uint32_t count,
-                                                         int, const std::function<void()>*) {
+                                                         int, const std::function<void()>*,
+                                                         const std::uint8_t* active) {
   std::atomic<std::uint64_t> rays{0}, shadow_rays{0}, invalid{0};
   const auto width = static_cast<std::uint32_t>(width_);
   const bool keep_aovs = film.aovs().first_hit();
@@ -34,6 +35,7 @@ PassStatistics ReferencePathTracer<Mode>::render_samples(Film& film, std::uint32
     for (std::size_t y = row_begin; y < row_end; ++y)
       for (std::uint32_t x = 0; x < width; ++x) {
         const auto pixel = static_cast<std::uint32_t>(y) * width + x;
+        if (active && !active[pixel]) continue;
         for (std::uint32_t s = first_sample; s < first_sample + count; ++s) {
           const PixelSample sample{seed_, pixel, width, s};
           const CameraSamples u = camera_samples(settings_.sampler, sample, camera_.has_lens());
@@ -59,7 +61,10 @@ PassStatistics ReferencePathTracer<Mode>::render_samples(Film& film, std::uint32
   stats.rays = rays.load();
   stats.shadow_rays = shadow_rays.load();
   stats.invalid_samples = invalid.load();
-  stats.completed_samples = std::uint64_t{count} * film.pixel_count();
+  const std::size_t pixels =
+      active ? static_cast<std::size_t>(std::count_if(active, active + film.pixel_count(), [](std::uint8_t a) { return a != 0; }))
+             : film.pixel_count();
+  stats.completed_samples = std::uint64_t{count} * pixels;
   return stats;
 }
 

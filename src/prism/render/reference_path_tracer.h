@@ -36,8 +36,10 @@ class ReferencePathTracer {
   // pixel's in order, pixels in parallel: the image is independent of the thread count.
   // `after_bounces` (progressive display of deep paths) is not called: there is no
   // wavefront to stop in the middle of.
+  // `active`: as WavefrontIntegrator::render_samples (adaptive sampling); null: every pixel.
   PassStatistics render_samples(Film& film, std::uint32_t first_sample, std::uint32_t count,
-                                int bounces_per_pass = 0, const std::function<void()>* after_bounces = nullptr);
+                                int bounces_per_pass = 0, const std::function<void()>* after_bounces = nullptr,
+                                const std::uint8_t* active = nullptr);
 
  private:
   // The state a path carries from one vertex to the next.

@@ -36,6 +36,9 @@ void validate_render_settings(const RenderSettings& s) {
   if (!(s.time_limit_seconds >= 0.0)) throw UsageError("--time-limit must be a non-negative number of seconds");
   if (s.bounces_per_pass < 0)
     throw UsageError(fmt::format("--bounces-per-pass must be 0 (until paths end) or more (got {})", s.bounces_per_pass));
+  validate_adaptive_sampling(s.adaptive);
+  if (s.adaptive.enabled() && s.first_sample > 0)
+    throw UsageError("--noise-threshold cannot be combined with --sample-range (see docs/farm-rendering.md)");
 }
 
 
@@ -68,17 +71,30 @@ void render_passes(Integrator& integrator, const RenderSettings& settings, const
   double last_checkpoint = 0.0;
   int pass_size = settings.samples_per_pass > 0 ? settings.samples_per_pass : 1;
   constexpr double kTargetPassSeconds = 0.5;
+  std::uint64_t samples_taken = 0;
   while (next_sample < settings.samples_per_pixel) {
     if (cancelled()) {
       result.stop_reason = StopReason::cancelled;
       break;
     }
-    const int count = std::min(pass_size, settings.samples_per_pixel - next_sample);
-    const double pass_start = elapsed();
+    const double pass_start = elapsed();  // the mask below is part of the pass's time
+    // Adaptive sampling: the pixels that render this pass, from the film alone, and a pass
+    // that ends at the next decision boundary at the latest (adaptive_sampling.h).
+    const std::optional<std::vector<std::uint8_t>> active =
+        adaptive_active_pixels(result.film, result.film_space, settings.adaptive, next_sample);
+    if (active && std::find(active->begin(), active->end(), std::uint8_t{1}) == active->end()) {
+      next_sample = settings.samples_per_pixel;  // every pixel has stopped, for good
+      break;
+    }
+    const int boundary = next_adaptive_boundary(settings.adaptive, next_sample, settings.samples_per_pixel);
+    const int count = std::min(pass_size, boundary - next_sample);
     const std::function<void()> after_bounces = [&] { hooks.on_bounces(result.film, next_sample); };
     const PassStatistics stats = integrator.render_samples(
         result.film, static_cast<std::uint32_t>(next_sample), static_cast<std::uint32_t>(count),
-        settings.bounces_per_pass, hooks.on_bounces ? &after_bounces : nullptr);
+        settings.bounces_per_pass, hooks.on_bounces ? &after_bounces : nullptr, active ? active->data() : nullptr);
+    samples_taken += static_cast<std::uint64_t>(count) *
+                     (active ? static_cast<std::size_t>(std::count(active->begin(), active->end(), std::uint8_t{1}))
+                             : result.film.pixel_count());
     const double seconds = elapsed();
     result.pass_seconds.push_back(seconds - pass_start);
     result.pass_samples.push_back(count);
@@ -96,7 +112,7 @@ void render_passes(Integrator& integrator, const RenderSettings& settings, const
       pass_size = std::clamp(static_cast<int>(kTargetPassSeconds / std::max(per_sample, 1e-6)), 1, 64);
     }
     if (hooks.on_pass) {
-      const double samples = static_cast<double>(next_sample - start_sample) * result.film.pixel_count();
+      const auto samples = static_cast<double>(samples_taken);
       hooks.on_pass({next_sample - settings.first_sample, settings.samples_per_pixel - settings.first_sample, seconds,
                      seconds > 0.0 ? samples / seconds : 0.0});
     }
@@ -172,6 +188,7 @@ RenderResult render(const PreparedScene& prepared, const RenderSettings& setting
   RenderResult result;
   result.film_space = film_color_space(settings.transport);
   int next_sample = settings.first_sample;
+  const AovSet film_aovs = adaptive_film_aovs(settings.aovs, settings.adaptive);
   if (resume) {
     if (resume->film.width() != settings.width || resume->film.height() != settings.height)
       throw UsageError(fmt::format("checkpoint film is {}x{} but the render is {}x{}", resume->film.width(),
@@ -179,13 +196,13 @@ RenderResult render(const PreparedScene& prepared, const RenderSettings& setting
     if (resume->next_sample < settings.first_sample || resume->next_sample > settings.samples_per_pixel)
       throw UsageError(fmt::format("checkpoint ends at sample {}, outside the requested range {}:{}",
                                    resume->next_sample, settings.first_sample, settings.samples_per_pixel));
-    if (resume->film.aovs() != settings.aovs)
+    if (resume->film.aovs() != film_aovs)
       throw UsageError(fmt::format("checkpoint film keeps the AOVs '{}' but the render asks for '{}'",
-                                   format_aov_list(resume->film.aovs()), format_aov_list(settings.aovs)));
+                                   format_aov_list(resume->film.aovs()), format_aov_list(film_aovs)));
     result.film = resume->film;
     next_sample = resume->next_sample;
   } else {
-    result.film = Film(settings.width, settings.height, settings.aovs);
+    result.film = Film(settings.width, settings.height, film_aovs);
   }
 
   const TransportSettings& t = settings.transport;

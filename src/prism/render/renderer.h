@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "prism/color/color_space.h"
+#include "prism/render/adaptive_sampling.h"
 #include "prism/render/film.h"
 #include "prism/render/image_fingerprint.h"
 #include "prism/render/transport_mode.h"
@@ -46,6 +47,12 @@ struct RenderSettings {
   // the image, so it is not part of the fingerprint.
   int bounces_per_pass = 0;
   AovSet aovs;                      // first-hit AOVs the film keeps (aov.h); none by default
+  // Adaptive sampling (adaptive_sampling.h, --noise-threshold): off by default. When on, the
+  // film also keeps the variance AOV's sums (adaptive_film_aovs), passes never straddle a
+  // decision boundary, and a render whose every pixel has stopped ends early (its
+  // next_sample is then samples_per_pixel: no pixel would take another sample). Not with
+  // first_sample > 0 (--sample-range): ranges would decide on different samples.
+  AdaptiveSamplingSettings adaptive;
   // Refuse (Error) before allocating when estimate_render_memory() exceeds this
   // (memory_estimate.h); 0: 90 % of physical memory.
   std::uint64_t memory_limit_bytes = 0;

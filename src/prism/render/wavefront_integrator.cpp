@@ -487,11 +487,12 @@ void WavefrontIntegrator<Mode>::continue_path(Paths& p, std::uint32_t slot, cons
 template <class Mode>
 PassStatistics WavefrontIntegrator<Mode>::render_samples(Film& film, std::uint32_t first_sample, std::uint32_t count,
                                                          int bounces_per_pass,
-                                                         const std::function<void()>* after_bounces) {
-  if (regenerate_) return run_wave(film, first_sample, count, bounces_per_pass, after_bounces);
+                                                         const std::function<void()>* after_bounces,
+                                                         const std::uint8_t* active) {
+  if (regenerate_) return run_wave(film, first_sample, count, bounces_per_pass, after_bounces, active);
   PassStatistics total;
   for (std::uint32_t s = 0; s < count; ++s) {
-    const PassStatistics wave = run_wave(film, first_sample + s, 1, bounces_per_pass, after_bounces);
+    const PassStatistics wave = run_wave(film, first_sample + s, 1, bounces_per_pass, after_bounces, active);
     total.add_counts(wave);
     total.steps += wave.steps;
     total.live_paths_per_step.insert(total.live_paths_per_step.end(), wave.live_paths_per_step.begin(),
@@ -516,16 +517,22 @@ void for_range(bool parallel, std::size_t count, std::size_t grain,
 
 template <class Mode>
 PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t first_sample, std::uint32_t count,
-                                                   int bounces_per_pass, const std::function<void()>* after_bounces) {
+                                                   int bounces_per_pass, const std::function<void()>* after_bounces,
+                                                   const std::uint8_t* active) {
   const auto pixels = static_cast<std::uint32_t>(film.pixel_count());
   const bool aovs = film.aovs().first_hit();
+  // Whether slot s of `p` renders this pass: always, unless adaptive sampling has stopped
+  // its pixel (`active`).
+  const auto renders = [active](const Paths& p, std::uint32_t s) {
+    return active == nullptr || active[p.first_pixel + s] != 0;
+  };
   // Slots [begin, end) of `p` are to render samples [first_sample, first_sample + count)
   // of pixels p.first_pixel + begin …: set_up, then start with the first one. Every slot
   // of a block is set up before any starts (a camera packet waits for the lanes that will
-  // take it).
+  // take it; a stopped pixel's slot ends where it starts, so none waits for it).
   const auto set_up = [&](Paths& p, std::uint32_t begin, std::uint32_t end) {
     for (std::uint32_t s = begin; s < end; ++s) {
-      p.sample_end[s] = first_sample + count;
+      p.sample_end[s] = renders(p, s) ? first_sample + count : first_sample;
       p.camera_next_sample[s] = first_sample;
       if (sobol_lanes_) p.sobol_pixel_key[s] = padded_sobol_pixel_key(seed_, p.first_pixel + s);
     }
@@ -536,9 +543,24 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
     samples.fill(first_sample);
     for (std::uint32_t first = begin; first < end; first += kRun) {
       const std::uint32_t n = std::min(kRun, end - first);
-      for (std::uint32_t k = 0; k < n; ++k) slots[k] = first + k;
-      generate(p, slots.data(), samples.data(), n);
+      std::uint32_t started = 0;
+      for (std::uint32_t k = 0; k < n; ++k) {
+        slots[started] = first + k;
+        started += active == nullptr || renders(p, first + k);
+      }
+      generate(p, slots.data(), samples.data(), started);
     }
+  };
+  // The queue of slots [0, n): those that render.
+  const auto initial_queue = [&](const Paths& p, std::uint32_t n) {
+    std::vector<std::uint32_t> live(n);
+    std::uint32_t queued = 0;
+    for (std::uint32_t s = 0; s < n; ++s) {
+      live[queued] = s;
+      queued += active == nullptr || renders(p, s);
+    }
+    live.resize(queued);
+    return live;
   };
 
   // Lockstep: one queue for the whole image, each stage split across the threads, so that
@@ -549,8 +571,7 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
     Paths& p = *whole_image_paths_;
     p.first_hit_aovs.resize(aovs ? pixels : 0u);
     p.start_wave();
-    std::vector<std::uint32_t> live(pixels);
-    for (std::uint32_t s = 0; s < pixels; ++s) live[s] = s;
+    std::vector<std::uint32_t> live = initial_queue(p, pixels);
     parallel_for(pixels, 4096, [&](std::size_t b, std::size_t e) {
       set_up(p, static_cast<std::uint32_t>(b), static_cast<std::uint32_t>(e));
     });
@@ -573,12 +594,12 @@ PassStatistics WavefrontIntegrator<Mode>::run_wave(Film& film, std::uint32_t fir
     for (std::size_t t = tb; t < te; ++t) {
       const auto begin = static_cast<std::uint32_t>(t * kWavefrontTilePixels);
       const auto end = static_cast<std::uint32_t>(std::min<std::size_t>(pixels, (t + 1) * kWavefrontTilePixels));
+      if (active && std::none_of(active + begin, active + end, [](std::uint8_t a) { return a != 0; })) continue;
       std::unique_ptr<Paths> p = acquire_tile_paths();
       p->first_pixel = begin;
       p->first_hit_aovs.resize(aovs ? kWavefrontTilePixels : 0u);
       p->start_wave();
-      std::vector<std::uint32_t> live(end - begin);
-      for (std::uint32_t s = 0; s < end - begin; ++s) live[s] = s;
+      std::vector<std::uint32_t> live = initial_queue(*p, end - begin);
       set_up(*p, 0, end - begin);
       start(*p, 0, end - begin);
       per_tile[t] = run_queue(film, *p, live, /*parallel=*/false, 0, nullptr);

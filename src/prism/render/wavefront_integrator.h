@@ -143,8 +143,13 @@ class WavefrontIntegrator {
   // live path by one bounce) while paths are still in flight, `after_bounces` is called
   // with the film as it is: every pixel's completed samples, so a viewer can show progress
   // on deep paths. It changes neither the film's final contents nor their order.
+  // `active` (adaptive sampling, render/adaptive_sampling.h): one byte per pixel, nonzero
+  // for the pixels that render this pass; the others' slots are never generated nor
+  // queued (a camera packet still traces their lanes: a packet is always the same rays).
+  // Null: every pixel, the path taken before adaptive sampling existed.
   PassStatistics render_samples(Film& film, std::uint32_t first_sample, std::uint32_t count,
-                                int bounces_per_pass = 0, const std::function<void()>* after_bounces = nullptr);
+                                int bounces_per_pass = 0, const std::function<void()>* after_bounces = nullptr,
+                                const std::uint8_t* active = nullptr);
 
  private:
   struct Paths;  // structure of arrays, one slot per pixel of a tile (or of the image)
@@ -213,7 +218,7 @@ class WavefrontIntegrator {
   static constexpr std::uint32_t kNoCachedEmitter = ~std::uint32_t{0};
   Spectrum<Mode> untextured_emission(Paths& p, std::uint32_t slot, std::uint32_t emitter) const;
   PassStatistics run_wave(Film& film, std::uint32_t first_sample, std::uint32_t count, int bounces_per_pass,
-                          const std::function<void()>* after_bounces);
+                          const std::function<void()>* after_bounces, const std::uint8_t* active);
   // Steps the queue `live` (generated slots) until every path in it has its samples:
   // each stage split across the threads (`parallel`) or run on this thread (a tile).
   PassStatistics run_queue(Film& film, Paths& paths, std::vector<std::uint32_t>& live, bool parallel,

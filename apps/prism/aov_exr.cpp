@@ -10,6 +10,7 @@ const std::vector<std::string> kNormal{"N.x", "N.y", "N.z"};
 const std::vector<std::string> kDepth{"Z"};
 const std::vector<std::string> kCoverage{"Z.coverage"};
 const std::vector<std::string> kVariance{"variance.R", "variance.G", "variance.B"};
+const std::vector<std::string> kSampleCount{"sampleCount"};
 
 }  // namespace
 
@@ -22,6 +23,7 @@ std::vector<ExrChannelGroup> aov_exr_channels(const AovImages& aovs) {
     groups.push_back({kCoverage, aovs.depth_coverage});
   }
   if (aovs.set.variance) groups.push_back({kVariance, aovs.variance.rgb});
+  if (aovs.set.sample_count) groups.push_back({kSampleCount, aovs.sample_count});
   return groups;
 }
 
@@ -45,6 +47,10 @@ AovImages read_aov_exr_channels(const std::filesystem::path& path, int width, in
   if (auto variance = read_exr_channels(path, kVariance)) {
     aovs.set.variance = true;
     aovs.variance = ImageRgbF{width, height, std::move(*variance)};
+  }
+  if (auto count = read_exr_channels(path, kSampleCount)) {
+    aovs.set.sample_count = true;
+    aovs.sample_count = std::move(*count);
   }
   return aovs;
 }

@@ -12,6 +12,8 @@
 //                                  +inf where no sample hit a surface
 //   Z.coverage                     fraction of the pixel's samples that hit a surface (Z
 //                                  is their mean; `prism merge` weights Z by it)
+//   sampleCount                    samples in the pixel's mean (float, exact below 2^24;
+//                                  with --noise-threshold it differs from pixel to pixel)
 #include <filesystem>
 #include <vector>
 

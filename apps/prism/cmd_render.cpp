@@ -83,6 +83,7 @@ struct RenderOptions {
   std::string memory_limit;  // BYTES or SIZE with K/M/G/T; empty: 90 % of physical memory
   std::string aovs;          // "albedo,normal,depth,variance" subset; empty: none
   bool denoise = false;      // --denoise: outputs show the denoised beauty (render_denoise.h)
+  AdaptiveSamplingSettings adaptive;  // --noise-threshold, --adaptive-min-samples
 };
 
 // Parses "START:END" (END exclusive) into first_sample / samples_per_pixel.
@@ -177,6 +178,10 @@ void write_outputs(const std::vector<std::filesystem::path>& outputs, const Rend
       meta.ints["prism:sampleBegin"] = settings.first_sample;
       meta.ints["prism:sampleEnd"] = result.next_sample;
       meta.strings["prism:fingerprint"] = hex(fingerprint);
+      if (settings.adaptive.enabled()) {
+        meta.doubles["prism:noiseThreshold"] = settings.adaptive.noise_threshold;
+        meta.ints["prism:adaptiveMinSamples"] = settings.adaptive.min_samples;
+      }
       // The exposure the display outputs used (metered or given): `--ev100` repeats them.
       if (ev100) meta.doubles["prism:ev100"] = *ev100;
       // Pixel values are luminance-scaled: Y = 1 is one nit.
@@ -206,8 +211,13 @@ void write_outputs(const std::vector<std::filesystem::path>& outputs, const Rend
       // they hold the beauty only, or the normal AOV for --view normal.
       std::optional<ImageRgbF> normals;
       if (result.film.aovs().normal) normals = film_aov_images(result.film, Mat3::identity()).normal;
+      DisplayCliOptions with_text = display;
+      if (settings.adaptive.enabled()) {
+        with_text.extra_png_text.emplace_back("prism:noiseThreshold", fmt::format("{}", settings.adaptive.noise_threshold));
+        with_text.extra_png_text.emplace_back("prism:adaptiveMinSamples", fmt::format("{}", settings.adaptive.min_samples));
+      }
       write_display_output(path, denoised ? *denoised : film_image(result.film, result.film_space, working), working,
-                           display, normals);
+                           with_text, normals);
     }
   }
 }
@@ -252,6 +262,13 @@ int run_render(const RenderOptions& o) {
   if (o.width < 0 || o.height < 0) throw UsageError("--width and --height must be positive");
   if (!o.aovs.empty()) settings.aovs = parse_aov_list(o.aovs);
   if (o.denoise) add_denoise_aovs(settings.aovs);
+  validate_adaptive_sampling(o.adaptive);
+  // Parts of a farm split would each decide on their own samples (docs/farm-rendering.md).
+  if (o.adaptive.enabled() && !o.sample_range.empty())
+    throw UsageError("--noise-threshold cannot be combined with --sample-range (see docs/farm-rendering.md)");
+  settings.adaptive = o.adaptive;
+  // The rule reads the variance AOV's sums, so an adaptive render keeps (and writes) them.
+  settings.aovs = adaptive_film_aovs(settings.aovs, settings.adaptive);
   // A part of a farm split must stay noisy: `prism merge` adds parts' beauties and variances.
   if (o.denoise && !o.sample_range.empty())
     throw UsageError("--denoise cannot be combined with --sample-range: run `prism denoise` on the merged EXR");
@@ -489,8 +506,20 @@ void add_render_command(CLI::App& root, Action& action) {
                   "(albedo.R/G/B, base colour in the EXR's colour space), normal (N.x/N.y/N.z, world-space shading "
                   "normal) and depth (Z, distance along the camera ray in scene units, +inf for misses; with "
                   "Z.coverage, the fraction of samples that hit); variance (variance.R/G/B, variance of the beauty's pixel "
-                  "mean in the EXR's colour space, per channel). The beauty stays in R, G, B; PNG and AVIF outputs "
+                  "mean in the EXR's colour space, per channel); sample-count (sampleCount, the number of samples in each pixel's "
+                  "mean, as float: where --noise-threshold spent them). The beauty stays in R, G, B; PNG and AVIF outputs "
                   "hold the beauty only (--view normal turns the normal AOV on and shows it)");
+  cmd->add_option("--noise-threshold", options->adaptive.noise_threshold,
+                  "Adaptive sampling (docs/adaptive-sampling.md): a pixel stops taking samples once the relative "
+                  "standard error of its mean luminance, sqrt(Var[mean Y]) / max(mean Y, 0.1 x the image's mean "
+                  "luminance), is at most this (e.g. 0.01); decided after --adaptive-min-samples samples and every "
+                  "as many after; --spp stays the cap. 0 = off (every pixel takes every sample). Keeps the variance "
+                  "AOV; not with --sample-range")
+      ->capture_default_str();
+  cmd->add_option("--adaptive-min-samples", options->adaptive.min_samples,
+                  "With --noise-threshold: samples every pixel takes before the first decision, and the spacing "
+                  "of later decisions (at least 2)")
+      ->capture_default_str();
   cmd->add_flag("--denoise", options->denoise,
                 "Denoise the beauty (non-local means guided by albedo, normal, depth and variance; docs/denoising.md): "
                 "EXR, .hdr, PNG and AVIF outputs show the denoised image, the EXR keeps the noisy one as noisy.R/G/B "

@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "prism/color/color_space.h"
 #include "prism/display/debug_views.h"
@@ -19,6 +21,9 @@
 namespace prism::cli {
 
 struct DisplayCliOptions {
+  // PNG tEXt chunks the caller adds about how the image was made (keyword, text), after the
+  // display's own (e.g. `prism render`'s adaptive-sampling settings). Not a command-line option.
+  std::vector<std::pair<std::string, std::string>> extra_png_text;
   std::string rendering;  // empty: the default rendering (display::kDefaultRendering)
   std::string odt;        // empty: srgb-100nit
   std::string encoding;

@@ -91,6 +91,7 @@ void write_shown(const std::filesystem::path& out, const std::string& ext, const
   const bool pq = shown.encoding == display::DisplayEncoding::pq;
   PngColorMetadata meta = pq ? PngColorMetadata{} : sdr_png_color_metadata(primaries, display::icc_tone_curve(shown.encoding));
   meta.text = display_png_text(s);
+  for (const auto& [keyword, text] : o.extra_png_text) meta.text.push_back({keyword, text});
   if (pq && cp != 0) meta.cicp = CicpInfo{cp, cicp_transfer(shown.encoding), 0, 1};
   if (pq) {
     const display::OdtDescription& odt = display::odt_description(s.odt);

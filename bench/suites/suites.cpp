@@ -17,6 +17,8 @@ const std::vector<SuiteEntry>& all_suites() {
       {"startup", "scene build + BVH build time and peak RSS for a generated large mesh", run_startup_suite},
       {"denoise", "AOV-guided denoiser: 1280x720 frame time on 2 threads; 16 spp denoised vs 256 spp raw relMSE",
        run_denoise_suite},
+      {"adaptive", "--noise-threshold vs uniform sampling: efficiency 1/(time x relMSE), plain and glossy/glass Cornell box",
+       run_adaptive_suite},
   };
   return suites;
 }

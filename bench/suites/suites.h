@@ -41,5 +41,6 @@ SuiteReport run_startup_suite(const BenchOptions& options);
 SuiteReport run_efficiency_suite(const BenchOptions& options);
 SuiteReport run_sampler_suite(const BenchOptions& options);
 SuiteReport run_denoise_suite(const BenchOptions& options);
+SuiteReport run_adaptive_suite(const BenchOptions& options);
 
 }  // namespace prism::bench

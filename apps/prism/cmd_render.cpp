@@ -512,9 +512,9 @@ void add_render_command(CLI::App& root, Action& action) {
   cmd->add_option("--noise-threshold", options->adaptive.noise_threshold,
                   "Adaptive sampling (docs/adaptive-sampling.md): a pixel stops taking samples once the relative "
                   "standard error of its mean luminance, sqrt(Var[mean Y]) / max(mean Y, 0.1 x the image's mean "
-                  "luminance), is at most this (e.g. 0.01); decided after --adaptive-min-samples samples and every "
-                  "as many after; --spp stays the cap. 0 = off (every pixel takes every sample). Keeps the variance "
-                  "AOV; not with --sample-range")
+                  "luminance), is at most this (e.g. 0.05) and so is every neighbour's; decided after "
+                  "--adaptive-min-samples samples and every as many after; --spp stays the cap. 0 = off (every pixel "
+                  "takes every sample). Keeps the variance AOV; not with --sample-range")
       ->capture_default_str();
   cmd->add_option("--adaptive-min-samples", options->adaptive.min_samples,
                   "With --noise-threshold: samples every pixel takes before the first decision, and the spacing "

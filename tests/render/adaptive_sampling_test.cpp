@@ -119,6 +119,11 @@ TEST(AdaptiveSampling, MaskIsEveryPixelThenTheNoisyDilatedThenTheUnstopped) {
   const auto at5 = adaptive_active_pixels(film, space, a, 5);  // no decision: who took every sample
   ASSERT_TRUE(at5);
   EXPECT_EQ(*at5, (std::vector<std::uint8_t>{0, 0, 1, 1, 0}));
+  a.dilate = false;  // then only the noisy pixel itself
+  Film undilated(5, 1, AovSet{false, false, false, true});
+  for (int i = 0; i < 4; ++i)
+    for (std::size_t p = 0; p < 5; ++p) undilated.add_sample(p, p == 3 ? Vec3d(i % 2 ? 2.0 : 0.1) : Vec3d(1.0));
+  EXPECT_EQ(*adaptive_active_pixels(undilated, space, a, 4), (std::vector<std::uint8_t>{0, 0, 0, 1, 0}));
 }
 
 // Z scores of an adaptive render against an independent uniform one (the reference path
@@ -350,6 +355,9 @@ TEST(AdaptiveSampling, ThresholdZeroAndAnAllActiveMaskAreUniformSampling) {
   EXPECT_NE(image_fingerprint(scene, adaptive_settings(24, 24, 0.01, 16)), image_fingerprint(scene, plain));
   EXPECT_NE(image_fingerprint(scene, adaptive_settings(24, 24, 0.01, 16)),
             image_fingerprint(scene, adaptive_settings(24, 24, 0.02, 16)));
+  RenderSettings undilated = adaptive_settings(24, 24, 0.01, 16);
+  undilated.adaptive.dilate = false;
+  EXPECT_NE(image_fingerprint(scene, undilated), image_fingerprint(scene, adaptive_settings(24, 24, 0.01, 16)));
 }
 
 }  // namespace

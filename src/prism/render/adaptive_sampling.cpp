@@ -77,6 +77,7 @@ std::optional<std::vector<std::uint8_t>> adaptive_active_pixels(const Film& film
   // Dilated by one pixel (as Cycles does): a pixel next to a noisy one goes on too, so that
   // a pixel whose first samples all missed the light (error 0: all zero) in a noisy region
   // does not stop black while its neighbours are still converging.
+  if (!settings.dilate) return noisy;
   const int w = film.width(), h = film.height();
   parallel_for(static_cast<std::size_t>(h), 16, [&](std::size_t row_begin, std::size_t row_end) {
     for (int y = static_cast<int>(row_begin); y < static_cast<int>(row_end); ++y)

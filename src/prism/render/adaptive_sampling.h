@@ -45,6 +45,9 @@ struct AdaptiveSamplingSettings {
   double noise_threshold = 0.0;  // T; 0: off (every pixel takes every sample)
   // N_min: samples before the first decision, and the spacing of later decisions.
   int min_samples = 16;
+  // The one-pixel dilation of the mask (see the rule above); off only to measure what it
+  // costs (`prism bench adaptive`): the command line always has it on.
+  bool dilate = true;
   bool enabled() const { return noise_threshold > 0.0; }
 };
 

@@ -256,6 +256,7 @@ std::uint64_t image_fingerprint(const Scene& scene, const RenderSettings& settin
   if (settings.adaptive.enabled()) {
     h.value(settings.adaptive.noise_threshold);
     h.value(settings.adaptive.min_samples);
+    if (!settings.adaptive.dilate) h.value(settings.adaptive.dilate);
   }
   return h.digest();
 }

@@ -86,6 +86,7 @@ int run_tonemap(const TonemapOptions& o) {
   ImageRgbF image;
   color::ColorSpace space;
   std::optional<ImageRgbF> normals;
+  DisplayCliOptions display = o.display;
   try {
     // Only a Radiance picture is read whole here; OpenEXR reads its own file.
     if (detect_image_file_format(o.input) == ImageFileFormat::radiance_hdr) {
@@ -97,13 +98,16 @@ int run_tonemap(const TonemapOptions& o) {
     } else {
       ExrFile in = read_exr(o.input);
       normals = read_exr_vector_layer(o.input, "N");
+      // A render's coverage (--aov depth) keeps --auto-exposure from metering the void.
+      if (display.auto_exposure)
+        if (auto coverage = read_exr_channels(o.input, {"Z.coverage"})) display.metering_coverage = std::move(*coverage);
       space = film_space(in);
       image = std::move(in.image);
     }
   } catch (const IoError& e) {
     throw UsageError(e.what());  // unreadable input is the user's input: exit 2
   }
-  write_display_output(o.output, image, space, o.display, normals);
+  write_display_output(o.output, image, space, display, normals);
   return 0;
 }
 

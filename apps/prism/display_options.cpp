@@ -119,6 +119,7 @@ display::DisplaySettings make_display_settings(const DisplayCliOptions& o) {
   s.auto_exposure = o.auto_exposure;
   if (!(o.key > 0.0 && std::isfinite(o.key))) throw UsageError("--key must be a positive number");
   s.auto_exposure_key = o.key;
+  s.metering_coverage = o.metering_coverage;
   if (!(o.blue_correction >= 0.0 && o.blue_correction <= 1.0)) throw UsageError("--blue-correction must be in [0, 1]");
   s.blue_correction = o.blue_correction;
   if (o.stretch_black && o.no_stretch_black)

@@ -31,6 +31,9 @@ struct DisplayCliOptions {
   std::optional<double> ev100, f_number, shutter_s, iso;
   bool auto_exposure = false;
   double key = 0.18, blue_correction = 0.0;
+  // What --auto-exposure meters (display::DisplaySettings::metering_coverage): `tonemap`
+  // fills it from the input's Z.coverage layer. Not a command-line option.
+  std::vector<float> metering_coverage;
   bool stretch_black = false, no_stretch_black = false;
   int bit_depth = 0;  // 0: 16 for PNG (the input is float), 10 for AVIF
   std::optional<double> mastering_max_nits, mastering_min_nits, max_cll, max_fall;

@@ -130,6 +130,22 @@ expect_usage_error o20.png "$work/in.exr" --overlay "$work/missing.png"
 expect_usage_error o21.png "$work/in.exr" --ui-nits 1000
 expect_usage_error o22.png "$work/in.exr" --ocio-config "$work/missing.ocio" --display sRGB --view Standard
 
+# --auto-exposure meters what the camera saw: the same beauty with a Z.coverage layer (--aov
+# depth) meters the box alone, not the black void around it, so it is exposed differently;
+# a fixed --ev100 sees no difference between the two files.
+if "$prism" render cornell-box --width 24 --height 16 --spp 2 --aov depth -o "$work/in_cov.exr" >/dev/null 2>&1; then
+  for input in in in_cov; do
+    "$prism" tonemap "$work/$input.exr" -o "$work/${input}_auto.png" --auto-exposure >/dev/null 2>&1 ||
+      fail "tonemap $input.exr --auto-exposure"
+    "$prism" tonemap "$work/$input.exr" -o "$work/${input}_ev.png" --ev100 6 >/dev/null 2>&1 ||
+      fail "tonemap $input.exr --ev100 6"
+  done
+  cmp -s "$work/in_ev.png" "$work/in_cov_ev.png" || fail "the two renders' beauties differ (--ev100 6)"
+  cmp -s "$work/in_auto.png" "$work/in_cov_auto.png" && fail "--auto-exposure ignored the input's Z.coverage"
+else
+  fail "could not render the input EXR with --aov depth"
+fi
+
 if [ "$failures" -ne 0 ]; then
   echo "$failures failure(s)" >&2
   exit 1

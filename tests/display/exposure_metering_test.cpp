@@ -10,6 +10,9 @@
 #include <vector>
 
 #include "prism/core/error.h"
+#include "prism/color/color_space.h"
+#include "prism/display/display_pipeline.h"
+#include "prism/display/exposure.h"
 #include "prism/display/exposure_metering.h"
 
 namespace prism::display {
@@ -48,6 +51,30 @@ TEST(ExposureMetering, VoidIsNotMeteredContentGoesToTheKey) {
   // Without coverage the black half drags the meter far down (over-exposing the content).
   const MeteredExposure blind = meter_exposure(film, kRec709Y, {}, {});
   EXPECT_LT(blind.ev100, m.ev100 - 3.0);
+}
+
+// The display pipeline's --auto-exposure (what `prism tonemap` runs) meters with the
+// coverage it is given, and refuses one of the wrong size.
+TEST(ExposureMetering, DisplaySettingsCarryTheCoverage) {
+  const int w = 64, h = 32;
+  ImageRgbF film = grey_film(w, h, 0.5f);
+  std::vector<float> coverage(std::size_t(w) * h, 1.0f);
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w / 2; ++x) {
+      set_pixel(film, x, y, 0.0f);
+      coverage[std::size_t(y) * w + x] = 0.0f;
+    }
+  const color::ColorSpace& srgb = color::color_space("srgb");
+  DisplaySettings s;
+  s.auto_exposure = true;
+  const double blind_scale = exposure_scale(s, film, srgb);
+  s.metering_coverage = coverage;
+  const double scale = exposure_scale(s, film, srgb);
+  const MeteredExposure m = meter_exposure(film, srgb.rgb_to_xyz.row(1), coverage, {});
+  EXPECT_DOUBLE_EQ(scale, exposure_scale_from_ev100(m.ev100));
+  EXPECT_LT(scale, blind_scale / 8.0);  // the void no longer pulls the meter ≥ 3 EV down
+  s.metering_coverage.pop_back();
+  EXPECT_THROW(exposure_scale(s, film, srgb), UsageError);
 }
 
 TEST(ExposureMetering, DarkestAndBrightestTailsAreIgnored) {

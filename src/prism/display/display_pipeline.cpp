@@ -72,9 +72,14 @@ double exposure_scale(const DisplaySettings& s, const ImageRgbF& film, const col
   if (s.exposure_ev100) return exposure_scale_from_ev100(*s.exposure_ev100);
   if (s.auto_exposure) {
     // The metering rule of exposure_metering.h; without coverage every finite pixel counts.
+    if (!s.metering_coverage.empty() &&
+        s.metering_coverage.size() != static_cast<std::size_t>(film.width) * film.height)
+      throw UsageError("the metering coverage has " + std::to_string(s.metering_coverage.size()) +
+                       " values for a film of " + std::to_string(film.width) + "x" + std::to_string(film.height));
     MeteringSettings metering;
     metering.key = s.auto_exposure_key;
-    return exposure_scale_from_ev100(meter_exposure(film, film_space.rgb_to_xyz.row(1), {}, metering).ev100);
+    const Vec3d luminance_row = film_space.rgb_to_xyz.row(1);
+    return exposure_scale_from_ev100(meter_exposure(film, luminance_row, s.metering_coverage, metering).ev100);
   }
   return 1.0;
 }

@@ -28,6 +28,10 @@ struct DisplaySettings {
   std::optional<double> exposure_ev100;
   bool auto_exposure = false;
   double auto_exposure_key = 0.18;
+  // Auto exposure meters only what the camera saw: per pixel, the fraction of its samples
+  // that hit a surface (a render's Z.coverage layer), as exposure_metering.h weighs it.
+  // Empty: every finite pixel counts. Otherwise one value per film pixel.
+  std::vector<float> metering_coverage;
   double blue_correction = 0.0;                 // LMT strength in [0, 1]
   // The rendering transform and the display target it renders for (rendering.h); other
   // renderings than aces1 run in rendering_pipeline.h.

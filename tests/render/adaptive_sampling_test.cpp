@@ -27,7 +27,7 @@ namespace {
 
 using test::films_identical;
 
-RenderSettings adaptive_settings(int size, int spp, double threshold, int min_samples) {
+RenderSettings adaptive_test_settings(int size, int spp, double threshold, int min_samples) {
   RenderSettings s;
   s.width = size;
   s.height = size;
@@ -41,8 +41,8 @@ RenderSettings adaptive_settings(int size, int spp, double threshold, int min_sa
   return s;
 }
 
-std::uint32_t min_count(const Film& f) { return *std::min_element(f.counts().begin(), f.counts().end()); }
-std::uint32_t max_count(const Film& f) { return *std::max_element(f.counts().begin(), f.counts().end()); }
+std::uint32_t adaptive_min_count(const Film& f) { return *std::min_element(f.counts().begin(), f.counts().end()); }
+std::uint32_t adaptive_max_count(const Film& f) { return *std::max_element(f.counts().begin(), f.counts().end()); }
 
 TEST(AdaptiveSampling, BoundariesAreMultiplesOfTheMinimumBelowTheCap) {
   AdaptiveSamplingSettings a;
@@ -61,7 +61,7 @@ TEST(AdaptiveSampling, BadSettingsAreUsageErrors) {
   EXPECT_THROW(validate_adaptive_sampling({std::nan(""), 16}), UsageError);
   EXPECT_THROW(validate_adaptive_sampling({0.01, 1}), UsageError);
   EXPECT_NO_THROW(validate_adaptive_sampling({0.0, 0}));  // off: the minimum is not used
-  RenderSettings s = adaptive_settings(8, 16, 0.01, 4);
+  RenderSettings s = adaptive_test_settings(8, 16, 0.01, 4);
   s.first_sample = 4;  // --sample-range: refused (docs/farm-rendering.md)
   EXPECT_THROW(validate_render_settings(s), UsageError);
 }
@@ -132,12 +132,12 @@ TEST(AdaptiveSampling, MaskIsEveryPixelThenTheNoisyDilatedThenTheUnstopped) {
 // estimate, which is biased low exactly where the rule stopped (it stopped because the
 // estimate looked small): it is s²/n_a with s² the uniform render's sample variance of the
 // pixel, independent of the adaptive samples.
-struct Agreement {
+struct AdaptiveAgreement {
   double image_z = 0.0, worst_block_z = 0.0, outlier_fraction = 0.0;
 };
 
-Agreement compare(const Film& adaptive, const Film& uniform) {
-  Agreement r;
+AdaptiveAgreement compare_with_uniform(const Film& adaptive, const Film& uniform) {
+  AdaptiveAgreement r;
   constexpr int kBlock = 8;
   Vec3d image_d, image_v;
   std::size_t outliers = 0, tested = 0;
@@ -181,7 +181,7 @@ Agreement compare(const Film& adaptive, const Film& uniform) {
 TEST(AdaptiveSampling, ConvergesToTheImageOfUniformSampling) {
   const Scene scene = make_cornell_box();
   for (const TransportKind kind : {TransportKind::spectral, TransportKind::rgb}) {
-    RenderSettings s = adaptive_settings(32, 256, 0.1, 16);
+    RenderSettings s = adaptive_test_settings(32, 256, 0.1, 16);
     s.transport.kind = kind;
     s.seed = 1;
     const RenderResult adaptive = render(scene, s);
@@ -189,11 +189,11 @@ TEST(AdaptiveSampling, ConvergesToTheImageOfUniformSampling) {
     s.seed = 2;
     const RenderResult uniform = render(scene, s);
     // The test means something only if the rule stopped pixels at different counts.
-    ASSERT_EQ(min_count(adaptive.film), 16u);
-    ASSERT_EQ(max_count(adaptive.film), 256u);
+    ASSERT_EQ(adaptive_min_count(adaptive.film), 16u);
+    ASSERT_EQ(adaptive_max_count(adaptive.film), 256u);
     double total = 0.0;
     for (const std::uint32_t n : adaptive.film.counts()) total += n;
-    const Agreement z = compare(adaptive.film, uniform.film);
+    const AdaptiveAgreement z = compare_with_uniform(adaptive.film, uniform.film);
     std::printf("adaptive vs uniform (%s): mean %.1f spp, image |Z| %.2f, worst block |Z| %.2f, past |Z| 4: %.2f %%\n",
                 kind == TransportKind::rgb ? "rgb" : "spectral", total / adaptive.film.pixel_count(), z.image_z,
                 z.worst_block_z, 100.0 * z.outlier_fraction);
@@ -207,9 +207,9 @@ TEST(AdaptiveSampling, ConvergesToTheImageOfUniformSampling) {
 // stopped pixels (and their camera packets' lanes) changes nothing for the others.
 TEST(AdaptiveSampling, EachPixelHoldsTheUniformRendersFirstSamples) {
   const Scene scene = make_cornell_box();
-  const RenderSettings s = adaptive_settings(24, 48, 0.15, 8);
+  const RenderSettings s = adaptive_test_settings(24, 48, 0.15, 8);
   const RenderResult adaptive = render(scene, s);
-  ASSERT_LT(min_count(adaptive.film), max_count(adaptive.film));
+  ASSERT_LT(adaptive_min_count(adaptive.film), adaptive_max_count(adaptive.film));
   for (int n = 8; n <= 48; n += 8) {
     RenderSettings u = s;
     u.adaptive = {};
@@ -229,12 +229,12 @@ TEST(AdaptiveSampling, EachPixelHoldsTheUniformRendersFirstSamples) {
 TEST(AdaptiveSampling, ImageIsIndependentOfThreadsAndPassGrouping) {
   const Scene scene = make_cornell_box();
   for (const IntegratorKind integrator : {IntegratorKind::wavefront, IntegratorKind::reference}) {
-    RenderSettings s = adaptive_settings(24, 40, 0.15, 8);
+    RenderSettings s = adaptive_test_settings(24, 40, 0.15, 8);
     s.integrator = integrator;
     s.threads = 1;
     s.samples_per_pass = 1;
     const RenderResult first = render(scene, s);
-    ASSERT_LT(min_count(first.film), max_count(first.film));
+    ASSERT_LT(adaptive_min_count(first.film), adaptive_max_count(first.film));
     for (const int threads : {1, 2})
       for (const int pass : {3, 64, 0}) {
         s.threads = threads;
@@ -249,7 +249,7 @@ TEST(AdaptiveSampling, ImageIsIndependentOfThreadsAndPassGrouping) {
 // bitwise the uninterrupted image.
 TEST(AdaptiveSampling, ResumedRenderIsBitwiseIdenticalToUninterrupted) {
   const Scene scene = make_cornell_box();
-  RenderSettings s = adaptive_settings(24, 40, 0.15, 8);
+  RenderSettings s = adaptive_test_settings(24, 40, 0.15, 8);
   s.samples_per_pass = 1;
   const RenderResult reference = render(scene, s);
   for (const int stop_after : {13, 16}) {
@@ -286,7 +286,7 @@ TEST(AdaptiveSampling, ResumedRenderIsBitwiseIdenticalToUninterrupted) {
 TEST(AdaptiveSampling, FlatPixelsStopAtTheMinimumNoisyOnesGoToTheCap) {
   const Scene scene = make_cornell_box();
   constexpr int kSize = 96;  // the light then covers pixels whose neighbours are all on it
-  RenderSettings s = adaptive_settings(kSize, 64, 0.02, 8);
+  RenderSettings s = adaptive_test_settings(kSize, 64, 0.02, 8);
   s.aovs.sample_count = true;
   const RenderResult adaptive = render(scene, s);
   const AovImages counts = film_aov_images(adaptive.film, Mat3::identity());
@@ -331,7 +331,7 @@ TEST(AdaptiveSampling, FlatPixelsStopAtTheMinimumNoisyOnesGoToTheCap) {
 // integrators: the masked paths enumerate the same samples in the same order.
 TEST(AdaptiveSampling, ThresholdZeroAndAnAllActiveMaskAreUniformSampling) {
   const Scene scene = make_cornell_box();
-  RenderSettings uniform = adaptive_settings(24, 24, 0.0, 4);
+  RenderSettings uniform = adaptive_test_settings(24, 24, 0.0, 4);
   EXPECT_EQ(adaptive_film_aovs(uniform.aovs, uniform.adaptive), AovSet{});
   RenderSettings plain;
   plain.width = plain.height = 24;
@@ -345,19 +345,19 @@ TEST(AdaptiveSampling, ThresholdZeroAndAnAllActiveMaskAreUniformSampling) {
   Scene no_light = scene;
   no_light.camera.fov_degrees = 20.0f;
   for (const IntegratorKind integrator : {IntegratorKind::wavefront, IntegratorKind::reference}) {
-    RenderSettings all_active = adaptive_settings(24, 24, 1e-12, 8);
+    RenderSettings all_active = adaptive_test_settings(24, 24, 1e-12, 8);
     all_active.integrator = integrator;
     plain.integrator = integrator;
     const RenderResult a = render(no_light, all_active);
-    ASSERT_EQ(min_count(a.film), 24u);  // no pixel meets 1e-12
+    ASSERT_EQ(adaptive_min_count(a.film), 24u);  // no pixel meets 1e-12
     EXPECT_TRUE(films_identical(a.film, render(no_light, plain).film));
   }
-  EXPECT_NE(image_fingerprint(scene, adaptive_settings(24, 24, 0.01, 16)), image_fingerprint(scene, plain));
-  EXPECT_NE(image_fingerprint(scene, adaptive_settings(24, 24, 0.01, 16)),
-            image_fingerprint(scene, adaptive_settings(24, 24, 0.02, 16)));
-  RenderSettings undilated = adaptive_settings(24, 24, 0.01, 16);
+  EXPECT_NE(image_fingerprint(scene, adaptive_test_settings(24, 24, 0.01, 16)), image_fingerprint(scene, plain));
+  EXPECT_NE(image_fingerprint(scene, adaptive_test_settings(24, 24, 0.01, 16)),
+            image_fingerprint(scene, adaptive_test_settings(24, 24, 0.02, 16)));
+  RenderSettings undilated = adaptive_test_settings(24, 24, 0.01, 16);
   undilated.adaptive.dilate = false;
-  EXPECT_NE(image_fingerprint(scene, undilated), image_fingerprint(scene, adaptive_settings(24, 24, 0.01, 16)));
+  EXPECT_NE(image_fingerprint(scene, undilated), image_fingerprint(scene, adaptive_test_settings(24, 24, 0.01, 16)));
 }
 
 }  // namespace

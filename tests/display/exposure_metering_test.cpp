@@ -32,16 +32,24 @@ void set_pixel(ImageRgbF& f, int x, int y, float v) {
   for (int c = 0; c < 3; ++c) f.rgb[3 * (std::size_t(y) * f.width + x) + c] = v;
 }
 
-TEST(ExposureMetering, VoidIsNotMeteredContentGoesToTheKey) {
-  // Left half: the void (black, no camera ray hits); right half: grey content of 0.5 nit.
-  const int w = 128, h = 64;
-  ImageRgbF film = grey_film(w, h, 0.5f);
-  std::vector<float> coverage(std::size_t(w) * h, 1.0f);
+// Left half: the void (black, coverage 0: no camera ray hits); right half: grey content of
+// `content_nits` (coverage 1).
+struct HalfVoidFilm {
+  ImageRgbF film;
+  std::vector<float> coverage;
+};
+HalfVoidFilm half_void_film(int w, int h, float content_nits) {
+  HalfVoidFilm f{grey_film(w, h, content_nits), std::vector<float>(std::size_t(w) * h, 1.0f)};
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w / 2; ++x) {
-      set_pixel(film, x, y, 0.0f);
-      coverage[std::size_t(y) * w + x] = 0.0f;
+      set_pixel(f.film, x, y, 0.0f);
+      f.coverage[std::size_t(y) * w + x] = 0.0f;
     }
+  return f;
+}
+
+TEST(ExposureMetering, VoidIsNotMeteredContentGoesToTheKey) {
+  const auto [film, coverage] = half_void_film(128, 64, 0.5f);
   const MeteredExposure m = meter_exposure(film, kRec709Y, coverage, {});
   EXPECT_NEAR(m.ev100, ev_for(0.5), kEvTolerance);
   EXPECT_NEAR(m.covered_fraction, 0.5, 1e-12);
@@ -56,14 +64,7 @@ TEST(ExposureMetering, VoidIsNotMeteredContentGoesToTheKey) {
 // The display pipeline's --auto-exposure (what `prism tonemap` runs) meters with the
 // coverage it is given, and refuses one of the wrong size.
 TEST(ExposureMetering, DisplaySettingsCarryTheCoverage) {
-  const int w = 64, h = 32;
-  ImageRgbF film = grey_film(w, h, 0.5f);
-  std::vector<float> coverage(std::size_t(w) * h, 1.0f);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w / 2; ++x) {
-      set_pixel(film, x, y, 0.0f);
-      coverage[std::size_t(y) * w + x] = 0.0f;
-    }
+  const auto [film, coverage] = half_void_film(64, 32, 0.5f);
   const color::ColorSpace& srgb = color::color_space("srgb");
   DisplaySettings s;
   s.auto_exposure = true;

@@ -3,7 +3,7 @@
 // a wavefront tile (16 rows of a 256² Cornell box, jittered in their pixels) in pixel
 // order, all of them (a tile's first step) or a random 30 % (the paths that restart at a
 // later step); and as the integrator traces them, in fixed packets of eight neighbouring
-// pixels (EmbreeAccel::intersect_packet; BENCHMARKS.md "Camera rays in fixed packets").
+// pixels (EmbreeAccel::intersect_packet; docs/performance-design.md "Camera rays in fixed packets").
 #include <benchmark/benchmark.h>
 
 #include <cstdint>

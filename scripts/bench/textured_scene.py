@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes a textured test scene for load-time benchmarks (BENCHMARKS.md "Textured scene loads"):
+"""Writes a textured test scene for load-time benchmarks (docs/performance-design.md "Textured scene loads"):
 N quads, each with its own SIZE x SIZE RGB PNG (a sinusoid plus noise, so that the images
 compress like photographs rather than flat colours), as an OBJ/MTL scene and as a pbrt-v4
 scene over the same images, and a SIZE x SIZE/2 run-length-encoded Radiance .hdr sky

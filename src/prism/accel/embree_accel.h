@@ -13,7 +13,7 @@ namespace prism {
 // How a queue's rays relate, for Embree's ray streams. Incoherent: each ray traversed
 // alone. Coherent: Embree's packet traversal, for rays that start together and point
 // alike, such as camera rays of neighbouring pixels: about 0.4 × the time a ray on the
-// Cornell box's camera rays (bench/camera_rays_bench.cpp; BENCHMARKS.md "Camera rays in
+// Cornell box's camera rays (bench/camera_rays_bench.cpp; docs/performance-design.md "Camera rays in
 // fixed packets").
 // A packet computes each ray's hit with the single-ray arithmetic (ray_streams_test),
 // except where two triangles are hit at exactly the same distance (a shared edge, a

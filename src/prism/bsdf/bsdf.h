@@ -185,7 +185,7 @@ struct Bsdf {
   // The diffuse lobe, the commonest, is called directly: std::visit's dispatch and the copy
   // of its result out of the visitor cost a quarter of a Lambertian sample's instructions,
   // and an eval or pdf that kept the visitor inline was too large to inline into the
-  // integrator (Callgrind; BENCHMARKS.md "Instruction cuts"). The same calls as the visitor
+  // integrator (Callgrind; docs/performance-design.md "Instruction cuts"). The same calls as the visitor
   // makes.
   [[gnu::always_inline]] color::SampledSpectrum<N> lobe_eval(const Vec3f& wo, const Vec3f& wi, TransportMode mode) const {
     if (const auto* diffuse = std::get_if<Lambertian<N>>(&lobe)) return diffuse->eval(wo, wi);

@@ -49,7 +49,7 @@ struct Clearcoat {
   // at a frame the caller keeps for as long as it uses the coat: held by value, as a
   // std::optional<Frame>, it made every BSDF 40 bytes larger, coated or not, and cost the
   // Lambertian Cornell box 4 % of its render time. Size alone is not the rule: taking 96
-  // bytes out of the largest lobe gained nothing (BENCHMARKS.md "BSDF size"). Time every
+  // bytes out of the largest lobe gained nothing (docs/performance-design.md "BSDF size"). Time every
   // new member of a BSDF, even where it is absent.
   const Frame* frame = nullptr;
 

@@ -33,7 +33,7 @@ struct SampledSpectrum {
   // that is not inlined travels in one register. As std::array<float, 4> it travelled as
   // two 8-byte halves, which callers put back together through the stack: two 8-byte
   // stores then a 16-byte load, which cannot be store-forwarded (a stall of the whole
-  // load's latency on every such call; perf annotate of shade, BENCHMARKS.md "Store-forwarding
+  // load's latency on every such call; perf annotate of shade, docs/performance-design.md "Store-forwarding
   // stalls").
   // The operators also become one SSE instruction each. Wider tuples keep an array.
   static constexpr bool kVectorLanes = N <= 4;

@@ -53,7 +53,7 @@ inline float sigmoid_jakob_hanika_float(float x) {
 // Always inlined: called, a std::array<float, 4> comes back in two registers of 8 bytes
 // each (the x86-64 System V ABI's SSE eightbytes), which GCC 12 stored to the stack apart
 // and read back as one 16-byte load, a load the store buffer cannot forward (37 % of
-// untextured_emission's samples on the Cornell box; BENCHMARKS.md "Store-forwarding stalls").
+// untextured_emission's samples on the Cornell box; docs/performance-design.md "Store-forwarding stalls").
 template <std::size_t N>
 [[gnu::always_inline]] inline std::array<float, N> evaluate_sigmoid_polynomial(
     const SigmoidPolynomial& c, const std::array<float, N>& wavelength_nm, float scale = 1.0f) {

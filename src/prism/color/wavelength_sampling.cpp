@@ -82,7 +82,7 @@ const PreparedLobe& radziszewski_lobe() {
 // inverse (atanh) plus three cosh per wavelength for the MIS pdf cost ≈ 265 ns per
 // 4-wavelength sample; a piecewise-linear table with exact quadratic inversion 73 ns; this
 // table 38 ns: a guide-table lookup, one division and one load of the effective pdf per
-// wavelength (BENCHMARKS.md "Wavelength sampling cost").
+// wavelength (docs/performance-design.md "Wavelength sampling cost").
 constexpr int kLobeCells = 400;  // 1 nm each
 
 struct TabulatedLobe {
@@ -272,7 +272,7 @@ void cosh_tuple_slots(const PreparedLobe& lobe, double u, double slot_step, int 
   if (n == 4) {
     // A whole tuple of four (the default): two stores, not the loop below, whose
     // variable count GCC leaves as a loop of scalar copies (Callgrind: a quarter of the
-    // call's instructions, BENCHMARKS.md "Instruction cuts").
+    // call's instructions, docs/performance-design.md "Instruction cuts").
     _mm_storeu_ps(wavelength_nm + first, nm_ps);
     _mm_storeu_ps(pdf + first, pdf_ps);
     return;
@@ -383,7 +383,7 @@ void sample_cosh_wavelengths(double u, int count, float* wavelength_nm, float* p
   // a double atanh and a double cosh (BM_SampleWavelengths: cosh 216–245 → 66–79 ns).
   // atanh(t) = ½ ln((1 + t)/(1 − t)), the logarithm in float: |t| ≤ 0.94 here, so the ratio
   // stays in [0.1, 33], and log4's error there (< 1e-6) moves λ by < 1e-4 nm. Four slots at
-  // a time, eight in AVX2 (BENCHMARKS.md "Wavelength sampling cost").
+  // a time, eight in AVX2 (docs/performance-design.md "Wavelength sampling cost").
   sample_cosh_wavelengths({&u, 1}, count, {&wavelength_nm, 1}, {&pdf, 1}, width);
 }
 

@@ -31,7 +31,7 @@ struct Frame {
 
   // Always inlined: shading calls them three times per vertex, and GCC kept out-of-line
   // copies whose call, spills and reloads cost as much as the nine products (Callgrind,
-  // BENCHMARKS.md "Instruction cuts").
+  // docs/performance-design.md "Instruction cuts").
   [[gnu::always_inline]] Vec3f to_local(const Vec3f& v) const { return {dot(v, s), dot(v, t), dot(v, n)}; }
   [[gnu::always_inline]] Vec3f to_world(const Vec3f& v) const { return s * v.x + t * v.y + n * v.z; }
 };

@@ -5,7 +5,7 @@
 // initialisers (Ray, Hit, SampledSpectrum, BounceSamples, LightSample in a std::optional)
 // is cleared whole where it is declared; GCC 12 does that with `rep stosq`, which takes
 // tens of cycles to start, once per array per call (perf annotate of
-// shade_plain_lanes_avx2, BENCHMARKS.md "Plain diffuse lanes").
+// shade_plain_lanes_avx2, docs/performance-design.md "Plain diffuse lanes").
 #include <cstddef>
 #include <memory>
 #include <new>

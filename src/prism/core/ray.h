@@ -15,7 +15,7 @@ struct Ray {
 // `to = ray`, one float at a time. Assigned whole, a Ray made just before (an inlined
 // camera ray) is built on the stack with overlapping 16-byte and 4-byte stores, then
 // copied in 16-byte loads the store buffer cannot forward: a stall of a dozen cycles or
-// more (BENCHMARKS.md "Store-forwarding stalls").
+// more (docs/performance-design.md "Store-forwarding stalls").
 inline void store_ray(Ray& to, const Ray& ray) {
   to.origin.x = ray.origin.x;
   to.origin.y = ray.origin.y;

@@ -1,6 +1,6 @@
 #pragma once
 // Camera rays in fixed packets. Embree traces a packet of neighbouring camera rays in
-// about 0.4 × the time of the same rays one by one (BENCHMARKS.md "Camera rays in fixed
+// about 0.4 × the time of the same rays one by one (docs/performance-design.md "Camera rays in fixed
 // packets"), but where two triangles lie at exactly the same distance along a ray, which
 // one a packet reports depends on its other rays (accel/embree_accel.h, RayCoherence). So
 // the integrator's camera packets never change: a block is kLanes consecutive pixel

@@ -150,7 +150,7 @@ bsdf::Bsdf<Mode::kChannels> make_bsdf(const Material& m, std::uint32_t material_
                                       const MaterialTables& tables, const LayerColors<Mode>& layer_colors) {
   // A bare diffuse lobe, the commonest BSDF, is returned before the call that builds the
   // others: through it, a diffuse make_bsdf took 57 instructions, 6 of them for the stack
-  // frame and saved registers of the other lobes (Callgrind; BENCHMARKS.md "Instruction cuts").
+  // frame and saved registers of the other lobes (Callgrind; docs/performance-design.md "Instruction cuts").
   // base_bsdf returns the same lobe for it.
   if (m.type == MaterialType::diffuse && !(point.clearcoat > 0.0f) && !point.has_sheen())
     return {bsdf::Lambertian<Mode::kChannels>{base}};

@@ -182,7 +182,7 @@ void WavefrontIntegrator<Mode>::generate(Paths& p, const std::uint32_t* slots, c
   // In runs of kGenerateRun slots, one stage at a time for the whole run: the camera rays,
   // their hits and wavelength numbers (from the blocks' camera packets, traced where not
   // held), then the wavelengths (two tuples per pass on AVX2), then the path state. Each
-  // slot's numbers are those it would get alone (BENCHMARKS.md "Sampler blocks and
+  // slot's numbers are those it would get alone (docs/performance-design.md "Sampler blocks and
   // branch-free walks").
   constexpr std::size_t kGenerateRun = 32;
   std::array<double, kGenerateRun> wavelength_numbers;
@@ -231,7 +231,7 @@ Spectrum<Mode> WavefrontIntegrator<Mode>::untextured_emission(Paths& p, std::uin
   // An untextured emitter's spectrum is a function of the emitter and the path's
   // wavelengths alone, and a path's light samples mostly land on one emitter (every one,
   // in a scene with a single lamp): kept per path, it is evaluated about once per path
-  // instead of once per light sample (Callgrind, BENCHMARKS.md "Instruction cuts"). The same
+  // instead of once per light sample (Callgrind, docs/performance-design.md "Instruction cuts"). The same
   // values: a cache, not an approximation. Hero termination changes only the pdfs. RGB
   // emission is a load already.
   if constexpr (!Mode::kSpectral) return colors_.emission(emitter, p.wavelengths[slot]);

@@ -8,10 +8,10 @@
 // shaded several at a time, in SIMD lanes (shade_plain_lanes), to the same bits; the
 // stages' walks over the queue decide which list a slot joins (hit or miss, lanes or not,
 // shadow ray or not, finished or not) with masks and counts, not branches, since those
-// are coin flips to a branch predictor (BENCHMARKS.md "Sampler blocks and branch-free
+// are coin flips to a branch predictor (docs/performance-design.md "Sampler blocks and branch-free
 // walks"). The image is cut into tiles of kWavefrontTilePixels pixels, one queue each, and
 // each thread runs whole tiles: a tile's path state stays in cache across the stages
-// (1.07× at 256², 1.13× at 512², one thread; BENCHMARKS.md "Tiles and path state"). Only a
+// (1.07× at 256², 1.13× at 512², one thread; docs/performance-design.md "Tiles and path state"). Only a
 // pass that reports every few bounces keeps one queue for the whole image, stepped in
 // lockstep with each stage split across the threads.
 //
@@ -82,7 +82,7 @@ struct PathSettings {
 // a path state of its own (unless a pass reports after every few bounces, which keeps one
 // whole-image queue). Any size gives the same image. 1024 to 16384 measured alike until
 // camera packets; since, 1024, whose path state and camera packets (≈ 300 + 512 KiB) fit a
-// 1 MiB L2 cache, measured best (BENCHMARKS.md "Tiles and path state").
+// 1 MiB L2 cache, measured best (docs/performance-design.md "Tiles and path state").
 inline constexpr std::size_t kWavefrontTilePixels = 1024;
 // Camera packets kept per block of pixels (camera_packet_cache.h): in a tile's path state,
 // and in the whole-image queue's, which has one slot per pixel of the image (there each
@@ -271,7 +271,7 @@ class WavefrontIntegrator {
   // hit's bounce block whole for the queue before shading (Paths::bounce_block), and the
   // camera blocks of each run of new samples; two blocks at a time with AVX-512. The draws
   // of a queue are independent of one another and overlap, where inside shade() they are a
-  // link in each path's chain of dependent work (BENCHMARKS.md "Sampler blocks and
+  // link in each path's chain of dependent work (docs/performance-design.md "Sampler blocks and
   // branch-free walks").
   bool sobol_lanes_ = false;
   SobolLanes sampler_lanes_ = SobolLanes::none;  // settings_.simd's lanes for the sampler

@@ -12,7 +12,7 @@
 //
 // Why: on the Cornell box the plain path spent most of its instructions on three-vector
 // arithmetic in scalar registers (the hit's geometry, its frame, the light sample's and the
-// sampled direction's coordinates, the rays' offsets); BENCHMARKS.md "Plain diffuse lanes".
+// sampled direction's coordinates, the rays' offsets); docs/performance-design.md "Plain diffuse lanes".
 #include <array>
 #include <cmath>
 #include <limits>

@@ -13,7 +13,7 @@ class PinholeCamera {
   // u_lens picks the point on the lens (thin-lens cameras; ignored by pinholes).
   // Inlined: a Ray returned from a call comes back through memory, written as 8-byte and
   // smaller stores, and the caller reads it in 16-byte loads, which the store buffer
-  // cannot forward (a stall on every camera ray; BENCHMARKS.md "Store-forwarding stalls").
+  // cannot forward (a stall on every camera ray; docs/performance-design.md "Store-forwarding stalls").
   [[gnu::always_inline]] Ray generate_ray(float film_x, float film_y, Vec2f u_lens = Vec2f(0.5f, 0.5f)) const {
     const float ndc_x = 2.0f * film_x * inv_width_ - 1.0f;   // -1 left, +1 right
     const float ndc_y = 1.0f - 2.0f * film_y * inv_height_;  // +1 top, -1 bottom

@@ -5,7 +5,7 @@
 // 16-byte nodes written once, never moved. Strings without escapes are views into the text;
 // those with escapes are decoded into the tree. This replaced nlohmann::json for scene
 // files, whose per-character token buffer and strtod made up 85 % of a 1 M-triangle JSON
-// scene's load (BENCHMARKS.md "JSON scene reader").
+// scene's load (docs/performance-design.md "JSON scene reader").
 //
 // Stricter than RFC 8259 where it leaves choices to the reader: duplicate keys in one object,
 // ill-formed UTF-8 (RFC 3629), unpaired surrogate escapes and numbers beyond a double are

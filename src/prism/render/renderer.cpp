@@ -82,7 +82,10 @@ void render_passes(Integrator& integrator, const RenderSettings& settings, const
     // that ends at the next decision boundary at the latest (adaptive_sampling.h).
     const std::optional<std::vector<std::uint8_t>> active =
         adaptive_active_pixels(result.film, result.film_space, settings.adaptive, next_sample);
-    if (active && std::find(active->begin(), active->end(), std::uint8_t{1}) == active->end()) {
+    const std::size_t active_pixels =
+        active ? static_cast<std::size_t>(std::count(active->begin(), active->end(), std::uint8_t{1}))
+               : result.film.pixel_count();
+    if (active_pixels == 0) {
       next_sample = settings.samples_per_pixel;  // every pixel has stopped, for good
       break;
     }
@@ -92,9 +95,7 @@ void render_passes(Integrator& integrator, const RenderSettings& settings, const
     const PassStatistics stats = integrator.render_samples(
         result.film, static_cast<std::uint32_t>(next_sample), static_cast<std::uint32_t>(count),
         settings.bounces_per_pass, hooks.on_bounces ? &after_bounces : nullptr, active ? active->data() : nullptr);
-    samples_taken += static_cast<std::uint64_t>(count) *
-                     (active ? static_cast<std::size_t>(std::count(active->begin(), active->end(), std::uint8_t{1}))
-                             : result.film.pixel_count());
+    samples_taken += static_cast<std::uint64_t>(count) * active_pixels;
     const double seconds = elapsed();
     result.pass_seconds.push_back(seconds - pass_start);
     result.pass_samples.push_back(count);
